@@ -1,0 +1,54 @@
+/// \file
+/// The two ways a run can fail, and how each is told to the user.
+///
+/// - SceneError: the input is wrong. Raised before anything runs; the CLI prints
+///   `error: FILE:LINE: KEY: what is wrong and what is allowed` and exits with code 2.
+/// - SimulationFailure: the method failed during the run (NaN, a particle leaving the grid,
+///   an LME Newton iteration that does not converge, unbounded energy growth). The CLI prints
+///   one line with step, time, particle, position and cause, and exits with code 3.
+#pragma once
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace mpm {
+
+struct SceneError : std::runtime_error {
+  SceneError(std::string file_, int line_, std::string key_, const std::string& what_is_wrong)
+      : std::runtime_error(what_is_wrong), file(std::move(file_)), line(line_), key(std::move(key_)) {}
+  std::string file;
+  int line;  ///< 0 when the key is absent from the file
+  std::string key;
+
+  std::string message() const {
+    std::ostringstream out;
+    out << "error: " << file << ":" << line << ": " << key << ": " << what();
+    return out.str();
+  }
+};
+
+/// Raised by a shape function that cannot give a trustworthy stencil for a particle.
+struct ShapeFailure : std::runtime_error {
+  ShapeFailure(int particle_, const std::string& cause) : std::runtime_error(cause), particle(particle_) {}
+  int particle;
+};
+
+struct SimulationFailure : std::runtime_error {
+  SimulationFailure(long step_, double time_, int particle_, std::string position_, const std::string& cause)
+      : std::runtime_error(cause), step(step_), time(time_), particle(particle_), position(std::move(position_)) {}
+  long step;
+  double time;
+  int particle;          ///< -1 when the failure is not tied to one particle
+  std::string position;  ///< "(x, y)" of that particle, empty otherwise
+
+  std::string message() const {
+    std::ostringstream out;
+    out.precision(9);
+    out << "failure: step " << step << ", t = " << time << " s";
+    if (particle >= 0) out << ", particle " << particle << " at " << position;
+    out << ": " << what();
+    return out.str();
+  }
+};
+
+}  // namespace mpm

@@ -1,0 +1,39 @@
+/// \file
+/// Nodal fields, rebuilt from the particles every step and reset at its end (Algorithm, step 9).
+/// Allocated once per run: reset() only zeroes them, so the time step allocates nothing.
+#pragma once
+#include <vector>
+
+#include "mpm/core/types.hpp"
+
+namespace mpm {
+
+template <int Dim>
+struct GridFields {
+  std::vector<double> nodal_mass;              ///< m_I, Eq. (13) lumped
+  std::vector<Vector<Dim>> nodal_momentum;     ///< p_I = m_I v_I
+  std::vector<Vector<Dim>> nodal_velocity;     ///< v_I (FE: p_I/m_I; NPC: predictor, then corrected)
+  std::vector<Vector<Dim>> nodal_force;        ///< f_I = f_I^int + f_I^ext, Eqs. (14)-(15)
+  std::vector<Vector<Dim>> reaction;           ///< force taken by the fixed degrees of freedom
+
+  explicit GridFields(int node_count = 0)
+      : nodal_mass(node_count, 0.0),
+        nodal_momentum(node_count, Vector<Dim>::Zero()),
+        nodal_velocity(node_count, Vector<Dim>::Zero()),
+        nodal_force(node_count, Vector<Dim>::Zero()),
+        reaction(node_count, Vector<Dim>::Zero()) {}
+
+  int size() const { return static_cast<int>(nodal_mass.size()); }
+
+  void reset() {
+    for (int node = 0; node < size(); ++node) {
+      nodal_mass[node] = 0.0;
+      nodal_momentum[node].setZero();
+      nodal_velocity[node].setZero();
+      nodal_force[node].setZero();
+      reaction[node].setZero();
+    }
+  }
+};
+
+}  // namespace mpm

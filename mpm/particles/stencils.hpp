@@ -1,0 +1,33 @@
+/// \file
+/// Shape-function stencils: for every particle p, its nodes I, N_Ip and grad N_Ip.
+///
+/// Computed once per step at the particle positions x_p^k (spec 1) and reused by every
+/// transfer of the step. Storage is flat with a fixed capacity per particle, set once per run by
+/// the shape function, so computing the stencils allocates nothing.
+#pragma once
+#include <vector>
+
+#include "mpm/core/types.hpp"
+
+namespace mpm {
+
+template <int Dim>
+struct Stencils {
+  int capacity = 0;                        ///< largest number of nodes a particle may have
+  std::vector<int> count;                  ///< nodes of each particle
+  std::vector<int> node;                   ///< [p * capacity + k]: node number I
+  std::vector<double> value;               ///< [p * capacity + k]: N_Ip
+  std::vector<Vector<Dim>> gradient;       ///< [p * capacity + k]: grad N_Ip
+
+  void resize(int particle_count, int nodes_per_particle) {
+    capacity = nodes_per_particle;
+    count.assign(particle_count, 0);
+    node.assign(static_cast<size_t>(particle_count) * capacity, 0);
+    value.assign(static_cast<size_t>(particle_count) * capacity, 0.0);
+    gradient.assign(static_cast<size_t>(particle_count) * capacity, Vector<Dim>::Zero());
+  }
+  int begin(int p) const { return p * capacity; }
+  int end(int p) const { return p * capacity + count[p]; }
+};
+
+}  // namespace mpm
