@@ -31,3 +31,18 @@ struct Stencils {
 };
 
 }  // namespace mpm
+
+namespace mpm {
+
+/// Evaluates the shape function at every particle position, once per step; every transfer of
+/// the step then reads these stencils. \throws ShapeFailure from the shape function.
+template <int Dim, class Shape>
+void compute_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, Stencils<Dim>& stencils) {
+  for (int p = 0; p < static_cast<int>(positions.size()); ++p) {
+    const int first = stencils.begin(p);
+    stencils.count[p] = shape.evaluate(p, positions[p], &stencils.node[first], &stencils.value[first],
+                                       &stencils.gradient[first]);
+  }
+}
+
+}  // namespace mpm

@@ -1,0 +1,38 @@
+/// \file
+/// Updates of the nodal fields in time: the momentum balance Eq. (12) integrated explicitly.
+#pragma once
+#include <doctest/doctest.h>
+
+#include "mpm/grid/grid_fields.hpp"
+
+namespace mpm {
+
+/// Eq. (12) with forward Euler: \f$ \mathbf p_I^{k+1} = \mathbf p_I^k + \Delta t\, \mathbf f_I \f$ (nodes with mass).
+template <int Dim>
+void update_nodal_momentum(double dt, GridFields<Dim>& grid) {
+  for (int node = 0; node < grid.size(); ++node)
+    if (grid.nodal_mass[node] > 0.0) grid.nodal_momentum[node] += dt * grid.nodal_force[node];
+}
+
+/// Eq. (30), the Newmark corrector, in place: \f$ \mathbf v_I^{k+1} = \mathbf v_I^{pred} + \gamma\,\Delta t\, \mathbf f_I / m_I \f$.
+template <int Dim>
+void newmark_corrector(double newmark_gamma, double dt, GridFields<Dim>& grid) {
+  for (int node = 0; node < grid.size(); ++node)
+    if (grid.nodal_mass[node] > 0.0) grid.nodal_velocity[node] += newmark_gamma * dt * grid.nodal_force[node] / grid.nodal_mass[node];
+}
+
+TEST_CASE("Nodal updates: Eq. (12) and the corrector Eq. (30) by hand; massless nodes untouched") {
+  GridFields<1> grid(2);
+  grid.nodal_mass = {2.0, 0.0};
+  grid.nodal_momentum = {Vector<1>(1.0), Vector<1>(0.0)};
+  grid.nodal_velocity = {Vector<1>(0.5), Vector<1>(0.0)};
+  grid.nodal_force = {Vector<1>(4.0), Vector<1>(7.0)};
+  update_nodal_momentum(0.1, grid);
+  CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.4));
+  CHECK(grid.nodal_momentum[1][0] == 0.0);
+  newmark_corrector(0.5, 0.1, grid);
+  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(0.5 + 0.5 * 0.1 * 4.0 / 2.0));
+  CHECK(grid.nodal_velocity[1][0] == 0.0);
+}
+
+}  // namespace mpm

@@ -1,0 +1,67 @@
+/// \file
+/// Isotropic linear elasticity, Eq. (3): \f$ \boldsymbol\sigma = \mathbf D : \boldsymbol\varepsilon \f$.
+///
+/// 1D (a bar): \f$ \sigma = E \varepsilon \f$.
+/// 2D plane strain (unit thickness, \f$ \varepsilon_{zz} = 0 \f$, as the authors run it):
+/// \f$ \boldsymbol\sigma = \lambda\,\mathrm{tr}(\boldsymbol\varepsilon)\,\mathbf I + 2G\boldsymbol\varepsilon \f$ and
+/// \f$ \sigma_{zz} = \lambda\,\mathrm{tr}(\boldsymbol\varepsilon) \f$, with \f$ G = E/(2(1+\nu)) \f$,
+/// \f$ \lambda = \nu E/((1+\nu)(1-2\nu)) \f$. Small strain, total-strain form, no objective rate (spec 1).
+#pragma once
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "mpm/core/types.hpp"
+
+namespace mpm {
+
+struct LinearElastic {
+  double young_modulus = 0.0;  ///< E, Pa
+  double poisson_ratio = 0.0;  ///< nu
+  double density = 0.0;        ///< rho_0, kg/m^3 (initial)
+
+  double shear_modulus() const { return young_modulus / (2.0 * (1.0 + poisson_ratio)); }
+  double lame_lambda() const {
+    return poisson_ratio * young_modulus / ((1.0 + poisson_ratio) * (1.0 - 2.0 * poisson_ratio));
+  }
+  /// Constrained (P-wave) modulus M = lambda + 2G, the stiffness of a laterally confined column.
+  double constrained_modulus() const { return lame_lambda() + 2.0 * shear_modulus(); }
+
+  /// Eq. (3), in-plane stress from strain.
+  template <int Dim>
+  Matrix<Dim> stress(const Matrix<Dim>& strain) const {
+    if constexpr (Dim == 1) {
+      return young_modulus * strain;
+    } else {
+      return lame_lambda() * strain.trace() * Matrix<Dim>::Identity() + 2.0 * shear_modulus() * strain;
+    }
+  }
+
+  /// Eq. (3), the out-of-plane stress of plane strain (0 in 1D).
+  template <int Dim>
+  double stress_zz(const Matrix<Dim>& strain) const {
+    return Dim == 1 ? 0.0 : lame_lambda() * strain.trace();
+  }
+};
+
+TEST_CASE("Hooke's law, Eq. (3): 1D, plane strain, and the constrained-column ratio nu/(1-nu)") {
+  const LinearElastic steel{200e9, 0.0, 7833.0};
+  CHECK(steel.stress<1>(Matrix<1>::Constant(1e-3))(0, 0) == doctest::Approx(2e8));
+
+  const LinearElastic soil{5e6, 0.3, 6000.0};
+  // Uniaxial strain eps_yy = -0.01 (a laterally confined column): sigma_yy = -M 0.01 with
+  // M = E(1-nu)/((1+nu)(1-2nu)) = 5e6 * 0.7 / (1.3 * 0.4) = 6.730769e6 Pa; sigma_xx = sigma_zz = nu/(1-nu) sigma_yy.
+  Matrix<2> strain = Matrix<2>::Zero();
+  strain(1, 1) = -0.01;
+  const Matrix<2> sigma = soil.stress<2>(strain);
+  CHECK(sigma(1, 1) == doctest::Approx(-6.730769230769e4));
+  CHECK(sigma(0, 0) / sigma(1, 1) == doctest::Approx(0.3 / 0.7));
+  CHECK(soil.stress_zz<2>(strain) == doctest::Approx(sigma(0, 0)));
+  CHECK(soil.constrained_modulus() == doctest::Approx(6.730769230769e6));
+  // Pure shear eps_xy = 1e-3: sigma_xy = 2 G eps_xy with G = 5e6 / 2.6.
+  strain.setZero();
+  strain(0, 1) = strain(1, 0) = 1e-3;
+  CHECK(soil.stress<2>(strain)(0, 1) == doctest::Approx(2.0 * 5e6 / 2.6 * 1e-3));
+}
+
+}  // namespace mpm

@@ -1,0 +1,190 @@
+/// \file
+/// The time-step loop: Algorithm 1 of the paper, top to bottom.
+///
+/// A Simulation owns the model, the particles, the shape function and the integrator, all chosen
+/// once per run as template arguments. run() advances from t = 0 to the end time:
+///
+///   1. dt by the Courant condition, Eq. (42), shortened to land on the next output time;
+///   2. the stencils N_Ip, grad N_Ip at x_p^k, computed once and reused by every transfer;
+///   3. one step of the integrator (forward Euler, spec 3.2, or the predictor-corrector, spec 3.1);
+///   4. the health checks: no NaN, no particle off the grid, no unbounded energy growth;
+///   5. the observer samples and snapshots.
+///
+/// The loop knows no files: a Monitor (io/run_writer.hpp) receives the samples.
+#pragma once
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "mpm/analysis/energy.hpp"
+#include "mpm/core/errors.hpp"
+#include "mpm/grid/grid_fields.hpp"
+#include "mpm/integrators/time_step.hpp"
+#include "mpm/model.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/particles/stencils.hpp"
+#include "mpm/shape/shape_diagnostics.hpp"
+
+namespace mpm {
+
+/// When the body force of a step is evaluated (spec 8.7).
+enum class BodyForceTime { step_end, step_start };
+
+struct RunControl {
+  double cfl = 0.5;
+  CourantSpeed courant = CourantSpeed::maximum;
+  double end_time = 0.0;
+  std::vector<double> snapshot_times;  ///< times at which every particle is written
+  int sample_every = 1;                ///< observers sampled every n steps and at the end
+  BodyForceTime body_force_time = BodyForceTime::step_end;
+  /// The run stops (exit code 3) when the kinetic plus strain energy exceeds this factor times
+  /// the initial energy plus the work done by the body force: the signature of an instability.
+  double energy_growth_limit = 10.0;
+};
+
+struct RunSummary {
+  long steps = 0;
+  double final_time = 0.0;
+  double smallest_time_step = 0.0, largest_time_step = 0.0;
+  double wall_seconds = 0.0;
+  double particle_steps_per_second = 0.0;
+  ShapeDiagnostics shape;
+};
+
+/// Receives what a run produces; implemented by the writers of io/ and by tests.
+template <int Dim>
+struct Monitor {
+  virtual ~Monitor() = default;
+  virtual void sample(long /*step*/, double /*time*/, const Particles<Dim>& /*particles*/, const Balances<Dim>& /*balances*/) {}
+  virtual void snapshot(int /*index*/, double /*time*/, const Particles<Dim>& /*particles*/) {}
+  virtual void progress(double /*time*/, double /*end_time*/) {}
+};
+
+template <int Dim, class Shape, class Integrator>
+class Simulation {
+ public:
+  Simulation(Model<Dim> model, Particles<Dim> particles, Shape shape, Integrator integrator, RunControl control)
+      : model_(std::move(model)), particles_(std::move(particles)), shape_(std::move(shape)),
+        integrator_(std::move(integrator)), control_(std::move(control)), grid_fields_(model_.grid.node_count()) {
+    std::sort(control_.snapshot_times.begin(), control_.snapshot_times.end());
+  }
+
+  const Particles<Dim>& particles() const { return particles_; }
+  const GridFields<Dim>& grid_fields() const { return grid_fields_; }
+
+  RunSummary run(Monitor<Dim>& monitor) {
+    const auto wall_start = std::chrono::steady_clock::now();
+    shape_.initialise(particles_);
+    stencils_.resize(particles_.size(), shape_.capacity());
+    initial_energy_ = balances(particles_).total();
+
+    RunSummary summary;
+    summary.smallest_time_step = std::numeric_limits<double>::infinity();
+    double time = 0.0;
+    long step = 0;
+    size_t next_snapshot = 0;
+    monitor.sample(step, time, particles_, balances(particles_));
+    write_due_snapshots(time, next_snapshot, monitor);
+
+    while (time < control_.end_time) {
+      // 1. Time step, Eq. (42), landing exactly on output times and on the end time.
+      double dt = courant_time_step(particles_, model_.material.young_modulus, model_.grid.spacing(), control_.cfl,
+                                    control_.courant);
+      const double target = next_stop(time, next_snapshot);
+      const bool lands = time + dt * (1.0 + 1e-9) >= target;
+      if (lands) dt = target - time;
+      // 2. Stencils at the current positions x_p^k.
+      locate_particles(step, time);
+      // 3. One step of the integrator.
+      const double body_force_time = control_.body_force_time == BodyForceTime::step_end ? time + dt : time;
+      const Vector<Dim> body_force = model_.gravity.at(body_force_time);
+      integrator_.step(model_, stencils_, body_force, dt, particles_, grid_fields_);
+      time = lands ? target : time + dt;
+      ++step;
+      summary.smallest_time_step = std::min(summary.smallest_time_step, dt);
+      summary.largest_time_step = std::max(summary.largest_time_step, dt);
+      // 4. Health.
+      const Balances<Dim> now = balances(particles_);
+      external_work_ += dt * body_force.dot(now.momentum);
+      check_health(step, time, now);
+      // 5. Output.
+      const bool last = time >= control_.end_time;
+      if (step % control_.sample_every == 0 || last) monitor.sample(step, time, particles_, now);
+      write_due_snapshots(time, next_snapshot, monitor);
+      monitor.progress(time, control_.end_time);
+    }
+
+    if (step == 0) summary.smallest_time_step = 0.0;
+    summary.steps = step;
+    summary.final_time = time;
+    summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    summary.particle_steps_per_second = summary.wall_seconds > 0.0 ? double(step) * particles_.size() / summary.wall_seconds : 0.0;
+    summary.shape = shape_.diagnostics();
+    return summary;
+  }
+
+ private:
+  /// The next time the loop must land on: the next snapshot time or the end time.
+  double next_stop(double time, size_t next_snapshot) const {
+    double stop = control_.end_time;
+    for (size_t k = next_snapshot; k < control_.snapshot_times.size(); ++k)
+      if (control_.snapshot_times[k] > time) return std::min(stop, control_.snapshot_times[k]);
+    return stop;
+  }
+
+  void write_due_snapshots(double time, size_t& next_snapshot, Monitor<Dim>& monitor) {
+    while (next_snapshot < control_.snapshot_times.size() && control_.snapshot_times[next_snapshot] <= time) {
+      monitor.snapshot(static_cast<int>(next_snapshot), time, particles_);
+      ++next_snapshot;
+    }
+  }
+
+  void locate_particles(long step, double time) {
+    try {
+      compute_stencils(shape_, particles_.position, stencils_);
+    } catch (const ShapeFailure& failure) {
+      throw SimulationFailure(step, time, particles_.id[failure.particle], position_text(failure.particle), failure.what());
+    }
+  }
+
+  void check_health(long step, double time, const Balances<Dim>& now) const {
+    for (int p = 0; p < particles_.size(); ++p) {
+      const bool finite = particles_.position[p].allFinite() && particles_.velocity[p].allFinite() &&
+                          particles_.stress[p].allFinite() && std::isfinite(particles_.density[p]);
+      if (!finite) throw SimulationFailure(step, time, particles_.id[p], position_text(p), "NaN or infinity in the particle state");
+      if (!model_.grid.contains(particles_.position[p]))
+        throw SimulationFailure(step, time, particles_.id[p], position_text(p), "particle left the grid");
+    }
+    const double bound = initial_energy_ + std::max(external_work_, 0.0);
+    if (control_.energy_growth_limit > 0.0 && bound > 0.0 && now.total() > control_.energy_growth_limit * bound) {
+      std::ostringstream cause;
+      cause << "unstable: energy grew to " << now.total() / bound
+            << " times the initial energy plus the work of the body force (limit " << control_.energy_growth_limit << ")";
+      throw SimulationFailure(step, time, -1, "", cause.str());
+    }
+  }
+
+  std::string position_text(int p) const {
+    std::ostringstream text;
+    text.precision(9);
+    text << "(";
+    for (int axis = 0; axis < Dim; ++axis) text << (axis ? ", " : "") << particles_.position[p][axis];
+    text << ")";
+    return text.str();
+  }
+
+  Model<Dim> model_;
+  Particles<Dim> particles_;
+  Shape shape_;
+  Integrator integrator_;
+  RunControl control_;
+  GridFields<Dim> grid_fields_;
+  Stencils<Dim> stencils_;
+  double initial_energy_ = 0.0;
+  double external_work_ = 0.0;  ///< \f$ \int \sum_p m_p \mathbf b \cdot \mathbf v_p \, dt \f$
+};
+
+}  // namespace mpm

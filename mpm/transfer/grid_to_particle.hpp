@@ -1,0 +1,117 @@
+/// \file
+/// Grid-to-particle transfers (G2P): the particle update of each integrator, Eq. (18) applied.
+///
+/// Contract: read nodal_mass, nodal_momentum, nodal_velocity, nodal_force and the stencils;
+/// write the particles' x_p, v_p (and a_p for the predictor-corrector).
+#pragma once
+#include <doctest/doctest.h>
+
+#include "mpm/grid/grid_fields.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/particles/stencils.hpp"
+#include "mpm/transfer/worked_example.hpp"
+
+namespace mpm {
+
+/// \f$ \mathbf a_I = \mathbf f_I / m_I \f$ on nodes with mass, 0 elsewhere.
+template <int Dim>
+Vector<Dim> nodal_acceleration(const GridFields<Dim>& grid, int node) {
+  return grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_force[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
+}
+
+/// Which nodal velocity moves the particles in the forward-Euler update (spec 3.2).
+enum class EulerPositionVelocity {
+  updated,  ///< the authors' code: p_I after p_I += dt f_I, i.e. v_I^{k+1} (default)
+  start     ///< the literal Eqs. (20)-(21): v_I^k = p_I^k / m_I
+};
+
+/// Eqs. (19)-(22), forward Euler in momentum form:
+/// \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \sum_I N_{Ip} \mathbf f_I / m_I \f$ and
+/// \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf p_I / m_I \f$.
+/// Expects nodal_velocity = v_I^k and nodal_momentum = p_I^{k+1} (after update_nodal_momentum).
+template <int Dim>
+void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double dt,
+                                   EulerPositionVelocity position_velocity, Particles<Dim>& particles) {
+  for (int p = 0; p < particles.size(); ++p) {
+    Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
+      const int node = stencils.node[k];
+      if (grid.nodal_mass[node] <= 0.0) continue;
+      acceleration += stencils.value[k] * grid.nodal_force[node] / grid.nodal_mass[node];
+      velocity += stencils.value[k] * (position_velocity == EulerPositionVelocity::updated
+                                           ? Vector<Dim>(grid.nodal_momentum[node] / grid.nodal_mass[node])
+                                           : grid.nodal_velocity[node]);
+    }
+    particles.velocity[p] += dt * acceleration;
+    particles.position[p] += dt * velocity;
+  }
+}
+
+/// Which nodal velocity enters the position update Eq. (33) of the predictor-corrector (spec 3.1.3a).
+enum class NewmarkPositionVelocity {
+  corrected,  ///< the authors' code: v_I^{k+1} from Eq. (30) (default)
+  predicted,  ///< v_I^{pred} of Eq. (29)
+  projected   ///< the literal Eq. (33): v_I^k = sum_p N_Ip m_p v_p^k / m_I
+};
+
+/// Eqs. (31)-(33), the particle update of the predictor-corrector:
+/// \f[ \mathbf a_p^{k+1} = \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
+///     \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
+///     \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I + \tfrac12 \Delta t^2 \sum_I N_{Ip} \frac{\mathbf f_I}{m_I} \f]
+/// Expects nodal_velocity = the corrected v_I^{k+1} and nodal_momentum = sum_p N_Ip m_p v_p^k.
+template <int Dim>
+void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double newmark_gamma, double dt,
+                             NewmarkPositionVelocity position_velocity, Particles<Dim>& particles) {
+  for (int p = 0; p < particles.size(); ++p) {
+    Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
+      const int node = stencils.node[k];
+      if (grid.nodal_mass[node] <= 0.0) continue;
+      const Vector<Dim> nodal_acceleration_I = grid.nodal_force[node] / grid.nodal_mass[node];
+      Vector<Dim> nodal_velocity_I = grid.nodal_velocity[node];
+      if (position_velocity == NewmarkPositionVelocity::predicted) nodal_velocity_I -= newmark_gamma * dt * nodal_acceleration_I;
+      if (position_velocity == NewmarkPositionVelocity::projected) nodal_velocity_I = grid.nodal_momentum[node] / grid.nodal_mass[node];
+      acceleration += stencils.value[k] * nodal_acceleration_I;
+      velocity += stencils.value[k] * nodal_velocity_I;
+    }
+    particles.acceleration[p] = acceleration;
+    particles.velocity[p] += dt * acceleration;
+    particles.position[p] += dt * velocity + 0.5 * dt * dt * acceleration;
+  }
+}
+
+TEST_CASE("G2P on the worked example: Eqs. (19)-(22) and (31)-(33) by hand") {
+  testing::WorkedExample example;
+  auto& grid = example.fields;
+  grid.nodal_mass = {1.5, 2.5, 2.0};
+  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(4.0)};   // a_I = 2, -2, 2
+  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
+  grid.nodal_momentum = {Vector<1>(3.0), Vector<1>(0.0), Vector<1>(-4.0)};  // p_I/m_I = 2, 0, -2
+  const double dt = 0.1;
+
+  Particles<1> euler = example.particles;
+  forward_euler_particle_update(example.stencils, grid, dt, EulerPositionVelocity::updated, euler);
+  // p0: a = 0.75(2) + 0.25(-2) = 1, v = 1 + 0.1 = 1.1; x = 0.25 + 0.1 (0.75 * 2 + 0) = 0.4
+  CHECK(euler.velocity[0][0] == doctest::Approx(1.1));
+  CHECK(euler.position[0][0] == doctest::Approx(0.4));
+  // p1: a = 0.5(-2) + 0.5(2) = 0; x = 1.5 + 0.1 (0 - 1) = 1.4
+  CHECK(euler.velocity[1][0] == doctest::Approx(-1.0));
+  CHECK(euler.position[1][0] == doctest::Approx(1.4));
+
+  Particles<1> literal = example.particles;
+  forward_euler_particle_update(example.stencils, grid, dt, EulerPositionVelocity::start, literal);
+  CHECK(literal.position[0][0] == doctest::Approx(0.25 + 0.1 * (0.75 * 1.0 + 0.25 * -0.6)));
+
+  Particles<1> newmark = example.particles;
+  newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::corrected, newmark);
+  // p0: a = 1, v = 1.1, x = 0.25 + 0.1 (0.75 - 0.15) + 0.005 (1) = 0.315
+  CHECK(newmark.acceleration[0][0] == doctest::Approx(1.0));
+  CHECK(newmark.velocity[0][0] == doctest::Approx(1.1));
+  CHECK(newmark.position[0][0] == doctest::Approx(0.315));
+  Particles<1> predicted = example.particles;
+  newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::predicted, predicted);
+  // v_I - gamma dt a_I = (0.9, -0.5, -1.1): x = 0.25 + 0.1 (0.675 - 0.125) + 0.005 = 0.31
+  CHECK(predicted.position[0][0] == doctest::Approx(0.31));
+}
+
+}  // namespace mpm

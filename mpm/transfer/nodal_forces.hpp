@@ -1,0 +1,50 @@
+/// \file
+/// Nodal forces: the internal force of the stresses and the external body force.
+///
+/// Contract: read the particles' m_p, rho_p, sigma_p and the stencils; add into nodal_force.
+#pragma once
+#include <doctest/doctest.h>
+
+#include "mpm/grid/grid_fields.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/particles/stencils.hpp"
+#include "mpm/transfer/worked_example.hpp"
+
+namespace mpm {
+
+/// Eq. (14): \f$ \mathbf f_I^{int} = -\sum_p \boldsymbol\sigma_p \nabla N_{Ip}\, \frac{m_p}{\rho_p} \f$,
+/// with the particle volume V_p = m_p / rho_p of the current density.
+template <int Dim>
+void add_internal_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
+  for (int p = 0; p < particles.size(); ++p) {
+    const Matrix<Dim> volume_stress = particles.volume(p) * particles.stress[p];
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
+      grid.nodal_force[stencils.node[k]] -= volume_stress * stencils.gradient[k];
+  }
+}
+
+/// Eq. (15), body-force part: \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b \f$ (no tractions in
+/// this project's scenes; Eq. (11)'s surface term is not implemented).
+template <int Dim>
+void add_body_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils, const Vector<Dim>& body_force,
+                    GridFields<Dim>& grid) {
+  if (body_force.squaredNorm() == 0.0) return;
+  for (int p = 0; p < particles.size(); ++p)
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
+      grid.nodal_force[stencils.node[k]] += stencils.value[k] * particles.mass[p] * body_force;
+}
+
+TEST_CASE("Nodal forces on the worked example: Eq. (14) by hand, Eq. (15) sums to the weight") {
+  testing::WorkedExample example;
+  add_internal_force(example.particles, example.stencils, example.fields);
+  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(5.0));
+  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(-25.0));
+  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(20.0));
+  example.fields.reset();
+  add_body_force(example.particles, example.stencils, Vector<1>(-9.81), example.fields);
+  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-9.81 * 1.5));
+  CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
+        doctest::Approx(-9.81 * 6.0));
+}
+
+}  // namespace mpm

@@ -1,0 +1,72 @@
+/// \file
+/// Particle state from the nodal velocities: strain rate, strain, density, stress (Algorithm
+/// steps 4-5, the "update stress first" order of both integrators).
+///
+/// Contract: read nodal_velocity and the stencils; write the particles' epsilon_p, rho_p, sigma_p.
+#pragma once
+#include <doctest/doctest.h>
+
+#include "mpm/grid/grid_fields.hpp"
+#include "mpm/material/linear_elastic.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/particles/stencils.hpp"
+#include "mpm/transfer/worked_example.hpp"
+
+namespace mpm {
+
+/// Eq. (16): \f$ \dot{\boldsymbol\varepsilon}_p = \tfrac12 \sum_I \left[\nabla N_{Ip} \otimes \mathbf v_I + \mathbf v_I \otimes \nabla N_{Ip}\right] \f$.
+template <int Dim>
+Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<Vector<Dim>>& nodal_velocity) {
+  Matrix<Dim> velocity_gradient = Matrix<Dim>::Zero();
+  for (int k = stencils.begin(p); k < stencils.end(p); ++k)
+    velocity_gradient += nodal_velocity[stencils.node[k]] * stencils.gradient[k].transpose();
+  return 0.5 * (velocity_gradient + velocity_gradient.transpose());
+}
+
+/// Eq. (17) discretised as the authors do (spec 2.3): \f$ \rho_p^{k+1} = \rho_p^k / (1 + \Delta t\,\mathrm{tr}\,\dot{\boldsymbol\varepsilon}_p) \f$.
+inline double updated_density(double density, double dt, double volumetric_strain_rate) {
+  return density / (1.0 + dt * volumetric_strain_rate);
+}
+
+/// Steps 4-5: \f$ \boldsymbol\varepsilon_p \mathrel{+}= \Delta t\,\dot{\boldsymbol\varepsilon}_p \f$ (Eq. 16),
+/// the density by Eq. (17), and the stress by Hooke's law, Eq. (3).
+template <int Dim>
+void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& nodal_velocity,
+                                  const LinearElastic& material, double dt, Particles<Dim>& particles) {
+  for (int p = 0; p < particles.size(); ++p) {
+    const Matrix<Dim> rate = strain_rate(stencils, p, nodal_velocity);
+    particles.strain[p] += dt * rate;
+    particles.density[p] = updated_density(particles.density[p], dt, rate.trace());
+    particles.stress[p] = material.stress<Dim>(particles.strain[p]);
+    particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
+  }
+}
+
+TEST_CASE("Strain rate, Eq. (16), density, Eq. (17), stress, Eq. (3): the worked example and a 2D shear") {
+  testing::WorkedExample example;
+  const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
+  CHECK(strain_rate(example.stencils, 0, nodal_velocity)(0, 0) == doctest::Approx(-1.6));
+  CHECK(strain_rate(example.stencils, 1, nodal_velocity)(0, 0) == doctest::Approx(-0.4));
+  update_strain_density_stress(example.stencils, nodal_velocity, LinearElastic{100.0, 0.0, 4.0}, 0.01, example.particles);
+  CHECK(example.particles.strain[0](0, 0) == doctest::Approx(-0.016));
+  CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-1.6));        // E eps = 100 (-0.016)
+  CHECK(example.particles.density[0] == doctest::Approx(4.0 / (1.0 - 0.016)));  // compression: denser
+  CHECK(example.particles.mass[0] / example.particles.density[0] == doctest::Approx(0.5 * 0.984));
+
+  // 2D: nodal velocities v = (y, 0) sampled at the corners of a unit cell give pure shear,
+  // grad v = [[0, 1], [0, 0]], so the strain rate is [[0, 1/2], [1/2, 0]] anywhere in the cell.
+  const Grid<2> grid(Vector<2>::Zero(), 1.0, {1, 1});
+  LinearShape<2> q4(grid);
+  Stencils<2> stencils;
+  stencils.resize(1, q4.capacity());
+  compute_stencils(q4, std::vector<Vector<2>>{Vector<2>(0.3, 0.8)}, stencils);
+  std::vector<Vector<2>> shear(4);
+  for (int node = 0; node < 4; ++node) shear[node] = Vector<2>(grid.node_position(node)[1], 0.0);
+  const Matrix<2> rate = strain_rate(stencils, 0, shear);
+  CHECK(rate(0, 1) == doctest::Approx(0.5));
+  CHECK(rate(1, 0) == doctest::Approx(0.5));
+  CHECK(rate(0, 0) == doctest::Approx(0.0));
+  CHECK(rate(1, 1) == doctest::Approx(0.0));
+}
+
+}  // namespace mpm
