@@ -76,12 +76,13 @@ class Simulation {
   const GridFields<Dim>& grid_fields() const { return grid_fields_; }
 
   RunSummary run(Monitor<Dim>& monitor) {
-    const auto wall_start = std::chrono::steady_clock::now();
+    wall_start_ = std::chrono::steady_clock::now();
     shape_.initialise(particles_);
     stencils_.resize(particles_.size(), shape_.capacity());
     initial_energy_ = balances(particles_).total();
 
-    RunSummary summary;
+    RunSummary& summary = summary_;
+    summary = RunSummary{};
     summary.smallest_time_step = std::numeric_limits<double>::infinity();
     double time = 0.0;
     long step = 0;
@@ -104,6 +105,8 @@ class Simulation {
       integrator_.step(model_, stencils_, body_force, dt, particles_, grid_fields_);
       time = lands ? target : time + dt;
       ++step;
+      summary.steps = step;
+      summary.final_time = time;
       summary.smallest_time_step = std::min(summary.smallest_time_step, dt);
       summary.largest_time_step = std::max(summary.largest_time_step, dt);
       // 4. Health.
@@ -117,16 +120,25 @@ class Simulation {
       monitor.progress(time, control_.end_time);
     }
 
-    if (step == 0) summary.smallest_time_step = 0.0;
-    summary.steps = step;
-    summary.final_time = time;
-    summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    summary.particle_steps_per_second = summary.wall_seconds > 0.0 ? double(step) * particles_.size() / summary.wall_seconds : 0.0;
-    summary.shape = shape_.diagnostics();
+    finish_summary();
     return summary;
   }
 
+  /// What the run has done so far; complete after run() returns, partial after it throws.
+  const RunSummary& summary() {
+    finish_summary();
+    return summary_;
+  }
+
  private:
+  void finish_summary() {
+    if (summary_.steps == 0) summary_.smallest_time_step = 0.0;
+    summary_.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+    summary_.particle_steps_per_second =
+        summary_.wall_seconds > 0.0 ? double(summary_.steps) * particles_.size() / summary_.wall_seconds : 0.0;
+    summary_.shape = shape_.diagnostics();
+  }
+
   /// The next time the loop must land on: the next snapshot time or the end time.
   double next_stop(double time, size_t next_snapshot) const {
     double stop = control_.end_time;
@@ -183,6 +195,8 @@ class Simulation {
   RunControl control_;
   GridFields<Dim> grid_fields_;
   Stencils<Dim> stencils_;
+  RunSummary summary_;
+  std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   double initial_energy_ = 0.0;
   double external_work_ = 0.0;  ///< \f$ \int \sum_p m_p \mathbf b \cdot \mathbf v_p \, dt \f$
 };

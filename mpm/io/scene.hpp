@@ -1,0 +1,273 @@
+/// \file
+/// What a scene says, validated: the typed settings of a run, read from a SceneFile.
+///
+/// Key names are a contract that outside tools rely on: keys may be added, never renamed.
+/// Every key is listed in README.md ("Scene files"); scenes/ holds complete examples.
+#pragma once
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "mpm/io/scene_file.hpp"
+#include "mpm/simulation.hpp"
+
+namespace mpm::io {
+
+struct BodySettings {
+  std::vector<double> min, max, velocity;
+  std::vector<int> particles_per_cell;
+  std::string placement = "uniform";
+};
+struct VelocityBox {
+  std::vector<double> min, max, velocity;
+};
+struct FixedSettings {
+  int axis = 0;
+  bool upper = false;
+  std::vector<int> components;
+};
+struct ObserverSettings {
+  std::string name;
+  std::vector<double> position;
+};
+
+struct Scene {
+  std::string file, title;
+  int dimension = 1;
+  // [grid]
+  std::vector<double> origin, length;
+  std::vector<int> cells, margin_min, margin_max;
+  double spacing = 0.0;
+  // [material]
+  double young_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
+  // [[body]], [[initial_velocity]], [[fixed]], [gravity]
+  std::vector<BodySettings> bodies;
+  std::vector<VelocityBox> initial_velocities;
+  std::vector<FixedSettings> fixed;
+  std::vector<double> gravity;
+  double ramp_period = 0.0;
+  // [solver]
+  std::string shape = "linear", integrator = "fe";
+  double lme_gamma = 3.0, lme_tol = 1e-6, lme_newton_tol = 1e-10;
+  int lme_max_iterations = 100;
+  std::string lme_beta = "grid_spacing";
+  double newmark_gamma = 0.5;
+  std::string fe_position_velocity = "updated", npc_position_velocity = "corrected";
+  RunControl control;
+  // [[observer]], [output]
+  std::vector<ObserverSettings> observers;
+  /// the resolved scene (file plus overrides) as JSON, for run.json
+  std::string resolved_json;
+};
+
+namespace detail {
+
+inline std::vector<int> to_integers(SceneReader& reader, const std::string& key, int size, std::vector<int> fallback,
+                                    int smallest) {
+  std::vector<double> fallback_numbers(fallback.begin(), fallback.end());
+  const auto numbers = reader.numbers(key, size, fallback_numbers);
+  std::vector<int> values;
+  for (double number : numbers) {
+    if (number != std::floor(number) || number < smallest)
+      reader.fail(key, "entries must be whole numbers >= " + std::to_string(smallest));
+    values.push_back(static_cast<int>(number));
+  }
+  return values;
+}
+
+/// Calls `read` with a reader for every table of the array of tables `key` ([[key]] in TOML).
+template <class Read>
+void each_table(const SceneFile& file, SceneReader& root, const std::string& key, Read read) {
+  if (!root.has(key)) return;
+  const toml::array* array = file.table[key].as_array();
+  if (!array || !array->is_array_of_tables()) root.fail(key, "must be an array of tables: write [[" + key + "]]");
+  for (size_t k = 0; k < array->size(); ++k) {
+    SceneReader reader(file.path, *(*array)[k].as_table(), key + "[" + std::to_string(k) + "]");
+    read(reader);
+    reader.reject_unknown_keys();
+  }
+}
+
+inline const toml::table& table_or_empty(const SceneFile& file, SceneReader& root, const std::string& key, bool required) {
+  static const toml::table empty;
+  if (!root.has(key)) {
+    if (required) root.fail(key, "missing table [" + key + "]");
+    return empty;
+  }
+  const toml::table* table = file.table[key].as_table();
+  if (!table) root.fail(key, "must be a table: write [" + key + "]");
+  return *table;
+}
+
+/// True if `value` lies on a grid line of the axis (within 1e-6 of a cell).
+inline bool on_grid_line(double value, double origin, double spacing) {
+  const double cells = (value - origin) / spacing;
+  return std::abs(cells - std::round(cells)) < 1e-6;
+}
+
+}  // namespace detail
+
+/// Reads and validates every key of the scene. \throws SceneError at the first problem.
+inline Scene read_scene(const SceneFile& file) {
+  using detail::each_table;
+  Scene scene;
+  scene.file = file.path;
+  SceneReader root(file.path, file.table, "");
+  scene.title = root.any_text("title", "untitled");
+  scene.dimension = root.integer("dimension", 1);
+  if (scene.dimension != 1 && scene.dimension != 2) root.fail("dimension", "must be 1 or 2");
+  const int dim = scene.dimension;
+  const std::vector<std::string> axes = dim == 1 ? std::vector<std::string>{"x"} : std::vector<std::string>{"x", "y"};
+
+  {  // [grid]
+    SceneReader grid(file.path, detail::table_or_empty(file, root, "grid", true), "grid");
+    scene.origin = grid.numbers("origin", dim, std::vector<double>(dim, 0.0));
+    scene.length = grid.numbers("length", dim);
+    scene.cells = detail::to_integers(grid, "cells", dim, {}, 1);
+    scene.margin_min = detail::to_integers(grid, "margin_min", dim, std::vector<int>(dim, 0), 0);
+    scene.margin_max = detail::to_integers(grid, "margin_max", dim, std::vector<int>(dim, 0), 0);
+    for (int axis = 0; axis < dim; ++axis)
+      if (!(scene.length[axis] > 0.0)) grid.fail("length", "entries must be > 0");
+    scene.spacing = scene.length[0] / scene.cells[0];
+    for (int axis = 1; axis < dim; ++axis)
+      if (std::abs(scene.length[axis] / scene.cells[axis] - scene.spacing) > 1e-9 * scene.spacing)
+        grid.fail("cells", "cells must be square: length/cells must be equal on every axis");
+    grid.reject_unknown_keys();
+  }
+  {  // [material]
+    SceneReader material(file.path, detail::table_or_empty(file, root, "material", true), "material");
+    scene.young_modulus = material.positive("young_modulus");
+    scene.poisson_ratio = material.number("poisson_ratio", 0.0);
+    if (!(scene.poisson_ratio >= 0.0 && scene.poisson_ratio < 0.5)) material.fail("poisson_ratio", "must be in [0, 0.5)");
+    scene.density = material.positive("density");
+    material.reject_unknown_keys();
+  }
+  auto inside_grid = [&](SceneReader& reader, const std::string& key, const std::vector<double>& point, bool on_lines) {
+    for (int axis = 0; axis < dim; ++axis) {
+      const double lower = scene.origin[axis] - scene.margin_min[axis] * scene.spacing;
+      const double upper = scene.origin[axis] + scene.length[axis] + scene.margin_max[axis] * scene.spacing;
+      if (point[axis] < lower - 1e-9 * scene.spacing || point[axis] > upper + 1e-9 * scene.spacing)
+        reader.fail(key, "lies outside the grid [" + std::to_string(lower) + ", " + std::to_string(upper) + "] on " + axes[axis]);
+      if (on_lines && !detail::on_grid_line(point[axis], scene.origin[axis], scene.spacing))
+        reader.fail(key, "must lie on grid lines (multiples of the cell size " + std::to_string(scene.spacing) + " from the origin)");
+    }
+  };
+  each_table(file, root, "body", [&](SceneReader& reader) {
+    BodySettings body;
+    body.min = reader.numbers("min", dim);
+    body.max = reader.numbers("max", dim);
+    inside_grid(reader, "min", body.min, true);
+    inside_grid(reader, "max", body.max, true);
+    for (int axis = 0; axis < dim; ++axis)
+      if (!(body.max[axis] > body.min[axis] + 0.5 * scene.spacing)) reader.fail("max", "must exceed min by at least one cell");
+    body.particles_per_cell = detail::to_integers(reader, "particles_per_cell", dim, std::vector<int>(dim, 1), 1);
+    body.velocity = reader.numbers("velocity", dim, std::vector<double>(dim, 0.0));
+    body.placement = reader.text("placement", {"uniform", "gauss"}, std::string("uniform"));
+    if (body.placement == "gauss")
+      for (int ppc : body.particles_per_cell)
+        if (ppc != 2) reader.fail("placement", "'gauss' needs particles_per_cell = 2 on every axis");
+    scene.bodies.push_back(body);
+  });
+  if (scene.bodies.empty()) root.fail("body", "the scene needs at least one [[body]]");
+  each_table(file, root, "initial_velocity", [&](SceneReader& reader) {
+    scene.initial_velocities.push_back({reader.numbers("min", dim), reader.numbers("max", dim), reader.numbers("velocity", dim)});
+  });
+  each_table(file, root, "fixed", [&](SceneReader& reader) {
+    const std::vector<std::string> faces = dim == 1 ? std::vector<std::string>{"xmin", "xmax"}
+                                                    : std::vector<std::string>{"xmin", "xmax", "ymin", "ymax"};
+    const std::string face = reader.text("face", faces);
+    FixedSettings fixed;
+    fixed.axis = face[0] == 'x' ? 0 : 1;
+    fixed.upper = face.substr(1) == "max";
+    for (const auto& component : reader.texts("components", axes)) fixed.components.push_back(component == "x" ? 0 : 1);
+    scene.fixed.push_back(fixed);
+  });
+  {  // [gravity]
+    SceneReader gravity(file.path, detail::table_or_empty(file, root, "gravity", false), "gravity");
+    scene.gravity = gravity.numbers("acceleration", dim, std::vector<double>(dim, 0.0));
+    scene.ramp_period = gravity.number("ramp_period", 0.0);
+    if (scene.ramp_period < 0.0) gravity.fail("ramp_period", "must be >= 0 (0: no ramp)");
+    scene.control.body_force_time = gravity.text("evaluate_at", {"step_end", "step_start"}, std::string("step_end")) == "step_end"
+                                        ? BodyForceTime::step_end
+                                        : BodyForceTime::step_start;
+    gravity.reject_unknown_keys();
+  }
+  {  // [solver]
+    SceneReader solver(file.path, detail::table_or_empty(file, root, "solver", true), "solver");
+    scene.shape = solver.text("shape", {"linear", "ugimp", "lme"}, std::string("linear"));
+    scene.lme_gamma = solver.positive("lme_gamma", 3.0);
+    scene.lme_tol = solver.positive("lme_tol", 1e-6);
+    if (scene.lme_tol >= 1.0) solver.fail("lme_tol", "must be in (0, 1)");
+    scene.lme_newton_tol = solver.positive("lme_newton_tol", 1e-10);
+    scene.lme_max_iterations = solver.integer("lme_max_iterations", 100);
+    if (scene.lme_max_iterations < 1) solver.fail("lme_max_iterations", "must be >= 1");
+    // The LME support radius R = h sqrt(-ln(tol)/gamma) must reach the corners of a particle's cell
+    // (its convex hull), R >= h sqrt(dimension): gamma <= -ln(tol)/dimension.
+    if (scene.shape == "lme" && scene.lme_gamma > -std::log(scene.lme_tol) / dim)
+      solver.fail("lme_gamma", "too large for lme_tol: the support must reach the corners of a cell, gamma <= -ln(lme_tol)/dimension = " +
+                                   std::to_string(-std::log(scene.lme_tol) / dim));
+    scene.lme_beta = solver.text("lme_beta", {"grid_spacing", "mean_neighbour_distance"}, std::string("grid_spacing"));
+    scene.integrator = solver.text("integrator", {"fe", "npc"}, std::string("fe"));
+    scene.control.cfl = solver.positive("cfl", 0.5);
+    scene.control.courant = solver.text("courant", {"max", "sum"}, std::string("max")) == "max" ? CourantSpeed::maximum : CourantSpeed::sum;
+    scene.control.end_time = solver.positive("end_time");
+    scene.newmark_gamma = solver.number("newmark_gamma", 0.5);
+    if (!(scene.newmark_gamma >= 0.0 && scene.newmark_gamma <= 1.0)) solver.fail("newmark_gamma", "must be in [0, 1]");
+    scene.fe_position_velocity = solver.text("fe_position_velocity", {"updated", "start"}, std::string("updated"));
+    scene.npc_position_velocity = solver.text("npc_position_velocity", {"corrected", "predicted", "projected"}, std::string("corrected"));
+    scene.control.energy_growth_limit = solver.number("energy_growth_limit", 10.0);
+    if (scene.control.energy_growth_limit < 0.0) solver.fail("energy_growth_limit", "must be >= 0 (0: no check)");
+    solver.reject_unknown_keys();
+  }
+  each_table(file, root, "observer", [&](SceneReader& reader) {
+    ObserverSettings observer{reader.any_text("name", ""), reader.numbers("position", dim)};
+    if (observer.name.empty() || observer.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
+      reader.fail("name", "required; letters, digits and _ only (it names CSV columns)");
+    for (const auto& other : scene.observers)
+      if (other.name == observer.name) reader.fail("name", "'" + observer.name + "' is used twice");
+    scene.observers.push_back(observer);
+  });
+  {  // [output]
+    SceneReader output(file.path, detail::table_or_empty(file, root, "output", false), "output");
+    scene.control.sample_every = output.integer("every", 1);
+    if (scene.control.sample_every < 1) output.fail("every", "must be >= 1");
+    scene.control.snapshot_times = output.numbers("snapshots", -1, std::vector<double>{});
+    for (double time : scene.control.snapshot_times)
+      if (time < 0.0 || time > scene.control.end_time) output.fail("snapshots", "times must lie in [0, solver.end_time]");
+    output.reject_unknown_keys();
+  }
+  root.reject_unknown_keys();
+  std::ostringstream json;
+  json << toml::json_formatter{file.table};
+  scene.resolved_json = json.str();
+  return scene;
+}
+
+TEST_CASE("Scene validation: a minimal scene reads; each kind of mistake names its key and line") {
+  const std::string minimal =
+      "dimension = 1\n[grid]\nlength = [1.0]\ncells = [10]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
+      "[[body]]\nmin = [0.0]\nmax = [1.0]\n[solver]\nend_time = 1.0\n";
+  const auto scene = read_scene(parse_scene_text(minimal, "m.toml"));
+  CHECK(scene.spacing == doctest::Approx(0.1));
+  CHECK(scene.shape == "linear");
+  CHECK(scene.bodies.at(0).particles_per_cell.at(0) == 1);
+
+  auto message_of = [&](const std::string& text) -> std::string {
+    try {
+      read_scene(parse_scene_text(text, "m.toml"));
+    } catch (const SceneError& error) {
+      return error.message();
+    }
+    return "no error";
+  };
+  CHECK(message_of(minimal + "cfl = -2\n") == "error: m.toml:13: solver.cfl: must be > 0, got -2.000000");
+  CHECK(message_of(minimal + "shape = \"quadratic\"\n") ==
+        "error: m.toml:13: solver.shape: 'quadratic' is not allowed; use one of linear | ugimp | lme");
+  CHECK(message_of(minimal + "cfll = 0.5\n").rfind("error: m.toml:13: solver.cfll: unknown key", 0) == 0);
+  CHECK(message_of(minimal + "[[body]]\nmin = [0.05]\nmax = [1.0]\n").rfind("error: m.toml:14: body[1].min: must lie on grid lines", 0) == 0);
+  CHECK(message_of(minimal + "[[fixed]]\nface = \"ymin\"\ncomponents = [\"x\"]\n").rfind("error: m.toml:14: fixed[0].face:", 0) == 0);
+}
+
+}  // namespace mpm::io

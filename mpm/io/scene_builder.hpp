@@ -1,0 +1,83 @@
+/// \file
+/// From validated scene settings to the objects of a run: grid, model, particles, observers.
+#pragma once
+#include <limits>
+
+#include "mpm/io/scene.hpp"
+#include "mpm/model.hpp"
+#include "mpm/particles/seeding.hpp"
+
+namespace mpm::io {
+
+template <int Dim>
+Vector<Dim> to_vector(const std::vector<double>& values) {
+  Vector<Dim> vector;
+  for (int axis = 0; axis < Dim; ++axis) vector[axis] = values[axis];
+  return vector;
+}
+
+/// The grid spans the scene's [origin, origin + length] plus margin_min and margin_max cells
+/// beyond it on each axis (spec 5.1.2: room for free ends to move, and for their supports).
+template <int Dim>
+Grid<Dim> build_grid(const Scene& scene) {
+  Vector<Dim> origin;
+  std::array<int, Dim> cells{};
+  for (int axis = 0; axis < Dim; ++axis) {
+    origin[axis] = scene.origin[axis] - scene.margin_min[axis] * scene.spacing;
+    cells[axis] = scene.cells[axis] + scene.margin_min[axis] + scene.margin_max[axis];
+  }
+  return Grid<Dim>(origin, scene.spacing, cells);
+}
+
+template <int Dim>
+Model<Dim> build_model(const Scene& scene) {
+  Model<Dim> model;
+  model.grid = build_grid<Dim>(scene);
+  model.material = LinearElastic{scene.young_modulus, scene.poisson_ratio, scene.density};
+  for (const auto& fixed : scene.fixed) {
+    const auto dofs = fixed_dofs_on_face(model.grid, Face{fixed.axis, fixed.upper}, fixed.components);
+    model.fixed.insert(model.fixed.end(), dofs.begin(), dofs.end());
+  }
+  model.gravity.acceleration = to_vector<Dim>(scene.gravity);
+  model.gravity.ramp_period = scene.ramp_period;
+  return model;
+}
+
+template <int Dim>
+Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
+  Particles<Dim> particles;
+  for (const auto& body : scene.bodies) {
+    std::array<int, Dim> per_cell{};
+    for (int axis = 0; axis < Dim; ++axis) per_cell[axis] = body.particles_per_cell[axis];
+    fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, scene.density,
+             to_vector<Dim>(body.velocity), body.placement == "gauss" ? Placement::gauss : Placement::uniform, particles);
+  }
+  for (const auto& box : scene.initial_velocities) {  // applied in order: later boxes win
+    const Vector<Dim> lower = to_vector<Dim>(box.min), upper = to_vector<Dim>(box.max);
+    for (int p = 0; p < particles.size(); ++p) {
+      const Vector<Dim>& x = particles.position[p];
+      if ((x.array() >= lower.array()).all() && (x.array() <= upper.array()).all())
+        particles.velocity[p] = to_vector<Dim>(box.velocity);
+    }
+  }
+  return particles;
+}
+
+/// Index of the particle nearest to each observer's point at t = 0 (lowest index on ties).
+template <int Dim>
+std::vector<int> observed_particles(const Scene& scene, const Particles<Dim>& particles) {
+  std::vector<int> observed;
+  for (const auto& observer : scene.observers) {
+    const Vector<Dim> point = to_vector<Dim>(observer.position);
+    int nearest = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (int p = 0; p < particles.size(); ++p) {
+      const double distance = (particles.position[p] - point).squaredNorm();
+      if (distance < best * (1.0 - 1e-12)) best = distance, nearest = p;
+    }
+    observed.push_back(nearest);
+  }
+  return observed;
+}
+
+}  // namespace mpm::io

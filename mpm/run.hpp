@@ -1,0 +1,97 @@
+/// \file
+/// From a validated scene to a finished run. The dimension, the shape function and the
+/// integrator are chosen here, once per run, as template arguments of Simulation; nothing in
+/// the time step asks again.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "mpm/integrators/forward_euler.hpp"
+#include "mpm/integrators/newmark_predictor_corrector.hpp"
+#include "mpm/io/scene_builder.hpp"
+#include "mpm/shape/lme.hpp"
+#include "mpm/shape/linear.hpp"
+#include "mpm/shape/ugimp.hpp"
+#include "mpm/simulation.hpp"
+
+namespace mpm {
+
+/// Everything a run starts from: the model, the particles and the observed particles.
+template <int Dim>
+struct Setup {
+  Model<Dim> model;
+  Particles<Dim> particles;
+  std::vector<int> observed;  ///< particle index of each [[observer]]
+};
+
+template <int Dim>
+Setup<Dim> build_setup(const io::Scene& scene) {
+  Setup<Dim> setup;
+  setup.model = io::build_model<Dim>(scene);
+  setup.particles = io::build_particles<Dim>(scene, setup.model.grid);
+  setup.observed = io::observed_particles<Dim>(scene, setup.particles);
+  return setup;
+}
+
+inline LmeOptions lme_options(const io::Scene& scene) {
+  LmeOptions options;
+  options.gamma = scene.lme_gamma;
+  options.support_tolerance = scene.lme_tol;
+  options.newton_tolerance = scene.lme_newton_tol;
+  options.max_iterations = scene.lme_max_iterations;
+  options.beta_rule = scene.lme_beta == "grid_spacing" ? LmeOptions::BetaRule::grid_spacing
+                                                       : LmeOptions::BetaRule::mean_neighbour_distance;
+  return options;
+}
+
+namespace detail {
+
+template <int Dim, class Shape, class Integrator>
+RunSummary simulate(const io::Scene& scene, const Setup<Dim>& setup, Shape shape, Integrator integrator,
+                    Monitor<Dim>& monitor, RunSummary* partial) {
+  Simulation<Dim, Shape, Integrator> simulation(setup.model, setup.particles, std::move(shape), integrator, scene.control);
+  try {
+    return simulation.run(monitor);
+  } catch (const SimulationFailure&) {
+    if (partial) *partial = simulation.summary();
+    throw;
+  }
+}
+
+template <int Dim, class Integrator>
+RunSummary with_shape(const io::Scene& scene, const Setup<Dim>& setup, Integrator integrator, Monitor<Dim>& monitor,
+                      RunSummary* partial) {
+  const Grid<Dim>& grid = setup.model.grid;
+  if (scene.shape == "ugimp") return simulate(scene, setup, UgimpShape<Dim>(grid), integrator, monitor, partial);
+  if (scene.shape == "lme") return simulate(scene, setup, LmeShape<Dim>(grid, lme_options(scene)), integrator, monitor, partial);
+  return simulate(scene, setup, LinearShape<Dim>(grid), integrator, monitor, partial);
+}
+
+}  // namespace detail
+
+/// Runs the scene's setup with the scene's shape function and integrator.
+/// \throws SimulationFailure when the method fails; `partial` then holds what was done.
+template <int Dim>
+RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor, RunSummary* partial = nullptr) {
+  if (scene.integrator == "npc") {
+    NewmarkPredictorCorrector integrator;
+    integrator.newmark_gamma = scene.newmark_gamma;
+    integrator.position_velocity = scene.npc_position_velocity == "corrected"   ? NewmarkPositionVelocity::corrected
+                                   : scene.npc_position_velocity == "predicted" ? NewmarkPositionVelocity::predicted
+                                                                                : NewmarkPositionVelocity::projected;
+    return detail::with_shape(scene, setup, integrator, monitor, partial);
+  }
+  ForwardEuler integrator;
+  integrator.position_velocity =
+      scene.fe_position_velocity == "updated" ? EulerPositionVelocity::updated : EulerPositionVelocity::start;
+  return detail::with_shape(scene, setup, integrator, monitor, partial);
+}
+
+/// Reads a scene file and applies `--set` overrides. \throws SceneError.
+inline io::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  io::SceneFile file = io::parse_scene_file(path);
+  for (size_t k = 0; k < overrides.size(); ++k) io::apply_override(file, overrides[k], static_cast<int>(k) + 1);
+  return io::read_scene(file);
+}
+
+}  // namespace mpm

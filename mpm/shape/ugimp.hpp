@@ -1,0 +1,387 @@
+/// \file
+/// uGIMP shape functions: the "uniform" generalised interpolation material point weights of
+/// Bardenhagen & Kober (2004), as the authors use them (spec 4.2).
+///
+/// A particle is a segment (1D) or rectangle (2D) of half-length \f$ l_p \f$ per axis, centred at
+/// \f$ x_p \f$. Its weight at node I is the linear hat averaged over the particle,
+/// \f$ S(\Delta) = \frac{1}{2 l_p} \int_{\Delta - l_p}^{\Delta + l_p} \hat N(s)\, ds \f$ with
+/// \f$ \Delta = x_p - x_I \f$ and \f$ \hat N(s) = \max(0, 1 - |s|/h) \f$, and in 2D the tensor product
+/// \f$ N_I = S(\Delta_x) S(\Delta_y) \f$. "Uniform": \f$ l_p \f$ is fixed at seeding
+/// (\f$ h / (2\,\mathrm{ppc}) \f$ per axis) and never updated, however the body deforms.
+///
+/// Unlike the linear hat, S is C1: grad N does not jump when a particle crosses a cell face,
+/// which is why uGIMP has less grid-crossing noise than linear shapes (Fig. 6).
+#pragma once
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "mpm/core/errors.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/shape/linear.hpp"
+#include "mpm/shape/shape_diagnostics.hpp"
+#include "mpm/shape/shape_properties.hpp"
+#include "mpm/shape/tensor_product.hpp"
+
+namespace mpm {
+
+/// S and dS/dDelta of one axis, in units where the cell size is 1.
+struct GimpFactor {
+  double value;
+  double derivative;
+};
+
+/// The 1D uGIMP weight of spec 4.2 (Bardenhagen & Kober 2004) for \f$ l_p \le h/2 \f$, in cell
+/// units: \f$ d = \Delta / h \f$, \f$ \lambda = l_p / h \f$; returns S and dS/dd. With h and l_p restored:
+/// \f[
+///   S(\Delta) = \begin{cases}
+///     \dfrac{(h + l_p + \Delta)^2}{4 h l_p} & -h - l_p < \Delta \le -h + l_p \\[1ex]
+///     1 + \Delta / h                         & -h + l_p < \Delta \le -l_p \\[1ex]
+///     1 - \dfrac{\Delta^2 + l_p^2}{2 h l_p}   & -l_p < \Delta \le l_p \\[1ex]
+///     1 - \Delta / h                         & l_p < \Delta \le h - l_p \\[1ex]
+///     \dfrac{(h + l_p - \Delta)^2}{4 h l_p} & h - l_p < \Delta \le h + l_p \\[1ex]
+///     0 & \text{otherwise}
+///   \end{cases}
+/// \f]
+/// S is even, so the code works with |d|. The pieces meet with equal value and slope (S is C1);
+/// only S'' jumps, at \f$ |\Delta| \in \{ l_p,\ h - l_p,\ h + l_p \} \f$.
+inline GimpFactor gimp_factor_table(double d, double lambda) {
+  const double a = std::abs(d);
+  const double sign = d < 0.0 ? -1.0 : 1.0;
+  if (a <= lambda) return {1.0 - (d * d + lambda * lambda) / (2.0 * lambda), -d / lambda};
+  if (a <= 1.0 - lambda) return {1.0 - a, -sign};
+  if (a < 1.0 + lambda) {
+    const double gap = 1.0 + lambda - a;  // distance to the edge of the support
+    return {gap * gap / (4.0 * lambda), -sign * gap / (2.0 * lambda)};
+  }
+  return {0.0, 0.0};
+}
+
+/// The same weight from its definition, for any \f$ l_p > 0 \f$ (the table holds only for
+/// \f$ l_p \le h/2 \f$, where the particle never covers a node and its two neighbours at once):
+/// \f[
+///   S(\Delta) = \frac{H(\Delta + l_p) - H(\Delta - l_p)}{2 l_p}, \qquad
+///   S'(\Delta) = \frac{\hat N(\Delta + l_p) - \hat N(\Delta - l_p)}{2 l_p},
+/// \f]
+/// with H the antiderivative of the hat, \f$ H(t) = \int_{-\infty}^{t} \hat N \f$. In cell units.
+/// The difference of H loses about \f$ \epsilon h / l_p \f$ relative accuracy, harmless for the
+/// \f$ l_p > h/2 \f$ it is used for.
+inline GimpFactor gimp_factor_average(double d, double lambda) {
+  auto hat = [](double t) { return std::max(0.0, 1.0 - std::abs(t)); };
+  auto antiderivative = [](double t) {
+    if (t <= -1.0) return 0.0;
+    if (t <= 0.0) return 0.5 * (1.0 + t) * (1.0 + t);
+    if (t <= 1.0) return 1.0 - 0.5 * (1.0 - t) * (1.0 - t);
+    return 1.0;
+  };
+  return {(antiderivative(d + lambda) - antiderivative(d - lambda)) / (2.0 * lambda),
+          (hat(d + lambda) - hat(d - lambda)) / (2.0 * lambda)};
+}
+
+/// The uGIMP weight in cell units: the spec 4.2 table when it applies, its definition otherwise.
+inline GimpFactor gimp_factor(double d, double lambda) {
+  return lambda <= 0.5 ? gimp_factor_table(d, lambda) : gimp_factor_average(d, lambda);
+}
+
+template <int Dim>
+class UgimpShape {
+ public:
+  static constexpr const char* name = "ugimp";
+  /// Largest supported half-length, in cells: a particle at most two cells long.
+  static constexpr double max_relative_half_length = 1.0;
+  /// Nodes per axis the support can hold at that size: |Delta| < h + l_p covers at most 4 nodes.
+  static constexpr int max_nodes_per_axis = 4;
+
+  explicit UgimpShape(const Grid<Dim>& grid) : grid_(grid) {}
+
+  /// Nodes per particle: the product over the axes of the largest per-axis count,
+  /// \f$ \lceil 2 (1 + l_p / h) \rceil \f$ (3 per axis for every \f$ l_p \le h/2 \f$), over all particles.
+  /// Fixed by initialise(); set_half_length() may raise it, so call that before sizing stencils.
+  int capacity() const { return capacity_; }
+
+  /// Copies l_p of every particle (Particles::half_length, set at seeding); never updated after.
+  /// \throws std::invalid_argument if some l_p is not in (0, h].
+  void initialise(const Particles<Dim>& particles) {
+    relative_half_length_.assign(particles.size(), Vector<Dim>::Zero());
+    capacity_ = 1 << Dim;
+    for (int p = 0; p < particles.size(); ++p) set_half_length(p, particles.half_length[p]);
+  }
+
+  /// For callers without Particles (the teaching CLI, tests): particle_count particles of one size.
+  void initialise(int particle_count, const Vector<Dim>& half_length) {
+    relative_half_length_.assign(particle_count, Vector<Dim>::Zero());
+    capacity_ = 1 << Dim;
+    for (int p = 0; p < particle_count; ++p) set_half_length(p, half_length);
+  }
+
+  /// Sets l_p (per axis) of one particle already counted by initialise(); raises capacity() if needed.
+  /// \throws std::invalid_argument if a component is not in (0, h].
+  void set_half_length(int particle, const Vector<Dim>& half_length) {
+    const double h = grid_.spacing();
+    int nodes = 1;
+    for (int axis = 0; axis < Dim; ++axis) {
+      const double lambda = half_length[axis] / h;
+      if (!(lambda > 0.0 && lambda <= max_relative_half_length)) {
+        std::ostringstream message;
+        message << "uGIMP: particle " << particle << " has half-length l_p = " << half_length[axis] << " along "
+                << axis_name(axis) << ", outside (0, h] with h = " << h;
+        throw std::invalid_argument(message.str());
+      }
+      relative_half_length_.at(particle)[axis] = lambda;
+      nodes *= nodes_along_axis(lambda);
+    }
+    capacity_ = std::max(capacity_, nodes);
+  }
+
+  /// l_p of a particle, per axis.
+  Vector<Dim> half_length(int particle) const { return relative_half_length_[particle] * grid_.spacing(); }
+
+  /// N_I(x_p) and grad N_I(x_p) for every node with \f$ |\Delta_a| < h + l_p \f$ on each axis a.
+  /// Nodes within rounding of that edge of the support, where S < 1e-26 h / l_p, are left out.
+  /// \throws ShapeFailure if x_p is outside the grid, or if the particle's support crosses the
+  /// edge of the grid (a stencil node would lie outside it).
+  int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
+    if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
+    const double h = grid_.spacing();
+    const Vector<Dim>& lambda = relative_half_length_[particle];
+    std::array<AxisFactors<max_nodes_per_axis>, Dim> axes;
+    for (int axis = 0; axis < Dim; ++axis) {
+      const double xi = (x[axis] - grid_.origin()[axis]) / h;  // lattice coordinate of x
+      const double slack = 8.0 * std::numeric_limits<double>::epsilon() * (std::abs(xi) + 2.0);
+      const double reach = 1.0 + lambda[axis] - slack;
+      const int first = static_cast<int>(std::floor(xi - reach)) + 1;     // first node with xi - k < reach
+      int last = static_cast<int>(std::ceil(xi + reach)) - 1;             // last node with k - xi < reach
+      last = std::min(last, first + nodes_along_axis(lambda[axis]) - 1);  // only ever trims a node with S ~ 0
+      if (first < 0 || last > grid_.cells(axis)) throw support_left_grid(particle, x, axis, lambda[axis] * h);
+      for (int k = first; k <= last; ++k) {
+        const GimpFactor s = gimp_factor(xi - k, lambda[axis]);
+        axes[axis].add(k, s.value, s.derivative / h);
+      }
+    }
+    const int count = tensor_product_stencil(grid_, axes, nodes, values, gradients);
+    diagnostics_.record(count);
+    return count;
+  }
+
+  const ShapeDiagnostics& diagnostics() const { return diagnostics_; }
+
+ private:
+  /// Most lattice points an open interval of length 2 (1 + lambda) can hold (lambda = 1/2 is 3).
+  static int nodes_along_axis(double lambda) { return static_cast<int>(std::ceil(2.0 * (1.0 + lambda) - 1e-9)); }
+
+  ShapeFailure support_left_grid(int particle, const Vector<Dim>& x, int axis, double half_length) const {
+    std::ostringstream cause;
+    cause.precision(9);
+    cause << "uGIMP support left the grid: along " << axis_name(axis) << " the particle spans ["
+          << x[axis] - half_length << ", " << x[axis] + half_length << "] but the grid is ["
+          << grid_.origin()[axis] << ", " << grid_.upper_corner()[axis] << "]";
+    return ShapeFailure(particle, cause.str());
+  }
+
+  Grid<Dim> grid_;
+  std::vector<Vector<Dim>> relative_half_length_;  ///< l_p / h per particle and axis
+  int capacity_ = 1 << Dim;
+  ShapeDiagnostics diagnostics_;
+};
+
+namespace testing {
+
+/// The uGIMP weight from its definition, by a route independent of gimp_factor: the hat is
+/// integrated over [d - lambda, d + lambda] piece by piece (split at its kinks -1, 0, 1), where the
+/// trapezoid rule is exact because the hat is linear on each piece. Cell units.
+inline double gimp_by_quadrature(double d, double lambda) {
+  auto hat = [](double t) { return std::max(0.0, 1.0 - std::abs(t)); };
+  std::vector<double> cuts{d - lambda};
+  for (double kink : {-1.0, 0.0, 1.0})
+    if (kink > d - lambda && kink < d + lambda) cuts.push_back(kink);
+  cuts.push_back(d + lambda);
+  double integral = 0.0;
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) integral += 0.5 * (cuts[k + 1] - cuts[k]) * (hat(cuts[k]) + hat(cuts[k + 1]));
+  return integral / (2.0 * lambda);
+}
+
+/// Distance, in cells, from x to the nearest place where the uGIMP weight of some node has a
+/// kink in S'' (an end of the particle, x_a +- l_p, crossing a node or the middle of the hat).
+template <int Dim>
+double distance_to_gimp_kink(const Grid<Dim>& grid, const Vector<Dim>& x, const Vector<Dim>& half_length) {
+  double nearest = 1e300;
+  for (int axis = 0; axis < Dim; ++axis) {
+    const double xi = (x[axis] - grid.origin()[axis]) / grid.spacing();
+    const double lambda = half_length[axis] / grid.spacing();
+    for (double end : {xi - lambda, xi + lambda}) nearest = std::min(nearest, std::abs(end - std::round(end)));
+  }
+  return nearest;
+}
+
+/// The shape properties at x with the finite-difference tolerance the maths allows there: uGIMP is
+/// piecewise quadratic, so central differences with step e = 1e-6 h are exact up to rounding
+/// (|error| h <~ 1e-16 |x / h| / e ~ 1e-9 on these grids) except within e of a kink, where the jump
+/// of S'' (at most 1/l_p in cell units, both particle ends at kinks: 2/l_p ... but one per axis
+/// factor) gives |error| h <= e |jump| / 4 <= 2.5e-7 h / l_p... times 2 for both ends at a kink.
+template <int Dim, class Shape>
+void check_ugimp_properties(Shape& shape, const Grid<Dim>& grid, const Vector<Dim>& x, const Vector<Dim>& half_length) {
+  PropertyTolerances tolerance;
+  const double lambda = half_length.minCoeff() / grid.spacing();
+  const bool near_kink = distance_to_gimp_kink(grid, x, half_length) < 2e-6;
+  tolerance.finite_difference = near_kink ? 5e-7 / lambda + 1e-9 : 1e-9;
+  check_shape_properties(shape, grid, 0, x, tolerance);
+}
+
+}  // namespace testing
+
+TEST_CASE("uGIMP 1D weight: the spec 4.2 table by hand, its continuity, and against its definition") {
+  const double lambda = 0.25;  // l_p = h/4: two particles per cell
+  // By hand. Exact in binary for lambda = 1/4, so only the last bit may differ.
+  CHECK(gimp_factor(0.0, lambda).value == doctest::Approx(1.0 - lambda / 2.0).epsilon(1e-15));  // 1 - l_p/(2h)
+  CHECK(gimp_factor(0.0, lambda).derivative == 0.0);
+  CHECK(gimp_factor(lambda, lambda).value == doctest::Approx(1.0 - lambda).epsilon(1e-15));
+  CHECK(gimp_factor(0.5, lambda).value == doctest::Approx(0.5).epsilon(1e-15));     // linear piece
+  CHECK(gimp_factor(-0.5, lambda).derivative == doctest::Approx(1.0).epsilon(1e-15));
+  CHECK(gimp_factor(1.0, lambda).value == doctest::Approx(lambda / 4.0).epsilon(1e-15));  // (l_p)^2/(4 h l_p)
+  CHECK(gimp_factor(1.0, lambda).derivative == doctest::Approx(-0.5).epsilon(1e-15));
+  CHECK(gimp_factor(-1.0, lambda).derivative == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(gimp_factor(1.0 + lambda, lambda).value == 0.0);
+  CHECK(gimp_factor(-1.3, lambda).value == 0.0);
+
+  // Continuity of S and S' across every piece boundary b, from delta on either side: S changes by at
+  // most 2 delta max|S'| = 2 delta, S' by at most 2 delta max|S''| = 2 delta / lambda (cell units).
+  const double delta = 1e-9;
+  for (double l : {0.5, 0.25, 0.1, 0.01}) {
+    for (double b : {l, 1.0 - l, 1.0 + l, -l, -(1.0 - l), -(1.0 + l)}) {
+      const GimpFactor below = gimp_factor(b - delta, l), above = gimp_factor(b + delta, l);
+      INFO("lambda = ", l, ", boundary = ", b);
+      CHECK(std::abs(above.value - below.value) <= 2.0 * delta + 1e-15);
+      CHECK(std::abs(above.derivative - below.derivative) <= 2.0 * delta / l + 1e-15 / l);
+    }
+  }
+
+  // The table and the general formula against an independent quadrature of the definition. Rounding:
+  // the quadrature's piece lengths carry ~eps |d| each, divided by 2 lambda; the general formula loses
+  // eps / lambda the same way. So 4e-16 / lambda covers both. The derivative: the Leibniz rule.
+  auto hat = [](double t) { return std::max(0.0, 1.0 - std::abs(t)); };
+  for (double l : {0.5, 0.25, 0.125, 0.01, 0.6, 0.75, 1.0}) {
+    for (int k = -900; k <= 900; ++k) {
+      const double d = k * (2.1 / 900.0) + 1e-4;  // [-2.1, 2.1], avoiding exact kinks for the derivative
+      const GimpFactor s = gimp_factor(d, l);
+      INFO("lambda = ", l, ", d = ", d);
+      CHECK(std::abs(s.value - testing::gimp_by_quadrature(d, l)) <= 4e-16 / l + 1e-16);
+      CHECK(std::abs(s.derivative - (hat(d + l) - hat(d - l)) / (2.0 * l)) <= 4e-16 / l);
+      if (l <= 0.5) CHECK(std::abs(s.value - gimp_factor_average(d, l).value) <= 4e-16 / l + 1e-16);
+    }
+  }
+}
+
+TEST_CASE("uGIMP: every shape property in 1D and 2D, near and at the grid edge and on cell faces") {
+  // 1D, l_p = h/4 (2 ppc), h/2 (1 ppc) and 0.8 h (beyond the table: the general formula).
+  const Grid<1> line(Vector<1>(-1.0), 0.25, {16});
+  for (double l : {0.0625, 0.125, 0.2}) {
+    UgimpShape<1> gimp(line);
+    gimp.initialise(1, Vector<1>(l));
+    CHECK(gimp.capacity() == (l <= 0.125 ? 3 : 4));
+    const double lower = -1.0 + l, upper = 3.0 - l;  // the particle must stay in the grid
+    for (double x : {lower, lower + 1e-9, lower + 0.01, -0.9, -0.75, -0.7, -0.5, -0.13, 0.0, 0.37, 1.0, 2.5,
+                     upper - 0.07, upper - 1e-9, upper}) {
+      INFO("l_p = ", l);
+      testing::check_ugimp_properties(gimp, line, Vector<1>(x), Vector<1>(l));
+    }
+  }
+
+  // 2D, square and oblong particles (h/4 by h/4, h/4 by h/8, h/2 by h/2) on a 6 x 4 grid of h = 0.5.
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 0.5, {6, 4});
+  for (const Vector<2>& l : {Vector<2>(0.125, 0.125), Vector<2>(0.125, 0.0625), Vector<2>(0.25, 0.25)}) {
+    UgimpShape<2> gimp(plane);
+    gimp.initialise(1, l);
+    CHECK(gimp.capacity() == 9);
+    const Vector<2> lower = l, upper = Vector<2>(3.0, 2.0) - l;
+    for (const Vector<2>& x : {lower, Vector<2>(lower[0] + 1e-9, lower[1]), Vector<2>(lower[0] + 0.03, 0.9),
+                               Vector<2>(0.5, 0.5), Vector<2>(1.0, 0.77), Vector<2>(1.3, 0.7),
+                               Vector<2>(1.61, 1.5), Vector<2>(2.75, 1.75), Vector<2>(upper[0], 1.2), upper}) {
+      INFO("l_p = ", l.transpose());
+      testing::check_ugimp_properties(gimp, plane, x, l);
+    }
+  }
+}
+
+TEST_CASE("uGIMP tends to the linear shape functions as the particle shrinks") {
+  // max_I |N_ugimp - N_linear| over x: in 1D it is exactly l_p / (2h), at the nodes (S(0) = 1 - l_p/(2h));
+  // elsewhere the difference is at most l_p / (4h). In 2D, at a node, 1 - (1 - l_p/(2h))^2. Rounding only.
+  const Grid<1> line(Vector<1>(0.0), 1.0, {8});
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {6, 6});
+  LinearShape<1> hat(line);
+  LinearShape<2> q4(plane);
+  for (double lambda : {0.5, 0.25, 0.125, 0.0625, 1.0 / 64.0, 1.0 / 1024.0}) {
+    UgimpShape<1> gimp(line);
+    gimp.initialise(1, Vector<1>(lambda));
+    double largest = 0.0;
+    for (int k = 0; k <= 4 * 64; ++k) {
+      const Vector<1> x(2.0 + k / 64.0);  // cells 2 to 6, nodes and faces included
+      const auto a = testing::dense_values(gimp, line, 0, x), b = testing::dense_values(hat, line, 0, x);
+      for (size_t I = 0; I < a.size(); ++I) largest = std::max(largest, std::abs(a[I] - b[I]));
+    }
+    CHECK(largest == doctest::Approx(lambda / 2.0).epsilon(1e-13));
+
+    UgimpShape<2> gimp2(plane);
+    gimp2.initialise(1, Vector<2>(lambda, lambda));
+    largest = 0.0;
+    for (int i = 0; i <= 32; ++i)
+      for (int j = 0; j <= 32; ++j) {
+        const Vector<2> x(2.0 + i / 16.0, 2.0 + j / 16.0);
+        const auto a = testing::dense_values(gimp2, plane, 0, x), b = testing::dense_values(q4, plane, 0, x);
+        for (size_t I = 0; I < a.size(); ++I) largest = std::max(largest, std::abs(a[I] - b[I]));
+      }
+    CHECK(largest == doctest::Approx(1.0 - (1.0 - lambda / 2.0) * (1.0 - lambda / 2.0)).epsilon(1e-13));
+  }
+}
+
+TEST_CASE("uGIMP: the support must stay in the grid, sizes are checked, capacity is reached") {
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 0.5, {6, 4});
+  Particles<2> particles;
+  particles.add(Vector<2>(0.125, 0.125), 1.0, 1.0, Vector<2>::Zero(), Vector<2>(0.125, 0.125));
+  particles.add(Vector<2>(1.0, 1.0), 1.0, 1.0, Vector<2>::Zero(), Vector<2>(0.125, 0.0625));
+  UgimpShape<2> gimp(plane);
+  gimp.initialise(particles);
+  CHECK(gimp.capacity() == 9);
+  CHECK(gimp.half_length(1).isApprox(Vector<2>(0.125, 0.0625), 1e-15));
+  int nodes[16];
+  double values[16];
+  Vector<2> gradients[16];
+  CHECK(gimp.evaluate(0, Vector<2>(0.125, 0.125), nodes, values, gradients) == 4);  // touches the edge: fine
+  CHECK(gimp.evaluate(0, Vector<2>(0.5, 1.0), nodes, values, gradients) == 9);       // on a node: 3 x 3
+  CHECK(gimp.diagnostics().neighbours_max == 9);
+  CHECK(gimp.diagnostics().evaluations == 2);
+
+  // The particle's support crossing the grid edge, and the particle leaving the grid.
+  CHECK_THROWS_WITH_AS(gimp.evaluate(0, Vector<2>(0.12, 1.0), nodes, values, gradients),
+                       doctest::Contains("uGIMP support left the grid: along x the particle spans [-0.005, 0.245]"),
+                       ShapeFailure);
+  CHECK_THROWS_WITH_AS(gimp.evaluate(0, Vector<2>(1.0, 1.9), nodes, values, gradients),
+                       doctest::Contains("along y"), ShapeFailure);
+  CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(3.0, 1.0), nodes, values, gradients), "particle left the grid",
+                       ShapeFailure);
+  CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(3.0001, 1.0), nodes, values, gradients), "particle left the grid",
+                       ShapeFailure);
+  try {
+    gimp.evaluate(1, Vector<2>(0.1, 1.0), nodes, values, gradients);
+  } catch (const ShapeFailure& failure) {
+    CHECK(failure.particle == 1);
+  }
+
+  // Sizes: (0, h] only; a larger particle raises the capacity, and the capacity is reached.
+  CHECK_THROWS_AS(gimp.set_half_length(0, Vector<2>(0.0, 0.1)), std::invalid_argument);
+  CHECK_THROWS_AS(gimp.set_half_length(0, Vector<2>(0.1, 0.5001)), std::invalid_argument);
+  CHECK_THROWS_AS(gimp.set_half_length(0, Vector<2>(std::nan(""), 0.1)), std::invalid_argument);
+  gimp.set_half_length(1, Vector<2>(0.5, 0.3));  // l_p = h and 0.6 h: 4 nodes per axis
+  CHECK(gimp.capacity() == 16);
+  CHECK(gimp.evaluate(1, Vector<2>(1.25, 1.25), nodes, values, gradients) == 16);  // mid-cell
+  CHECK(gimp.evaluate(1, Vector<2>(1.0, 1.0), nodes, values, gradients) == 9);     // node: S = 0 at |Delta| = 2h
+  testing::PropertyTolerances tolerance;
+  testing::check_shape_properties(gimp, plane, 1, Vector<2>(1.3, 1.1), tolerance);
+}
+
+}  // namespace mpm

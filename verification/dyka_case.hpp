@@ -1,0 +1,80 @@
+// One Dyka-bar case of the verification suite: run scenes/dyka_bar.toml with overrides in-process,
+// record v_A(t), and compare it with the exact solution of the appendix (mpm/exact/bar.hpp).
+#pragma once
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <string>
+#include <vector>
+
+#include "mpm/analysis/rms_error.hpp"
+#include "mpm/exact/bar.hpp"
+#include "mpm/run.hpp"
+
+namespace verification {
+
+struct DykaResult {
+  std::string name;
+  std::vector<std::string> overrides;
+  std::vector<double> time, velocity, exact;
+  double rms = 0.0;            ///< Eq. (43), m/s
+  double largest_speed = 0.0;  ///< max |v_A|, m/s
+  double wall_seconds = 0.0;
+  long steps = 0;
+  int cells = 0;
+  bool failed = false;
+  std::string failure;  ///< the solver's diagnosis when it failed
+};
+
+/// Records the velocity of particle A at every step.
+struct VelocityRecorder : mpm::Monitor<1> {
+  explicit VelocityRecorder(int observed) : particle(observed) {}
+  void sample(long, double t, const mpm::Particles<1>& particles, const mpm::Balances<1>&) override {
+    time.push_back(t);
+    velocity.push_back(particles.velocity[particle][0]);
+  }
+  int particle;
+  std::vector<double> time, velocity;
+};
+
+inline DykaResult run_dyka(const std::string& scene_path, const std::string& name, const std::vector<std::string>& overrides) {
+  DykaResult result;
+  result.name = name;
+  result.overrides = overrides;
+  const mpm::io::Scene scene = mpm::load_scene(scene_path, overrides);
+  const mpm::Setup<1> setup = mpm::build_setup<1>(scene);
+  result.cells = scene.cells[0];
+  VelocityRecorder recorder(setup.observed.at(0));
+  const auto start = std::chrono::steady_clock::now();
+  mpm::RunSummary summary;
+  try {
+    summary = mpm::run_setup<1>(scene, setup, recorder, &summary);
+  } catch (const mpm::SimulationFailure& failure) {
+    result.failed = true;
+    result.failure = failure.message();
+  }
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.steps = summary.steps;
+  // The exact solution: the bar [0, L] with v0 on the particles' quarter X <= L/4.
+  const double length = scene.length[0], loaded = scene.initial_velocities.at(0).max[0];
+  const mpm::exact::ElasticBar bar(length, scene.young_modulus, scene.density,
+                                   {{0.0, loaded, scene.initial_velocities[0].velocity[0], 0.0}});
+  const double reference_position = setup.particles.reference_position[setup.observed[0]][0];
+  result.time = recorder.time;
+  result.velocity = recorder.velocity;
+  for (size_t n = 0; n < result.time.size(); ++n) {
+    result.exact.push_back(bar.velocity(reference_position, result.time[n]));
+    result.largest_speed = std::max(result.largest_speed, std::abs(result.velocity[n]));
+  }
+  if (!result.failed) result.rms = mpm::rms_error(result.velocity, result.exact);
+  return result;
+}
+
+/// t, v_A, v_exact: one row per sample, for gnuplot.
+inline void write_series(const DykaResult& result, const std::string& path) {
+  std::ofstream out(path);
+  out << std::setprecision(10) << "t,v_A,v_exact\n";
+  for (size_t n = 0; n < result.time.size(); ++n) out << result.time[n] << "," << result.velocity[n] << "," << result.exact[n] << "\n";
+}
+
+}  // namespace verification
