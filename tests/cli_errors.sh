@@ -22,7 +22,10 @@ expect() {  # expect CODE PATTERN -- ARGS...
 expect 2 "^error: --set\(1\):1: solver.cfl: must be > 0" -- run "$scene" --out "$work/a" --set solver.cfl=-1
 [[ -e "$work/a" ]] && { echo "FAIL: an output folder was made for a bad scene"; failures=$((failures + 1)); }
 expect 2 "^error: --set\(1\):1: solver.shape: 'cubic' is not allowed" -- run "$scene" --out "$work/a" --set 'solver.shape="cubic"'
-expect 2 "^error: .*dyka_bar.toml:[0-9]+: grid.cells" -- run "$scene" --out "$work/a" --set grid.cells=[40,2]
+expect 2 "^error: --set\(1\):1: grid.cells: has 2 entries; the scene's dimension needs 1" -- run "$scene" --out "$work/a" --set grid.cells=[40,2]
+sed 's/^cfl = 0.5/cfl = 0.0/' "$scene" >"$work/zero_cfl.toml"
+line=$(grep -n '^cfl = 0.0' "$work/zero_cfl.toml" | cut -d: -f1)
+expect 2 "^error: $work/zero_cfl.toml:$line: solver.cfl: must be > 0" -- run "$work/zero_cfl.toml" --out "$work/a"
 expect 2 "^error: $work/missing.toml:0: \(file\)" -- run "$work/missing.toml"
 printf '[grid\n' >"$work/broken.toml"
 expect 2 "^error: $work/broken.toml:1: \(syntax\)" -- run "$work/broken.toml"

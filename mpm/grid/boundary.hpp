@@ -19,19 +19,20 @@ struct FixedDof {
   int component;
 };
 
-/// Faces of the grid, named as in scenes: axis 0 is x, axis 1 is y; `upper` picks max over min.
+/// A plane of nodes normal to an axis: the nodes whose lattice coordinate along `axis` is `layer`.
+/// A scene's face "xmax" is the layer at origin + length, which lies inside the grid when a
+/// margin extends the grid beyond it.
 struct Face {
   int axis;
-  bool upper;
+  int layer;
 };
 
 /// The degrees of freedom of every node on `face` for each of `components`.
 template <int Dim>
 std::vector<FixedDof> fixed_dofs_on_face(const Grid<Dim>& grid, Face face, const std::vector<int>& components) {
   std::vector<FixedDof> dofs;
-  const int layer = face.upper ? grid.cells(face.axis) : 0;
   for (int node = 0; node < grid.node_count(); ++node) {
-    if (grid.lattice_of(node)[face.axis] != layer) continue;
+    if (grid.lattice_of(node)[face.axis] != face.layer) continue;
     for (int component : components) dofs.push_back({node, component});
   }
   return dofs;
@@ -55,10 +56,10 @@ void store_reactions(const std::vector<FixedDof>& fixed, std::vector<Vector<Dim>
 
 TEST_CASE("Boundary: a face yields one dof per node and component; reactions take the force") {
   const Grid<2> grid(Vector<2>::Zero(), 1.0, {3, 2});
-  const auto bottom = fixed_dofs_on_face(grid, Face{1, false}, {1});
+  const auto bottom = fixed_dofs_on_face(grid, Face{1, 0}, {1});
   CHECK(bottom.size() == 4);
   for (const auto& dof : bottom) CHECK(grid.node_position(dof.node)[1] == 0.0);
-  const auto right = fixed_dofs_on_face(grid, Face{0, true}, {0, 1});
+  const auto right = fixed_dofs_on_face(grid, Face{0, 3}, {0, 1});
   CHECK(right.size() == 6);
   for (const auto& dof : right) CHECK(grid.node_position(dof.node)[0] == 3.0);
 

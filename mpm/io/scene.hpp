@@ -84,7 +84,7 @@ void each_table(const SceneFile& file, SceneReader& root, const std::string& key
   const toml::array* array = file.table[key].as_array();
   if (!array || !array->is_array_of_tables()) root.fail(key, "must be an array of tables: write [[" + key + "]]");
   for (size_t k = 0; k < array->size(); ++k) {
-    SceneReader reader(file.path, *(*array)[k].as_table(), key + "[" + std::to_string(k) + "]");
+    SceneReader reader(file, *(*array)[k].as_table(), key + "[" + std::to_string(k) + "]");
     read(reader);
     reader.reject_unknown_keys();
   }
@@ -114,7 +114,7 @@ inline Scene read_scene(const SceneFile& file) {
   using detail::each_table;
   Scene scene;
   scene.file = file.path;
-  SceneReader root(file.path, file.table, "");
+  SceneReader root(file, file.table, "");
   scene.title = root.any_text("title", "untitled");
   scene.dimension = root.integer("dimension", 1);
   if (scene.dimension != 1 && scene.dimension != 2) root.fail("dimension", "must be 1 or 2");
@@ -122,7 +122,7 @@ inline Scene read_scene(const SceneFile& file) {
   const std::vector<std::string> axes = dim == 1 ? std::vector<std::string>{"x"} : std::vector<std::string>{"x", "y"};
 
   {  // [grid]
-    SceneReader grid(file.path, detail::table_or_empty(file, root, "grid", true), "grid");
+    SceneReader grid(file, detail::table_or_empty(file, root, "grid", true), "grid");
     scene.origin = grid.numbers("origin", dim, std::vector<double>(dim, 0.0));
     scene.length = grid.numbers("length", dim);
     scene.cells = detail::to_integers(grid, "cells", dim, {}, 1);
@@ -137,7 +137,7 @@ inline Scene read_scene(const SceneFile& file) {
     grid.reject_unknown_keys();
   }
   {  // [material]
-    SceneReader material(file.path, detail::table_or_empty(file, root, "material", true), "material");
+    SceneReader material(file, detail::table_or_empty(file, root, "material", true), "material");
     scene.young_modulus = material.positive("young_modulus");
     scene.poisson_ratio = material.number("poisson_ratio", 0.0);
     if (!(scene.poisson_ratio >= 0.0 && scene.poisson_ratio < 0.5)) material.fail("poisson_ratio", "must be in [0, 0.5)");
@@ -185,7 +185,7 @@ inline Scene read_scene(const SceneFile& file) {
     scene.fixed.push_back(fixed);
   });
   {  // [gravity]
-    SceneReader gravity(file.path, detail::table_or_empty(file, root, "gravity", false), "gravity");
+    SceneReader gravity(file, detail::table_or_empty(file, root, "gravity", false), "gravity");
     scene.gravity = gravity.numbers("acceleration", dim, std::vector<double>(dim, 0.0));
     scene.ramp_period = gravity.number("ramp_period", 0.0);
     if (scene.ramp_period < 0.0) gravity.fail("ramp_period", "must be >= 0 (0: no ramp)");
@@ -195,7 +195,7 @@ inline Scene read_scene(const SceneFile& file) {
     gravity.reject_unknown_keys();
   }
   {  // [solver]
-    SceneReader solver(file.path, detail::table_or_empty(file, root, "solver", true), "solver");
+    SceneReader solver(file, detail::table_or_empty(file, root, "solver", true), "solver");
     scene.shape = solver.text("shape", {"linear", "ugimp", "lme"}, std::string("linear"));
     scene.lme_gamma = solver.positive("lme_gamma", 3.0);
     scene.lme_tol = solver.positive("lme_tol", 1e-6);
@@ -230,7 +230,7 @@ inline Scene read_scene(const SceneFile& file) {
     scene.observers.push_back(observer);
   });
   {  // [output]
-    SceneReader output(file.path, detail::table_or_empty(file, root, "output", false), "output");
+    SceneReader output(file, detail::table_or_empty(file, root, "output", false), "output");
     scene.control.sample_every = output.integer("every", 1);
     if (scene.control.sample_every < 1) output.fail("every", "must be >= 1");
     scene.control.snapshot_times = output.numbers("snapshots", -1, std::vector<double>{});

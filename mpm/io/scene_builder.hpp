@@ -35,8 +35,15 @@ Model<Dim> build_model(const Scene& scene) {
   model.grid = build_grid<Dim>(scene);
   model.material = LinearElastic{scene.young_modulus, scene.poisson_ratio, scene.density};
   for (const auto& fixed : scene.fixed) {
-    const auto dofs = fixed_dofs_on_face(model.grid, Face{fixed.axis, fixed.upper}, fixed.components);
-    model.fixed.insert(model.fixed.end(), dofs.begin(), dofs.end());
+    // A fixed face is a rigid wall at the face of the scene's box [origin, origin + length]: its
+    // nodes and the margin nodes beyond it are held, so a support that reaches past the wall
+    // (uGIMP, LME) meets rigid nodes, as ghost nodes behind a wall are in GIMP practice.
+    const int axis = fixed.axis, face = scene.margin_min[axis] + (fixed.upper ? scene.cells[axis] : 0);
+    const int first = fixed.upper ? face : 0, last = fixed.upper ? model.grid.cells(axis) : face;
+    for (int layer = first; layer <= last; ++layer) {
+      const auto dofs = fixed_dofs_on_face(model.grid, Face{axis, layer}, fixed.components);
+      model.fixed.insert(model.fixed.end(), dofs.begin(), dofs.end());
+    }
   }
   model.gravity.acceleration = to_vector<Dim>(scene.gravity);
   model.gravity.ramp_period = scene.ramp_period;

@@ -7,6 +7,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -44,6 +45,8 @@ inline std::vector<std::string> split_key_path(const std::string& path) {
 struct SceneFile {
   std::string path;
   toml::table table;
+  /// keys set by `--set`, as full paths ("solver.cfl", "body[0].max"), with their origin "--set(n)"
+  std::map<std::string, std::string> overridden;
 };
 
 /// Parses the scene file. \throws SceneError on a syntax error, with its line.
@@ -99,21 +102,25 @@ inline void apply_override(SceneFile& scene, const std::string& assignment, int 
     if (!table) throw SceneError(origin, 1, key, "'" + part + "' is not a table");
   }
   table->insert_or_assign(parts.back(), *parsed["value"].node());
+  std::string full_key;  // normalised: "body[0].max"
+  for (const auto& part : parts) full_key += (full_key.empty() || part[0] == '[' ? "" : ".") + part;
+  scene.overridden[full_key] = origin;
 }
 
 /// Reads typed values from one table of the scene, remembering which keys it was asked for so
 /// that unknown keys (usually typos) can be reported.
 class SceneReader {
  public:
-  SceneReader(const std::string& file, const toml::table& table, std::string prefix)
-      : file_(file), table_(table), prefix_(std::move(prefix)) {}
+  SceneReader(const SceneFile& scene, const toml::table& table, std::string prefix)
+      : file_(scene.path), overridden_(&scene.overridden), table_(table), prefix_(std::move(prefix)) {}
 
   bool has(const std::string& key) { known_.insert(key); return table_.contains(key); }
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    if (auto override = overridden_->find(full(key)); override != overridden_->end())
+      throw SceneError(override->second, 1, full(key), what);
     const toml::node* node = table_.get(key);
-    const int line = node ? line_of(*node) : line_of(table_);
-    throw SceneError(source_of(node), line, full(key), what);
+    throw SceneError(file_, node ? line_of(*node) : line_of(table_), full(key), what);
   }
 
   double number(const std::string& key, std::optional<double> fallback = std::nullopt) {
@@ -207,7 +214,7 @@ class SceneReader {
       const std::string name(key.str());
       if (!known_.count(name)) {
         std::vector<std::string> allowed(known_.begin(), known_.end());
-        throw SceneError(source_of(&node), line_of(node), full(name), "unknown key; allowed here: " + join(allowed));
+        fail(name, "unknown key; allowed here: " + join(allowed));
       }
     }
   }
@@ -217,10 +224,6 @@ class SceneReader {
   int line() const { return line_of(table_); }
 
  private:
-  std::string source_of(const toml::node* node) const {
-    if (node && node->source().path && node->source().path->rfind("--set", 0) == 0) return *node->source().path;
-    return file_;
-  }
   static std::string count_text(int size) { return size < 0 ? "some" : std::to_string(size); }
   static std::string join(const std::vector<std::string>& words) {
     std::string joined;
@@ -229,6 +232,7 @@ class SceneReader {
   }
 
   std::string file_;
+  const std::map<std::string, std::string>* overridden_;
   const toml::table& table_;
   std::string prefix_;
   std::set<std::string> known_;
@@ -245,10 +249,24 @@ TEST_CASE("Scene file: overrides land in nested tables and arrays of tables; err
   CHECK_THROWS_AS(apply_override(scene, "solver.cfl", 4), SceneError);
   CHECK_THROWS_AS(apply_override(scene, "solver.shape=lme", 5), SceneError);  // unquoted string
 
-  SceneReader solver(scene.path, *scene.table["solver"].as_table(), "solver");
+  SceneReader solver(scene, *scene.table["solver"].as_table(), "solver");
   CHECK(solver.number("cfl") == 0.2);
+  CHECK(scene.overridden.at("body[0].min") == "--set(3)");
   try {
-    SceneReader root(scene.path, scene.table, "");
+    solver.positive("shape_of_things", -1.0);
+    FAIL("a negative value must be rejected");
+  } catch (const SceneError& error) {
+    CHECK(error.message().rfind("error: test.toml:2: solver.shape_of_things: must be > 0", 0) == 0);
+  }
+  apply_override(scene, "solver.cfl=-0.5", 6);
+  try {
+    solver.positive("cfl");
+    FAIL("a negative CFL must be rejected");
+  } catch (const SceneError& error) {
+    CHECK(error.message() == "error: --set(6):1: solver.cfl: must be > 0, got -0.500000");
+  }
+  try {
+    SceneReader root(scene, scene.table, "");
     root.integer("dimension");
     root.reject_unknown_keys();  // solver, grid and body were not asked for
     FAIL("unknown keys must be rejected");
@@ -256,7 +274,7 @@ TEST_CASE("Scene file: overrides land in nested tables and arrays of tables; err
     CHECK(error.message().rfind("error: test.toml:", 0) == 0);
   }
   SceneFile bad = parse_scene_text("[solver]\ncfl = -1\n", "bad.toml");
-  SceneReader bad_solver(bad.path, *bad.table["solver"].as_table(), "solver");
+  SceneReader bad_solver(bad, *bad.table["solver"].as_table(), "solver");
   try {
     bad_solver.positive("cfl");
     FAIL("a negative CFL must be rejected");

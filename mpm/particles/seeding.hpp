@@ -24,7 +24,7 @@ enum class Placement {
 /// Adds the particles of the box [box_min, box_max] (on grid lines) to `particles`.
 template <int Dim>
 void fill_box(const Grid<Dim>& grid, const Vector<Dim>& box_min, const Vector<Dim>& box_max,
-              const std::array<int, Dim>& particles_per_cell, double density, const Vector<Dim>& velocity,
+              const typename Grid<Dim>::MultiIndex& particles_per_cell, double density, const Vector<Dim>& velocity,
               Placement placement, Particles<Dim>& particles) {
   const double h = grid.spacing();
   std::array<int, Dim> first{}, count{};

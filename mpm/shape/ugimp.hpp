@@ -14,6 +14,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -64,7 +65,7 @@ inline GimpFactor gimp_factor_table(double d, double lambda) {
 }
 
 /// The same weight from its definition, for any \f$ l_p > 0 \f$ (the table holds only for
-/// \f$ l_p \le h/2 \f$, where the particle never covers a node and its two neighbours at once):
+/// \f$ l_p \le h/2 \f$: a particle no longer than a cell, which never straddles two nodes):
 /// \f[
 ///   S(\Delta) = \frac{H(\Delta + l_p) - H(\Delta - l_p)}{2 l_p}, \qquad
 ///   S'(\Delta) = \frac{\hat N(\Delta + l_p) - \hat N(\Delta - l_p)}{2 l_p},
@@ -124,26 +125,29 @@ class UgimpShape {
   /// \throws std::invalid_argument if a component is not in (0, h].
   void set_half_length(int particle, const Vector<Dim>& half_length) {
     const double h = grid_.spacing();
+    const Vector<Dim> lambda = half_length / h;
     int nodes = 1;
     for (int axis = 0; axis < Dim; ++axis) {
-      const double lambda = half_length[axis] / h;
-      if (!(lambda > 0.0 && lambda <= max_relative_half_length)) {
+      if (!(lambda[axis] > 0.0 && lambda[axis] <= max_relative_half_length)) {
         std::ostringstream message;
         message << "uGIMP: particle " << particle << " has half-length l_p = " << half_length[axis] << " along "
                 << axis_name(axis) << ", outside (0, h] with h = " << h;
         throw std::invalid_argument(message.str());
       }
-      relative_half_length_.at(particle)[axis] = lambda;
-      nodes *= nodes_along_axis(lambda);
+      nodes *= nodes_along_axis(lambda[axis]);
     }
+    relative_half_length_.at(particle) = lambda;
     capacity_ = std::max(capacity_, nodes);
   }
 
   /// l_p of a particle, per axis.
   Vector<Dim> half_length(int particle) const { return relative_half_length_[particle] * grid_.spacing(); }
 
-  /// N_I(x_p) and grad N_I(x_p) for every node with \f$ |\Delta_a| < h + l_p \f$ on each axis a.
-  /// Nodes within rounding of that edge of the support, where S < 1e-26 h / l_p, are left out.
+  /// N_I(x_p) and grad N_I(x_p) for every node with \f$ |\Delta_a| < h + l_p \f$ on each axis a
+  /// (initialise() first). Nodes nearer to that edge of the support than the rounding of the lattice
+  /// coordinate xi, 8 eps (|xi| + 2) cells, are left out, so that a particle touching the grid's edge
+  /// is not refused for rounding: their S is below (8 eps (|xi| + 2))^2 h / (4 l_p), ~1e-24 h / l_p on a
+  /// grid of 1000 cells.
   /// \throws ShapeFailure if x_p is outside the grid, or if the particle's support crosses the
   /// edge of the grid (a stencil node would lie outside it).
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
@@ -206,8 +210,8 @@ inline double gimp_by_quadrature(double d, double lambda) {
   return integral / (2.0 * lambda);
 }
 
-/// Distance, in cells, from x to the nearest place where the uGIMP weight of some node has a
-/// kink in S'' (an end of the particle, x_a +- l_p, crossing a node or the middle of the hat).
+/// Distance, in cells, from x to the nearest point where S'' of some node jumps: where an end of the
+/// particle, x_a +- l_p, is on a node (the peak or a foot of some node's hat).
 template <int Dim>
 double distance_to_gimp_kink(const Grid<Dim>& grid, const Vector<Dim>& x, const Vector<Dim>& half_length) {
   double nearest = 1e300;
@@ -219,18 +223,23 @@ double distance_to_gimp_kink(const Grid<Dim>& grid, const Vector<Dim>& x, const 
   return nearest;
 }
 
-/// The shape properties at x with the finite-difference tolerance the maths allows there: uGIMP is
-/// piecewise quadratic, so central differences with step e = 1e-6 h are exact up to rounding
-/// (|error| h <~ 1e-16 |x / h| / e ~ 1e-9 on these grids) except within e of a kink, where the jump
-/// of S'' (at most 1/l_p in cell units, both particle ends at kinks: 2/l_p ... but one per axis
-/// factor) gives |error| h <= e |jump| / 4 <= 2.5e-7 h / l_p... times 2 for both ends at a kink.
-template <int Dim, class Shape>
-void check_ugimp_properties(Shape& shape, const Grid<Dim>& grid, const Vector<Dim>& x, const Vector<Dim>& half_length) {
+/// The shape properties at x with the finite-difference tolerance the maths allows there. uGIMP is
+/// piecewise quadratic, so central differences with step e = 1e-6 h are exact but for rounding: of
+/// x +- e (relative step error eps |x| / e) and of S (eps |xi| / e), about 2e-10 (|x|/h + |xi| + 2),
+/// under 1e-8 on these grids. Within e of a kink, where S'' jumps by at most (2 + 1) / (2 l_p / h)
+/// (the hat's slope jumps by 2 at its peak and 1 at its feet, one at each end of the particle), the
+/// error is at most e |jump| / 4 = 3.75e-7 h / l_p in units of 1/h.
+template <int Dim>
+void check_ugimp_properties(UgimpShape<Dim>& shape, const Grid<Dim>& grid, int particle, const Vector<Dim>& x) {
+  const Vector<Dim> half_length = shape.half_length(particle);
   PropertyTolerances tolerance;
   const double lambda = half_length.minCoeff() / grid.spacing();
   const bool near_kink = distance_to_gimp_kink(grid, x, half_length) < 2e-6;
-  tolerance.finite_difference = near_kink ? 5e-7 / lambda + 1e-9 : 1e-9;
-  check_shape_properties(shape, grid, 0, x, tolerance);
+  tolerance.finite_difference = (near_kink ? 3.75e-7 / lambda : 0.0) + 1e-8;
+  // Central differences need the particle, moved by 1e-6 h either way, to stay in the grid.
+  const Vector<Dim> room = ((x - half_length - grid.origin()).cwiseMin(grid.upper_corner() - x - half_length));
+  tolerance.check_finite_difference = room.minCoeff() > 2e-6 * grid.spacing();
+  check_shape_properties(shape, grid, particle, x, tolerance);
 }
 
 }  // namespace testing
@@ -285,10 +294,11 @@ TEST_CASE("uGIMP: every shape property in 1D and 2D, near and at the grid edge a
     gimp.initialise(1, Vector<1>(l));
     CHECK(gimp.capacity() == (l <= 0.125 ? 3 : 4));
     const double lower = -1.0 + l, upper = 3.0 - l;  // the particle must stay in the grid
-    for (double x : {lower, lower + 1e-9, lower + 0.01, -0.9, -0.75, -0.7, -0.5, -0.13, 0.0, 0.37, 1.0, 2.5,
+    for (double x : {lower, lower + 1e-9, lower + 0.01, lower + 0.1, -0.75, -0.7, -0.5, -0.45, -0.4375, -0.375, -0.13,
+                     0.0, 0.37, 1.0, 2.5,
                      upper - 0.07, upper - 1e-9, upper}) {
       INFO("l_p = ", l);
-      testing::check_ugimp_properties(gimp, line, Vector<1>(x), Vector<1>(l));
+      testing::check_ugimp_properties(gimp, line, 0, Vector<1>(x));
     }
   }
 
@@ -300,10 +310,10 @@ TEST_CASE("uGIMP: every shape property in 1D and 2D, near and at the grid edge a
     CHECK(gimp.capacity() == 9);
     const Vector<2> lower = l, upper = Vector<2>(3.0, 2.0) - l;
     for (const Vector<2>& x : {lower, Vector<2>(lower[0] + 1e-9, lower[1]), Vector<2>(lower[0] + 0.03, 0.9),
-                               Vector<2>(0.5, 0.5), Vector<2>(1.0, 0.77), Vector<2>(1.3, 0.7),
+                               Vector<2>(0.5, 0.5), Vector<2>(0.625, 0.375), Vector<2>(1.0, 0.77), Vector<2>(1.3, 0.7),
                                Vector<2>(1.61, 1.5), Vector<2>(2.75, 1.75), Vector<2>(upper[0], 1.2), upper}) {
       INFO("l_p = ", l.transpose());
-      testing::check_ugimp_properties(gimp, plane, x, l);
+      testing::check_ugimp_properties(gimp, plane, 0, x);
     }
   }
 }
@@ -362,15 +372,19 @@ TEST_CASE("uGIMP: the support must stay in the grid, sizes are checked, capacity
                        ShapeFailure);
   CHECK_THROWS_WITH_AS(gimp.evaluate(0, Vector<2>(1.0, 1.9), nodes, values, gradients),
                        doctest::Contains("along y"), ShapeFailure);
-  CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(3.0, 1.0), nodes, values, gradients), "particle left the grid",
-                       ShapeFailure);
+  CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(3.0, 1.0), nodes, values, gradients),
+                       doctest::Contains("the particle spans [2.875, 3.125] but the grid is [0, 3]"), ShapeFailure);
   CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(3.0001, 1.0), nodes, values, gradients), "particle left the grid",
                        ShapeFailure);
+  CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(1.0, -1e-300), nodes, values, gradients), "particle left the grid",
+                       ShapeFailure);
+  int failed_particle = -1;
   try {
     gimp.evaluate(1, Vector<2>(0.1, 1.0), nodes, values, gradients);
   } catch (const ShapeFailure& failure) {
-    CHECK(failure.particle == 1);
+    failed_particle = failure.particle;
   }
+  CHECK(failed_particle == 1);
 
   // Sizes: (0, h] only; a larger particle raises the capacity, and the capacity is reached.
   CHECK_THROWS_AS(gimp.set_half_length(0, Vector<2>(0.0, 0.1)), std::invalid_argument);
@@ -380,8 +394,7 @@ TEST_CASE("uGIMP: the support must stay in the grid, sizes are checked, capacity
   CHECK(gimp.capacity() == 16);
   CHECK(gimp.evaluate(1, Vector<2>(1.25, 1.25), nodes, values, gradients) == 16);  // mid-cell
   CHECK(gimp.evaluate(1, Vector<2>(1.0, 1.0), nodes, values, gradients) == 9);     // node: S = 0 at |Delta| = 2h
-  testing::PropertyTolerances tolerance;
-  testing::check_shape_properties(gimp, plane, 1, Vector<2>(1.3, 1.1), tolerance);
+  testing::check_ugimp_properties(gimp, plane, 1, Vector<2>(1.3, 1.1));
 }
 
 }  // namespace mpm

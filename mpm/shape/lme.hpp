@@ -1,0 +1,683 @@
+/// \file
+/// Local maximum-entropy (LME) shape functions of Arroyo & Ortiz (2006), Eqs. (34)-(41), spec 4.1 and 8.
+///
+/// At a point x with neighbour nodes I, the LME functions are the least biased (most entropic,
+/// Eq. (34)) non-negative partition of unity that reproduces x, biased towards near nodes by the
+/// Gaussian prior \f$ e^{-\beta |x - x_I|^2} \f$:
+/// \f[
+///   N^* = \arg\min \; \beta \sum_I N_I |x - x_I|^2 + \sum_I N_I \log N_I
+///   \quad \text{s.t.} \quad N_I \ge 0, \;\; \sum_I N_I = 1, \;\; \sum_I N_I x_I = x .
+/// \f]
+/// The dual of this problem is the convex, unconstrained minimisation of log Z over the Lagrange
+/// multiplier lambda (Eq. (36)); its minimiser gives N by Eq. (35) and grad N by Eq. (41).
+/// \f$ \beta = \gamma / h^2 \f$: gamma -> infinity tends to the linear (Delaunay) interpolant, gamma ~ 1
+/// smooths over a few cells. The solution exists when x is inside the convex hull of its neighbours.
+///
+/// Numerics (spec 8.3). Everything runs in cell units: offsets \f$ \hat l_I = (x - x_I)/h \f$,
+/// \f$ \hat\beta = \beta h^2 \f$ (= gamma), \f$ \hat\lambda = \lambda h \f$, so r/h and J/h^2 are dimensionless
+/// and the Newton tolerance is relative to h. Exponents are shifted by their maximum before exp.
+/// Newton steps on r = 0 are safeguarded by a backtracking (Armijo) line search on the convex
+/// log Z, and warm-started from the particle's multiplier of the previous call.
+#pragma once
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "mpm/core/errors.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/shape/linear.hpp"
+#include "mpm/shape/shape_diagnostics.hpp"
+#include "mpm/shape/shape_properties.hpp"
+
+namespace mpm {
+
+struct LmeOptions {
+  double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (spec 2.5: beta = gamma / h^2)
+  double support_tolerance = 1e-6;  ///< the prior \f$ e^{-\beta R^2} \f$ at the support radius R (A&O06; authors: 1e-5)
+  double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (spec 8.3)
+  int max_iterations = 100;         ///< Newton updates of lambda per evaluation before ShapeFailure
+  /// grid_spacing: beta = gamma / h^2 (seed, A&O06). mean_neighbour_distance: beta = gamma / hbar^2,
+  /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, spec 8.1). The
+  /// neighbours are those within R = h sqrt(-ln(support_tolerance) / gamma) under both rules (with hbar in
+  /// R the radius would feed on itself: hbar ~ 2R/3 in 2D makes R grow unless the patch is capped).
+  enum class BetaRule { grid_spacing, mean_neighbour_distance } beta_rule = BetaRule::grid_spacing;
+};
+
+/// Eq. (40), in cell units: the exponent of node I,
+/// \f[ f_I(x, \lambda) = -\beta |x - x_I|^2 + \lambda \cdot (x - x_I) . \f]
+template <int Dim>
+inline double lme_exponent(double beta, const Vector<Dim>& lambda, const Vector<Dim>& offset) {
+  return -beta * offset.squaredNorm() + lambda.dot(offset);
+}
+
+/// log Z and the shifted weights \f$ w_I = e^{f_I - m} \f$, \f$ m = \max_I f_I \f$ (so \f$ 0 < w_I \le 1 \f$ and
+/// \f$ \sum_I w_I \ge 1 \f$: nothing overflows, and underflow only hits weights below 1e-308).
+struct LmePartition {
+  double log_z;       ///< \f$ \log Z = m + \log \sum_I w_I \f$
+  double weight_sum;  ///< \f$ \sum_I w_I = Z e^{-m} \f$
+};
+
+/// Eq. (36), the partition function, stably:
+/// \f[ Z(x, \lambda) = \sum_I \exp\left[ -\beta |x - x_I|^2 + \lambda \cdot (x - x_I) \right] . \f]
+/// Writes the shifted weights w_I to `weights`.
+template <int Dim>
+LmePartition lme_partition(int count, const Vector<Dim>* offsets, double beta, const Vector<Dim>& lambda,
+                           double* weights) {
+  double largest = -std::numeric_limits<double>::infinity();
+  for (int I = 0; I < count; ++I) {
+    weights[I] = lme_exponent(beta, lambda, offsets[I]);
+    largest = std::max(largest, weights[I]);
+  }
+  double sum = 0.0;
+  for (int I = 0; I < count; ++I) {
+    weights[I] = std::exp(weights[I] - largest);
+    sum += weights[I];
+  }
+  return {largest + std::log(sum), sum};
+}
+
+/// The gradient and Hessian of log Z with respect to lambda, from the weights of lme_partition.
+template <int Dim>
+struct LmeMoments {
+  Vector<Dim> residual;  ///< r, Eq. (38)
+  Matrix<Dim> hessian;   ///< J, Eq. (37)
+};
+
+/// Eqs. (38) and (37), with \f$ p_I = w_I / \sum_J w_J \f$ the shape functions of Eq. (35) at this lambda:
+/// \f[ r(x, \lambda) = \frac{\partial \log Z}{\partial \lambda} = \sum_I p_I (x - x_I), \qquad
+///     J(x, \lambda) = \frac{\partial r}{\partial \lambda} = \sum_I p_I (x - x_I) \otimes (x - x_I) - r \otimes r . \f]
+/// J is the covariance of the offsets under p, and is computed as such,
+/// \f$ J = \sum_I p_I (x - x_I - r) \otimes (x - x_I - r) \f$, which is Eq. (37) without its cancellation
+/// (far from the solution, with nearly all weight on one node, Eq. (37) as written can round to 0 or
+/// below). J is symmetric and positive definite when the neighbours span the space, so log Z is
+/// convex and r = 0 has one solution.
+template <int Dim>
+LmeMoments<Dim> lme_moments(int count, const Vector<Dim>* offsets, const double* weights, double weight_sum) {
+  Vector<Dim> r = Vector<Dim>::Zero();
+  for (int I = 0; I < count; ++I) r += weights[I] * offsets[I];
+  r /= weight_sum;
+  Matrix<Dim> J = Matrix<Dim>::Zero();
+  for (int I = 0; I < count; ++I) {
+    const Vector<Dim> centred = offsets[I] - r;
+    J += weights[I] * centred * centred.transpose();
+  }
+  return {r, J / weight_sum};
+}
+
+/// Eq. (35): the shape functions at the converged multiplier, in place of the weights,
+/// \f[ N_I^*(x) = \frac{\exp\left[ -\beta |x - x_I|^2 + \lambda^* \cdot (x - x_I) \right]}{Z(x, \lambda^*)} . \f]
+inline void lme_values(int count, double weight_sum, double* weights) {
+  for (int I = 0; I < count; ++I) weights[I] /= weight_sum;
+}
+
+/// Eq. (41), the gradients at the converged multiplier, with the undamped J of Eq. (37) and beta
+/// constant in space (Eqs. (39)-(40) with \f$ d\lambda^*/dx \f$ from r = 0):
+/// \f[ \nabla N_I^* = -N_I^* \, (J^*)^{-1} (x - x_I) . \f]
+/// Evaluated as \f$ -N_I (J^*)^{-1} (x - x_I - r) \f$: at convergence r = 0 and this is Eq. (41) itself,
+/// while for the residual \f$ |r| \le \f$ tol h that Newton leaves it keeps \f$ \sum_I \nabla N_I = 0 \f$ and
+/// \f$ \sum_I x_I \otimes \nabla N_I = I \f$ exact up to rounding (they would otherwise be off by
+/// \f$ |J^{-1} r| \f$). Cell units in, physical out: `offsets` are (x - x_I)/h, `hessian` is J/h^2, and
+/// the results (written over `offsets`) are in 1/length.
+template <int Dim>
+void lme_gradients(int count, const double* values, const Matrix<Dim>& hessian, const Vector<Dim>& residual, double h,
+                   Vector<Dim>* offsets_then_gradients) {
+  const Matrix<Dim> inverse = hessian.inverse();
+  for (int I = 0; I < count; ++I) {
+    const Vector<Dim> offset = offsets_then_gradients[I];
+    offsets_then_gradients[I] = -(values[I] / h) * (inverse * (offset - residual));
+  }
+}
+
+template <int Dim>
+class LmeShape {
+ public:
+  static constexpr const char* name = "lme";
+
+  /// \throws std::invalid_argument if an option is out of range, or if the support radius
+  /// \f$ R = h \sqrt{-\ln(\mathrm{tol}) / \gamma} \f$ is shorter than the cell diagonal \f$ h \sqrt{Dim} \f$: then a
+  /// point could lie outside the convex hull of its neighbours, where LME does not exist.
+  explicit LmeShape(const Grid<Dim>& grid, const LmeOptions& options = LmeOptions()) : grid_(grid), options_(options) {
+    auto refuse = [](const std::string& what) { throw std::invalid_argument("LME: " + what); };
+    std::ostringstream value;
+    value << "gamma = " << options.gamma << ", support_tolerance = " << options.support_tolerance
+          << ", newton_tolerance = " << options.newton_tolerance << ", max_iterations = " << options.max_iterations;
+    if (!(options.gamma > 0.0 && std::isfinite(options.gamma))) refuse("gamma must be > 0 (" + value.str() + ")");
+    if (!(options.support_tolerance > 0.0 && options.support_tolerance < 1.0))
+      refuse("support_tolerance must be in (0, 1) (" + value.str() + ")");
+    if (!(options.newton_tolerance > 0.0)) refuse("newton_tolerance must be > 0 (" + value.str() + ")");
+    if (options.max_iterations < 1) refuse("max_iterations must be >= 1 (" + value.str() + ")");
+    radius_squared_ = -std::log(options.support_tolerance) / options.gamma;  // (R/h)^2
+    if (radius_squared_ < Dim) {
+      std::ostringstream message;
+      message.precision(4);
+      message << "support radius R = h sqrt(-ln(support_tolerance)/gamma) = " << std::sqrt(radius_squared_)
+              << " h is shorter than the cell diagonal " << std::sqrt(double(Dim))
+              << " h, so a point may fall outside the convex hull of its neighbours: gamma = " << options.gamma
+              << " is too large for support_tolerance = " << options.support_tolerance << " (need gamma <= "
+              << -std::log(options.support_tolerance) / Dim << ", or support_tolerance <= "
+              << std::exp(-options.gamma * Dim) << ")";
+      refuse(message.str());
+    }
+    capacity_ = lattice_points_in_ball_bound(std::sqrt(radius_squared_));
+  }
+
+  /// An upper bound of the neighbours of any point: the most lattice points a ball of radius R can
+  /// hold, wherever its centre (computed once, in the constructor).
+  int capacity() const { return capacity_; }
+  /// R, the support radius (length units).
+  double support_radius() const { return std::sqrt(radius_squared_) * grid_.spacing(); }
+  const LmeOptions& options() const { return options_; }
+
+  /// Sizes the per-particle multipliers, lambda = 0 for every particle.
+  void initialise(const Particles<Dim>& particles) { initialise(particles.size()); }
+  void initialise(int particle_count) { lambda_.assign(particle_count, Vector<Dim>::Zero()); }
+
+  /// The particle's lambda (1/length) of its last successful evaluation: Eqs. (35)-(36).
+  const Vector<Dim>& lagrange_multiplier(int particle) const { return lambda_[particle]; }
+
+  /// N_I(x) and grad N_I(x) for every node within the support radius of x.
+  /// \throws ShapeFailure if x is outside the grid, or if Newton does not converge; the
+  /// particle's multiplier is then left as it was.
+  int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
+    if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
+    const double h = grid_.spacing();
+    Vector<Dim>* offsets = gradients;  // the offsets (x - x_I)/h live where the gradients will go
+    const int count = neighbours(particle, x, nodes, offsets);
+    const double beta = beta_in_cell_units(count, offsets);
+
+    // Newton on r(lambda) = 0, Eq. (38), with J of Eq. (37): lambda <- lambda + t s, s = -J^{-1} r (capped,
+    // see newton_step), where t halves from 1 until log Z has dropped by at least 1e-4 of the
+    // first-order prediction t r.s (Armijo). Near the root t = 1 always passes: plain Newton.
+    Vector<Dim> lambda = lambda_[particle] * h;  // warm start
+    LmePartition partition = lme_partition(count, offsets, beta, lambda, values);
+    LmeMoments<Dim> moments = lme_moments(count, offsets, values, partition.weight_sum);
+    int iterations = 0;
+    while (moments.residual.norm() > options_.newton_tolerance) {
+      if (iterations == options_.max_iterations) throw not_converged(particle, iterations, moments, "");
+      const Vector<Dim> step = newton_step(moments, lambda);
+      const double slope = moments.residual.dot(step);  // d log Z / dt at t = 0, negative
+      // log Z carries rounding of about eps |log Z|: below that, a decrease cannot be seen.
+      const double noise = 16.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(partition.log_z));
+      double t = 1.0;
+      LmePartition trial = lme_partition(count, offsets, beta, Vector<Dim>(lambda + step), values);
+      for (int halving = 0; !(trial.log_z <= partition.log_z + 1e-4 * t * slope + noise); ++halving) {
+        if (halving == max_halvings) throw not_converged(particle, iterations, moments, " (line search found no decrease of log Z)");
+        t *= 0.5;
+        trial = lme_partition(count, offsets, beta, Vector<Dim>(lambda + t * step), values);
+      }
+      lambda += t * step;
+      partition = trial;
+      moments = lme_moments(count, offsets, values, partition.weight_sum);
+      ++iterations;
+    }
+    if (!positive_definite(moments.hessian)) {
+      std::ostringstream cause;
+      cause << "LME Hessian J is singular at convergence (x on the edge of the convex hull of its neighbours): det(J)/h^"
+            << 2 * Dim << " = " << moments.hessian.determinant();
+      throw ShapeFailure(particle, cause.str());
+    }
+
+    lme_values(count, partition.weight_sum, values);
+    lme_gradients(count, values, moments.hessian, moments.residual, h, gradients);
+    lambda_[particle] = lambda / h;
+    diagnostics_.record(count, iterations);
+    return count;
+  }
+
+  const ShapeDiagnostics& diagnostics() const { return diagnostics_; }
+
+ private:
+  /// Halvings of t before the line search gives up. Steps are capped (newton_step), so a handful
+  /// suffice; 60 (t = 1e-18) means log Z cannot decrease along a descent direction: rounding.
+  static constexpr int max_halvings = 60;
+
+  /// Every node within R of x: its number, and its offset (x - x_I)/h. Searches only the lattice
+  /// box [x - R, x + R] clipped to the grid. Since R >= h sqrt(Dim), the corners of the cell that
+  /// contains x are always among the neighbours, so x is inside their convex hull.
+  int neighbours(int particle, const Vector<Dim>& x, int* nodes, Vector<Dim>* offsets) const {
+    const double radius = std::sqrt(radius_squared_);
+    const Vector<Dim> xi = (x - grid_.origin()) / grid_.spacing();  // x in lattice coordinates
+    typename Grid<Dim>::MultiIndex lower{}, upper{}, k{};
+    for (int axis = 0; axis < Dim; ++axis) {
+      lower[axis] = std::max(0, static_cast<int>(std::ceil(xi[axis] - radius)));
+      upper[axis] = std::min(grid_.cells(axis), static_cast<int>(std::floor(xi[axis] + radius)));
+    }
+    k = lower;
+    int count = 0;
+    while (true) {
+      Vector<Dim> offset;
+      for (int axis = 0; axis < Dim; ++axis) offset[axis] = xi[axis] - k[axis];
+      if (offset.squaredNorm() <= radius_squared_) {
+        if (count == capacity_) throw ShapeFailure(particle, "LME: more neighbours than capacity() (internal error)");
+        nodes[count] = grid_.node_index(k);
+        offsets[count] = offset;
+        ++count;
+      }
+      int axis = 0;  // odometer over the box
+      while (axis < Dim && ++k[axis] > upper[axis]) k[axis] = lower[axis], ++axis;
+      if (axis == Dim) return count;
+    }
+  }
+
+  /// beta h^2: gamma, or gamma (h / hbar)^2 under the authors' rule. Under that rule beta varies
+  /// with x and Eq. (41), which takes beta constant, is not the exact gradient; the authors' code
+  /// makes the same approximation.
+  double beta_in_cell_units(int count, const Vector<Dim>* offsets) const {
+    if (options_.beta_rule == LmeOptions::BetaRule::grid_spacing) return options_.gamma;
+    double mean = 0.0;
+    for (int I = 0; I < count; ++I) mean += offsets[I].norm();
+    mean /= count;
+    return options_.gamma / (mean * mean);
+  }
+
+  static bool positive_definite(const Matrix<Dim>& J) { return J(0, 0) > 0.0 && J.determinant() > 0.0; }
+
+  /// The Newton step -J^{-1} r, no longer than max(1, |lambda|) (cell units). Far from the solution
+  /// J can be nearly singular, e.g. a warm start with lambda h ~ 100 left by a point at the grid edge,
+  /// and the full step would throw lambda where every weight but one underflows; the cap lets lambda
+  /// at most double, or move by 1, per iteration, and the line search does the rest. If rounding has
+  /// left J not positive definite, the step of the authors' damped matrix J + |r| I (dimensionless
+  /// here, spec 8.3) is used; failing that, steepest descent -r.
+  static Vector<Dim> newton_step(const LmeMoments<Dim>& moments, const Vector<Dim>& lambda) {
+    const Vector<Dim>& r = moments.residual;
+    Matrix<Dim> J = moments.hessian;
+    if (!positive_definite(J)) J += r.norm() * Matrix<Dim>::Identity();
+    Vector<Dim> step = -r;
+    if (positive_definite(J)) {
+      const Vector<Dim> newton = -(J.inverse() * r);
+      if (newton.allFinite()) step = newton;
+    }
+    const double longest = std::max(1.0, lambda.norm());
+    const double length = step.norm();
+    return length > longest ? Vector<Dim>(step * (longest / length)) : step;
+  }
+
+  ShapeFailure not_converged(int particle, int iterations, const LmeMoments<Dim>& moments, const char* why) const {
+    std::ostringstream cause;
+    cause.precision(3);
+    cause << "LME Newton did not converge: " << iterations << " iterations, |r|/h = " << moments.residual.norm()
+          << ", gamma = " << options_.gamma << why;
+    return ShapeFailure(particle, cause.str());
+  }
+
+  /// The most lattice points within `radius` (cell units) of any centre, bounded from above:
+  /// centres are taken in [0, 1/2]^Dim of a cell (the lattice's mirror symmetries give the rest),
+  /// covered by 32^Dim small boxes, and a box counts every point within `radius` of some centre in
+  /// it. The relative slack 1e-12 covers the rounding of the test in neighbours().
+  static int lattice_points_in_ball_bound(double radius) {
+    const int divisions = 32, reach = static_cast<int>(std::ceil(radius)) + 1;
+    const double limit = radius * radius * (1.0 + 1e-12), width = 0.5 / divisions;
+    int most = 0;
+    std::array<int, Dim> box{};
+    while (true) {
+      int count = 0;
+      std::array<int, Dim> k;
+      k.fill(-reach);
+      while (true) {
+        double distance_squared = 0.0;  // from lattice point k to the box of centres
+        for (int axis = 0; axis < Dim; ++axis) {
+          const double low = box[axis] * width, high = low + width;
+          const double gap = k[axis] < low ? low - k[axis] : (k[axis] > high ? k[axis] - high : 0.0);
+          distance_squared += gap * gap;
+        }
+        if (distance_squared <= limit) ++count;
+        int axis = 0;
+        while (axis < Dim && ++k[axis] > reach) k[axis] = -reach, ++axis;
+        if (axis == Dim) break;
+      }
+      most = std::max(most, count);
+      int axis = 0;
+      while (axis < Dim && ++box[axis] == divisions) box[axis] = 0, ++axis;
+      if (axis == Dim) return most;
+    }
+  }
+
+  Grid<Dim> grid_;
+  LmeOptions options_;
+  double radius_squared_ = 0.0;  ///< (R/h)^2 = -ln(tol)/gamma
+  int capacity_ = 0;
+  std::vector<Vector<Dim>> lambda_;  ///< per particle, 1/length: the warm start
+  ShapeDiagnostics diagnostics_;
+};
+
+namespace testing {
+
+/// Distance, in cells, from x to the nearest sphere |x - x_I| = R around a grid node: crossing one
+/// adds or drops a node whose N is about support_tolerance e^{lambda.(x - x_I)}, so N jumps there.
+template <int Dim>
+double distance_to_lme_support_edge(const Grid<Dim>& grid, const Vector<Dim>& x, double radius) {
+  double nearest = 1e300;
+  for (int node = 0; node < grid.node_count(); ++node)
+    nearest = std::min(nearest, std::abs((x - grid.node_position(node)).norm() - radius));
+  return nearest / grid.spacing();
+}
+
+/// The shape properties at x, with Newton converged to |r|/h <= 1e-13 (the shape must be built so).
+/// Tolerances and why:
+///  - sum N - 1: normalised by Z, so rounding only; sum N x_I - x is r, at most 1e-13 h, plus the
+///    rounding of the absolute coordinates: 1.1e-13.
+///  - sum grad N and sum x_I (x) grad N - I: exact for any r by the form of lme_gradients, so
+///    rounding only, about eps (|x|/h) n |J^-1| <~ 1e-14 here: 1e-13.
+///  - finite differences (step 1e-6 h): LME is smooth, so the truncation error is ~1e-12; the error
+///    of N itself, ~ N_I |x - x_I - r| |r| / (h lambda_min(J)) <~ 4e-13, divided by the step 2e-6 h,
+///    dominates: 5e-7. Skipped within 2e-6 h of the grid's edge (the difference would leave it) and
+///    within 1e-5 h of a support sphere (N jumps by ~support_tolerance there).
+template <int Dim>
+void check_lme_properties(LmeShape<Dim>& shape, const Grid<Dim>& grid, const Vector<Dim>& x) {
+  REQUIRE(shape.options().newton_tolerance <= 1e-13);
+  PropertyTolerances tolerance;
+  tolerance.unity = 1.1e-13;
+  tolerance.gradient = 1e-13;
+  tolerance.finite_difference = 5e-7;
+  const double h = grid.spacing();
+  const double room = std::min((x - grid.origin()).minCoeff(), (grid.upper_corner() - x).minCoeff()) / h;
+  tolerance.check_finite_difference = room > 2e-6 && distance_to_lme_support_edge(grid, x, shape.support_radius()) > 1e-5;
+  check_shape_properties(shape, grid, 0, x, tolerance);
+}
+
+/// At a node or a cell centre, every neighbour has its mirror image through x, so r(0) = 0: lambda* = 0,
+/// \f$ N_I = e^{-\gamma |x - x_I|^2 / h^2} / Z \f$ over the nodes within R, and
+/// \f$ \nabla N_I = -N_I J^{-1} (x - x_I) \f$ with \f$ J = \sum_I N_I (x - x_I) \otimes (x - x_I) \f$, all by hand.
+/// N is symmetric and grad N antisymmetric through x. The point is reached warm from `start`, where
+/// lambda is far from 0, so Newton must bring it back.
+/// It stops at |r|/h <= tol, so (cell units, to first order) |lambda h| <= b = tol / lambda_min(J); N_I is
+/// then off by at most b m relatively, m the largest |x - x_I|/h; J by about 2 b m |J|; and grad N_I h by
+/// at most (N_I / lambda_min) (3 b m |x - x_I|/h + tol). These are the tolerances, plus rounding.
+template <int Dim>
+void check_lme_symmetric_point(LmeShape<Dim>& lme, const Grid<Dim>& grid, const Vector<Dim>& start, const Vector<Dim>& x,
+                               int expected_count) {
+  const double h = grid.spacing(), gamma = lme.options().gamma, tol = lme.options().newton_tolerance;
+  std::vector<int> nodes(lme.capacity());
+  std::vector<double> values(lme.capacity());
+  std::vector<Vector<Dim>> gradients(lme.capacity());
+  lme.evaluate(0, start, nodes.data(), values.data(), gradients.data());
+  REQUIRE(lme.lagrange_multiplier(0).norm() * h > 0.1);
+  const int count = lme.evaluate(0, x, nodes.data(), values.data(), gradients.data());
+  INFO("x = ", x.transpose());
+  REQUIRE(count == expected_count);
+
+  double Z = 0.0, m = 0.0;
+  for (int k = 0; k < count; ++k) {
+    const Vector<Dim> offset = (x - grid.node_position(nodes[k])) / h;
+    Z += std::exp(-gamma * offset.squaredNorm());
+    m = std::max(m, offset.norm());
+  }
+  Matrix<Dim> J = Matrix<Dim>::Zero();
+  for (int k = 0; k < count; ++k) {
+    const Vector<Dim> offset = (x - grid.node_position(nodes[k])) / h;
+    J += std::exp(-gamma * offset.squaredNorm()) / Z * offset * offset.transpose();
+  }
+  const double trace = J.trace(), lambda_min = 0.5 * trace - std::sqrt(std::max(0.0, 0.25 * trace * trace - J.determinant()));
+  const double b = tol / lambda_min;
+  CHECK(lme.lagrange_multiplier(0).norm() * h <= b);
+  for (int k = 0; k < count; ++k) {
+    const Vector<Dim> offset = (x - grid.node_position(nodes[k])) / h;
+    const double N = std::exp(-gamma * offset.squaredNorm()) / Z;
+    const Vector<Dim> gradient = -N * (J.inverse() * offset) / h;
+    INFO("node ", nodes[k], ", N = ", N);
+    CHECK(std::abs(values[k] - N) <= N * (b * m + 4e-16));
+    CHECK((gradients[k] - gradient).norm() * h <= N / lambda_min * (3.0 * b * m * offset.norm() + tol) + 1e-15);
+    int mirrors = 0;  // the node at 2x - x_I has the same N and the opposite gradient
+    for (int j = 0; j < count; ++j)
+      if (((grid.node_position(nodes[j]) + grid.node_position(nodes[k])) / h - 2.0 * x / h).norm() < 1e-9) {
+        ++mirrors;
+        CHECK(std::abs(values[j] - values[k]) <= 2.0 * N * (b * m + 4e-16));
+        CHECK((gradients[j] + gradients[k]).norm() * h <= 2.0 * N / lambda_min * (3.0 * b * m * offset.norm() + tol) + 2e-15);
+      }
+    CHECK(mirrors == 1);
+  }
+}
+
+}  // namespace testing
+
+TEST_CASE("LME by hand: at a node and at a cell centre lambda = 0 and N is the normalised Gaussian prior") {
+  // Tolerances: what |r|/h <= 1e-13 allows (testing::check_lme_symmetric_point), a few 1e-13 at most.
+  LmeOptions options;
+  options.newton_tolerance = 1e-13;
+  const double h = 0.5;
+  const Grid<1> line(Vector<1>(0.0), h, {10});
+  LmeShape<1> lme(line, options);
+  lme.initialise(1);
+  CHECK(lme.capacity() == 5);  // floor(2 R / h) + 1 with R = 2.146 h
+  testing::check_lme_symmetric_point(lme, line, Vector<1>(1.3), Vector<1>(2.5), 5);   // node 5
+  testing::check_lme_symmetric_point(lme, line, Vector<1>(1.3), Vector<1>(2.25), 4);  // centre of cell 4
+
+  // 2D: 13 nodes around a node (|k|^2 <= 4.6: 0, 1, 2, 4), 16 around a cell centre, the most possible.
+  const Grid<2> plane(Vector<2>(0.0, 0.0), h, {10, 10});
+  LmeShape<2> lme2(plane, options);
+  lme2.initialise(1);
+  CHECK(lme2.capacity() == 16);
+  testing::check_lme_symmetric_point(lme2, plane, Vector<2>(1.3, 2.1), Vector<2>(2.5, 2.5), 13);
+  testing::check_lme_symmetric_point(lme2, plane, Vector<2>(1.3, 2.1), Vector<2>(2.25, 2.75), 16);
+}
+
+TEST_CASE("LME: every shape property in 1D and 2D, near and at the grid edge, on faces and at nodes") {
+  LmeOptions options;
+  options.newton_tolerance = 1e-13;  // so that finite differences of N can check grad N (see check_lme_properties)
+  const Grid<1> line(Vector<1>(-1.0), 0.25, {16});
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 0.5, {6, 4});
+  for (double gamma : {0.8, 3.0, 5.0, 10.0}) {  // the authors' values, and a sharp one (1D only: 2D needs gamma <= 6.9)
+    options.gamma = gamma;
+    LmeShape<1> lme(line, options);
+    lme.initialise(1);
+    for (double x : {-1.0, -1.0 + 1e-9, -1.0 + 2.5e-4, -0.975, -0.9, -0.75, -0.625, -0.6, -0.13, 0.0, 0.37, 1.0, 2.5,
+                     2.99, 3.0 - 2.5e-4, 3.0, 1.1, -1.0}) {
+      INFO("gamma = ", gamma);
+      testing::check_lme_properties(lme, line, Vector<1>(x));
+    }
+    if (gamma > 6.9) continue;
+    LmeShape<2> lme2(plane, options);
+    lme2.initialise(1);
+    for (const Vector<2>& x : {Vector<2>(0.0, 0.0), Vector<2>(0.0, 1.1), Vector<2>(1e-9, 1.1), Vector<2>(5e-4, 1.1),
+                               Vector<2>(0.05, 0.02), Vector<2>(0.5, 0.5), Vector<2>(0.75, 0.25), Vector<2>(1.3, 0.7),
+                               Vector<2>(1.0, 0.77), Vector<2>(2.99, 1.98), Vector<2>(3.0, 2.0), Vector<2>(1.61, 2.0),
+                               Vector<2>(3.0, 0.3), Vector<2>(1.2, 1e-4), Vector<2>(0.0, 0.0)}) {
+      INFO("gamma = ", gamma);
+      testing::check_lme_properties(lme2, plane, x);
+    }
+  }
+
+  // With the default Newton tolerance 1e-10: reproduction is what it guarantees, |sum N x_I - x| <= 1e-10 h;
+  // the gradient identities stay exact (rounding only). Finite differences would see N's 1e-10 error / 2e-6.
+  LmeShape<2> loose(plane);
+  loose.initialise(1);
+  testing::PropertyTolerances tolerance;
+  tolerance.unity = 1e-10 + 1e-14;
+  tolerance.gradient = 1e-13;
+  tolerance.check_finite_difference = false;
+  for (const Vector<2>& x : {Vector<2>(0.0, 1.1), Vector<2>(0.05, 0.02), Vector<2>(1.3, 0.7), Vector<2>(1.61, 2.0)})
+    testing::check_shape_properties(loose, plane, 0, x, tolerance);
+}
+
+TEST_CASE("LME tends to the linear shape functions as gamma grows") {
+  // For gamma of order 1 or more, max_x max_I |N_lme - N_linear| is attained at the nodes, where lambda = 0
+  // and N_I = 1 / sum_J exp(-gamma |x_I - x_J|^2 / h^2): the deviation is 1 - 1/sum ~ 2 Dim e^-gamma. For
+  // gamma = 64 that is 3e-28, below what Newton resolves: there N is off by about |r|/h <= 1e-13 (two-node
+  // regime: dN = r exactly), so the bound is 2e-13. The radius is held at R = 3h with tol = e^{-9 gamma},
+  // so that the cut-off (neglected weights ~ e^{-6 gamma} relative) is never what limits the deviation;
+  // with the default tol = 1e-6, gamma is capped by the hull condition R >= h sqrt(Dim) (gamma <= 13.8 in
+  // 1D, 6.9 in 2D).
+  const Grid<1> line(Vector<1>(0.0), 1.0, {12});
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {10, 10});
+  LinearShape<1> hat(line);
+  LinearShape<2> q4(plane);
+  LmeOptions options;
+  options.newton_tolerance = 1e-13;
+  double previous = 2.0, previous2 = 2.0;
+  for (double gamma : {1.0, 4.0, 16.0, 64.0}) {
+    options.gamma = gamma;
+    options.support_tolerance = std::exp(-9.0 * gamma);
+    double sum = 0.0, sum2 = 0.0;  // Z at a node, in 1D and 2D
+    for (int k = -3; k <= 3; ++k) {
+      sum += std::exp(-gamma * k * k);
+      for (int m = -3; m <= 3; ++m)
+        if (k * k + m * m <= 9) sum2 += std::exp(-gamma * (k * k + m * m));
+    }
+    LmeShape<1> lme(line, options);
+    lme.initialise(1);
+    double largest = 0.0;
+    for (int k = 0; k <= 4 * 64; ++k) {
+      const Vector<1> x(4.0 + k / 64.0);  // cells 4 to 8, nodes and faces included
+      const auto a = testing::dense_values(lme, line, 0, x), b = testing::dense_values(hat, line, 0, x);
+      for (size_t I = 0; I < a.size(); ++I) largest = std::max(largest, std::abs(a[I] - b[I]));
+    }
+    LmeShape<2> lme2(plane, options);
+    lme2.initialise(1);
+    double largest2 = 0.0;
+    for (int i = 0; i <= 32; ++i)
+      for (int j = 0; j <= 32; ++j) {
+        const Vector<2> x(4.0 + i / 16.0, 4.0 + j / 16.0);
+        const auto a = testing::dense_values(lme2, plane, 0, x), b = testing::dense_values(q4, plane, 0, x);
+        for (size_t I = 0; I < a.size(); ++I) largest2 = std::max(largest2, std::abs(a[I] - b[I]));
+      }
+    INFO("gamma = ", gamma, ": max |N_lme - N_linear| = ", largest, " (1D), ", largest2, " (2D)");
+    CHECK(largest < previous);
+    CHECK(largest2 < previous2);
+    CHECK(std::abs(largest - (1.0 - 1.0 / sum)) <= 2e-13);
+    CHECK(std::abs(largest2 - (1.0 - 1.0 / sum2)) <= 2e-13);
+    previous = largest;
+    previous2 = largest2;
+  }
+}
+
+TEST_CASE("LME Newton: few iterations from a warm start, and a clear failure otherwise") {
+  // A particle moving by 1e-3 h per call starts Newton about 1e-3 from the root; Newton converges
+  // quadratically, e_{k+1} ~ C e_k^2, so two steps reach 1e-10 when C <~ 4. Near the grid edge, or for a
+  // sharper gamma, J's small eigenvalue grows C and a third step is sometimes needed (measured: never 4).
+  int nodes[64];
+  double values[64];
+  Vector<1> gradients[64];
+  Vector<2> gradients2[64];
+  for (double gamma : {3.0, 5.0}) {
+    LmeOptions options;
+    options.gamma = gamma;
+    const double h = 0.1;
+    const Grid<1> line(Vector<1>(0.0), h, {20});
+    LmeShape<1> interior(line, options), edge(line, options);
+    interior.initialise(1);
+    edge.initialise(1);
+    interior.evaluate(0, Vector<1>(0.5), nodes, values, gradients);
+    edge.evaluate(0, Vector<1>(0.3), nodes, values, gradients);
+    const long cold = interior.diagnostics().newton_iterations_total, cold_edge = edge.diagnostics().newton_iterations_total;
+    for (int k = 1; k <= 1000; ++k) interior.evaluate(0, Vector<1>(0.5 + k * 1e-3 * h), nodes, values, gradients);  // 10 cells
+    for (int k = 1; k <= 2990; ++k) edge.evaluate(0, Vector<1>(0.3 - k * 1e-3 * h), nodes, values, gradients);  // to 0.01 h
+    INFO("gamma = ", gamma);
+    CHECK(interior.diagnostics().newton_iterations_max <= (gamma == 3.0 ? 2 : 3));
+    CHECK(double(interior.diagnostics().newton_iterations_total - cold) / 1000 <= (gamma == 3.0 ? 2.0 : 2.1));
+    CHECK(edge.diagnostics().newton_iterations_max <= 3);
+    CHECK(double(edge.diagnostics().newton_iterations_total - cold_edge) / 2990 <= 2.1);
+
+    const Grid<2> plane(Vector<2>(0.0, 0.0), h, {10, 10});
+    LmeShape<2> lme2(plane, options);
+    lme2.initialise(1);
+    lme2.evaluate(0, Vector<2>(0.3, 0.35), nodes, values, gradients2);
+    const long cold2 = lme2.diagnostics().newton_iterations_total;
+    for (int k = 1; k <= 2000; ++k)  // a slanted path across cells, faces and nodes' neighbourhoods
+      lme2.evaluate(0, Vector<2>(0.3 + k * 0.8e-3 * h, 0.35 + k * 0.6e-3 * h), nodes, values, gradients2);
+    CHECK(lme2.diagnostics().newton_iterations_max <= (gamma == 3.0 ? 2 : 3));
+    CHECK(double(lme2.diagnostics().newton_iterations_total - cold2) / 2000 <= (gamma == 3.0 ? 2.0 : 2.1));
+  }
+
+  // Cold starts converge even far from the solution: at the grid edge (lambda -> infinity, N -> the
+  // nodes on the edge) it takes ~20 steps, each multiplying |r| by about 1/e.
+  LmeOptions options;
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {10, 10});
+  LmeShape<2> cold(plane, options);
+  cold.initialise(1);
+  cold.evaluate(0, Vector<2>(0.0, 0.0), nodes, values, gradients2);
+  CHECK(cold.diagnostics().newton_iterations_max <= 25);
+  // The weak Kronecker property at the corner node: every other node I has offset -k_I with k_I >= 0,
+  // k_Ix + k_Iy >= 1, so 1 - N_0 <= -(r_x + r_y) <= sqrt(2) |r| <= sqrt(2) 1e-10 h.
+  CHECK(nodes[0] == 0);
+  CHECK(values[0] >= 1.0 - std::sqrt(2.0) * 1e-10);
+
+  // Not converging: a point near the edge from a cold start with one iteration allowed. The
+  // multiplier is left as it was.
+  options.max_iterations = 1;
+  LmeShape<2> capped(plane, options);
+  capped.initialise(3);
+  CHECK_THROWS_WITH_AS(capped.evaluate(2, Vector<2>(0.01, 5.0), nodes, values, gradients2),
+                       doctest::Contains("LME Newton did not converge: 1 iterations, |r|/h = "), ShapeFailure);
+  CHECK(capped.lagrange_multiplier(2).norm() == 0.0);
+  int failed_particle = -1;
+  try {
+    capped.evaluate(2, Vector<2>(0.01, 5.0), nodes, values, gradients2);
+  } catch (const ShapeFailure& failure) {
+    failed_particle = failure.particle;
+    CHECK(std::string(failure.what()).find("gamma = 3") != std::string::npos);
+  }
+  CHECK(failed_particle == 2);
+  CHECK(capped.evaluate(1, Vector<2>(5.5, 5.5), nodes, values, gradients2) == 16);  // symmetric: 0 iterations needed
+
+  // Outside the grid, including NaN.
+  CHECK_THROWS_WITH_AS(capped.evaluate(0, Vector<2>(-1e-12, 5.0), nodes, values, gradients2), "particle left the grid",
+                       ShapeFailure);
+  CHECK_THROWS_WITH_AS(capped.evaluate(0, Vector<2>(5.0, std::nan("")), nodes, values, gradients2),
+                       "particle left the grid", ShapeFailure);
+}
+
+TEST_CASE("LME options: the hull condition on gamma and the support tolerance, and the authors' beta rule") {
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {10, 10});
+  const Grid<1> line(Vector<1>(0.0), 1.0, {10});
+  LmeOptions options;
+  options.gamma = 7.0;  // R = 1.405 h < sqrt(2) h with tol = 1e-6
+  CHECK_THROWS_WITH_AS(LmeShape<2>(plane, options), doctest::Contains("gamma = 7 is too large for support_tolerance = 1e-06"),
+                       std::invalid_argument);
+  CHECK_NOTHROW(LmeShape<1>(line, options));  // 1D needs only R >= h
+  options.support_tolerance = 1e-7;           // R = 1.52 h
+  CHECK_NOTHROW(LmeShape<2>(plane, options));
+  options = LmeOptions();
+  options.gamma = 0.0;
+  CHECK_THROWS_AS(LmeShape<1>(line, options), std::invalid_argument);
+  options = LmeOptions();
+  options.support_tolerance = 1.0;
+  CHECK_THROWS_AS(LmeShape<1>(line, options), std::invalid_argument);
+  options = LmeOptions();
+  options.newton_tolerance = 0.0;
+  CHECK_THROWS_AS(LmeShape<1>(line, options), std::invalid_argument);
+  options = LmeOptions();
+  options.max_iterations = 0;
+  CHECK_THROWS_AS(LmeShape<1>(line, options), std::invalid_argument);
+
+  // beta = gamma / hbar^2. In 1D at a cell centre with gamma = 3 the neighbours are at 0.5 h and 1.5 h,
+  // so hbar = h and N is the default's (spec 4.1, example 2), to rounding. (So it is wherever x has
+  // four neighbours, two on each side: their distances add up to 4 h.)
+  int nodes[64];
+  double values[64], reference[64];
+  Vector<1> gradients[64];
+  options = LmeOptions();
+  options.newton_tolerance = 1e-13;
+  LmeShape<1> standard(line, options);
+  options.beta_rule = LmeOptions::BetaRule::mean_neighbour_distance;
+  LmeShape<1> authors(line, options);
+  standard.initialise(1);
+  authors.initialise(1);
+  REQUIRE(standard.evaluate(0, Vector<1>(4.5), nodes, reference, gradients) == 4);
+  REQUIRE(authors.evaluate(0, Vector<1>(4.5), nodes, values, gradients) == 4);
+  for (int k = 0; k < 4; ++k) CHECK(values[k] == doctest::Approx(reference[k]).epsilon(1e-14));
+  // Elsewhere hbar != h and the functions differ, while every property but the finite-difference one
+  // holds (Eq. (41) takes beta constant; under this rule it varies with x, as in the authors' code).
+  REQUIRE(standard.evaluate(0, Vector<1>(4.05), nodes, reference, gradients) == 5);  // hbar = 6.05 h / 5
+  REQUIRE(authors.evaluate(0, Vector<1>(4.05), nodes, values, gradients) == 5);
+  double difference = 0.0;
+  for (int k = 0; k < 5; ++k) difference = std::max(difference, std::abs(values[k] - reference[k]));
+  CHECK(difference > 0.05);  // beta h^2 = 3 / 1.21^2 = 2.05 instead of 3
+  testing::PropertyTolerances tolerance;
+  tolerance.unity = 1.1e-13;
+  tolerance.gradient = 1e-13;
+  tolerance.check_finite_difference = false;
+  LmeShape<2> authors2(plane, options);
+  authors2.initialise(1);
+  for (const Vector<2>& x : {Vector<2>(0.0, 3.3), Vector<2>(4.5, 4.5), Vector<2>(4.2, 7.9), Vector<2>(9.9, 9.95)})
+    testing::check_shape_properties(authors2, plane, 0, x, tolerance);
+}
+
+}  // namespace mpm
