@@ -52,7 +52,7 @@ struct SceneFile {
 /// Parses the scene file. \throws SceneError on a syntax error, with its line.
 inline SceneFile parse_scene_file(const std::string& path) {
   try {
-    return SceneFile{path, toml::parse_file(path)};
+    return SceneFile{path, toml::parse_file(path), {}};
   } catch (const toml::parse_error& error) {
     if (error.source().begin.line == 0 && std::string(error.description()).find("open") != std::string::npos)
       throw SceneError(path, 0, "(file)", "cannot be read: " + std::string(error.description()));
@@ -63,7 +63,7 @@ inline SceneFile parse_scene_file(const std::string& path) {
 /// Parses a scene given as text (tests, tools). \throws SceneError on a syntax error.
 inline SceneFile parse_scene_text(const std::string& text, const std::string& name) {
   try {
-    return SceneFile{name, toml::parse(std::string_view(text), std::string_view(name))};
+    return SceneFile{name, toml::parse(std::string_view(text), std::string_view(name)), {}};
   } catch (const toml::parse_error& error) {
     throw SceneError(name, static_cast<int>(error.source().begin.line), "(syntax)", std::string(error.description()));
   }
