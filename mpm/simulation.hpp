@@ -51,6 +51,8 @@ struct RunSummary {
   double smallest_time_step = 0.0, largest_time_step = 0.0;
   double wall_seconds = 0.0;
   double particle_steps_per_second = 0.0;
+  /// largest |sum_I m_I - sum_p m_p| / sum_p m_p over the steps: Eq. (13) with the partition of unity
+  double largest_mass_error = 0.0;
   ShapeDiagnostics shape;
 };
 
@@ -111,6 +113,7 @@ class Simulation {
       summary.largest_time_step = std::max(summary.largest_time_step, dt);
       // 4. Health.
       const Balances<Dim> now = balances(particles_);
+      summary.largest_mass_error = std::max(summary.largest_mass_error, nodal_mass_error(now.mass));
       external_work_ += dt * body_force.dot(now.momentum);
       check_health(step, time, now);
       // 5. Output.
@@ -145,6 +148,13 @@ class Simulation {
     for (size_t k = next_snapshot; k < control_.snapshot_times.size(); ++k)
       if (control_.snapshot_times[k] > time) return std::min(stop, control_.snapshot_times[k]);
     return stop;
+  }
+
+  /// Relative difference between the grid's total mass and the particles' (0 up to round-off).
+  double nodal_mass_error(double particle_mass) const {
+    double nodal_mass = 0.0;
+    for (double mass : grid_fields_.nodal_mass) nodal_mass += mass;
+    return std::abs(nodal_mass - particle_mass) / particle_mass;
   }
 
   void write_due_snapshots(double time, size_t& next_snapshot, Monitor<Dim>& monitor) {

@@ -20,6 +20,9 @@ struct DykaResult {
   double rms = 0.0;            ///< Eq. (43), m/s
   double largest_speed = 0.0;  ///< max |v_A|, m/s
   double wall_seconds = 0.0;
+  double mass_error = 0.0;     ///< largest relative |sum m_I - sum m_p| of the run
+  double newton_mean = 0.0, neighbours_mean = 0.0;
+  int newton_max = 0;
   long steps = 0;
   int cells = 0;
   bool failed = false;
@@ -55,10 +58,18 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.steps = summary.steps;
-  // The exact solution: the bar [0, L] with v0 on the particles' quarter X <= L/4.
-  const double length = scene.length[0], loaded = scene.initial_velocities.at(0).max[0];
-  const mpm::exact::ElasticBar bar(length, scene.young_modulus, scene.density,
-                                   {{0.0, loaded, scene.initial_velocities[0].velocity[0], 0.0}});
+  result.mass_error = summary.largest_mass_error;
+  result.newton_mean = summary.shape.newton_iterations_mean();
+  result.newton_max = summary.shape.newton_iterations_max;
+  result.neighbours_mean = summary.shape.neighbours_mean();
+  // The exact solution of the discrete initial data: v0 on the union of the domains
+  // [X_p - l_p, X_p + l_p] of the particles that start with it (L/4 when the cells divide by 4).
+  const double length = scene.length[0], v0 = scene.initial_velocities.at(0).velocity[0];
+  double loaded = 0.0;
+  for (int p = 0; p < setup.particles.size(); ++p)
+    if (setup.particles.velocity[p][0] == v0)
+      loaded = std::max(loaded, setup.particles.reference_position[p][0] + setup.particles.half_length[p][0]);
+  const mpm::exact::ElasticBar bar(length, scene.young_modulus, scene.density, {{0.0, loaded, v0, 0.0}});
   const double reference_position = setup.particles.reference_position[setup.observed[0]][0];
   result.time = recorder.time;
   result.velocity = recorder.velocity;

@@ -138,6 +138,7 @@ inline void write_run_json(const std::string& path, const Scene& scene, const Ru
       << "  \"largest_time_step\": " << summary.largest_time_step << ",\n"
       << "  \"wall_seconds\": " << summary.wall_seconds << ",\n"
       << "  \"particle_steps_per_second\": " << summary.particle_steps_per_second << ",\n"
+      << "  \"largest_mass_error\": " << summary.largest_mass_error << ",\n"
       << "  \"neighbours_mean\": " << summary.shape.neighbours_mean() << ",\n"
       << "  \"neighbours_max\": " << summary.shape.neighbours_max << ",\n"
       << "  \"newton_iterations_mean\": " << summary.shape.newton_iterations_mean() << ",\n"

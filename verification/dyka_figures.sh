@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The Dyka-bar figures of `make figures` (Figs. 6-10, speed against accuracy, stability map).
+# Called by make_figures.sh with MPM_BIN, MPM_ROOT and MPM_RESULTS set; exits 1 when a hard
+# check of the suite fails.
+set -uo pipefail
+data=$MPM_RESULTS/data figures=$MPM_RESULTS/figures plots=$MPM_ROOT/verification/plots
+scene=$MPM_ROOT/scenes/dyka_bar.toml
+status=0
+"$MPM_BIN/dyka_suite" "$data" "$MPM_RESULTS/report/20_dyka.md" "$scene" || status=1
+bash "$MPM_ROOT/verification/dyka_stability.sh" "$MPM_BIN/mpm" "$scene" "$data" || status=1
+
+g() { gnuplot -e "dir='$plots'; data='$data'; $1" "$plots/$2" || status=1; }
+g "out='$figures/dyka_fig6'; orders='$data/dyka_orders.csv'" dyka_fig6.gp
+series() {  # series NAME CAPTION INSET FILES... -- TITLES...
+  local name=$1 caption=$2 inset=$3; shift 3
+  local files="" titles=""
+  while [[ $1 != -- ]]; do files="$files $data/$1.csv"; shift; done; shift
+  titles="$*"
+  g "out='$figures/$name'; caption='$caption'; files='${files# }'; titles='$titles'; inset=$inset" dyka_series.gp
+}
+series dyka_fig7 "Fig. 7: predictor-corrector against forward Euler (LME γ = 3, 40 cells, CFL 0.5); inset: a jump" 1 \
+  dyka_lme_fe_40 dyka_lme_npc_40 -- FE NPC
+series dyka_fig9 "Fig. 9: shape functions, forward Euler (40 cells, CFL 0.5)" 0 \
+  dyka_linear_fe_40 dyka_ugimp_fe_40 dyka_lme_fe_40 -- linear uGIMP LME
+series dyka_fig10 "Fig. 10: shape functions, predictor-corrector (40 cells, CFL 0.5)" 0 \
+  dyka_linear_npc_40 dyka_ugimp_npc_40 dyka_lme_npc_40 -- linear uGIMP LME
+g "out='$figures/dyka_fig8'" dyka_fig8.gp
+g "out='$figures/dyka_work_precision'" dyka_work_precision.gp
+below=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f2) above=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f3)
+g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability.gp
+
+# The stability map's section of the report.
+{
+  echo "### Where methods fail: the largest stable CFL (\`dyka_stability\`)"
+  echo
+  echo "Bisection on the exit code of \`mpm run\` (0: bounded to 200 µs; 3: stopped by the solver's own diagnosis), 40 cells."
+  echo
+  echo "| method | largest stable CFL | smallest unstable CFL | the solver's diagnosis at the smallest unstable CFL |"
+  echo "|---|---|---|---|"
+  tail -n +2 "$data/dyka_stability.csv" | awk -F, '{d=$4; for(i=5;i<=NF;i++) d=d","$i; printf "| %s | %s | %s | %s |\n", $1, $2, $3, d}'
+  echo
+} >"$MPM_RESULTS/report/21_dyka_stability.md"
+ls "$figures"/dyka_* >/dev/null 2>&1 || status=1
+exit $status

@@ -1,0 +1,108 @@
+// One soil-block case of the verification suite (paper section 3.2, spec 5.2): run a scene of
+// scenes/soil_block*.toml with overrides in-process and record
+//   - the vertical displacement u_y(t) = y(t) - Y of the observed top particle at every sample,
+//   - every particle (position, reference position, stress) at the scene's snapshot times,
+//   - the total nodal mass against the total particle mass at every sample (nodal_mass_probe.hpp).
+// The comparison with the exact column is soil_measures.hpp.
+#pragma once
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "mpm/run.hpp"
+#include "verification/nodal_mass_probe.hpp"
+
+namespace verification {
+
+/// One particle at one snapshot time; stresses in Pa (tension positive).
+struct ParticleState {
+  double x, y;                      ///< current position
+  double reference_x, reference_y;  ///< X, Y: the position at t = 0
+  double sigma_xx, sigma_yy, sigma_xy;
+};
+
+struct SoilSnapshot {
+  double time = 0.0;
+  std::vector<ParticleState> particles;
+};
+
+struct SoilResult {
+  std::string name;
+  std::vector<std::string> overrides;
+  mpm::io::Scene scene;                ///< the resolved settings of the run
+  double reference_height = 0.0;       ///< Y of the observed particle
+  double reference_x = 0.0;            ///< X of the observed particle
+  std::vector<double> time, displacement;  ///< samples of u_y = y - Y of the observed particle
+  std::vector<SoilSnapshot> snapshots;
+  double particle_mass = 0.0;          ///< sum of m_p
+  double largest_mass_mismatch = 0.0;  ///< max over samples of |sum_I m_I - sum_p m_p| / sum_p m_p
+  long steps = 0;
+  double wall_seconds = 0.0;    ///< the whole case: set-up, run and recording
+  double solver_seconds = 0.0;  ///< the time-step loop alone (RunSummary)
+  bool failed = false;
+  std::string failure;  ///< the solver's diagnosis when it failed
+};
+
+/// Records the observed particle, the snapshots and the nodal mass.
+struct SoilRecorder : mpm::Monitor<2> {
+  SoilRecorder(SoilResult& result_, int observed_, NodalMassProbe<2>& probe_)
+      : result(result_), observed(observed_), probe(probe_) {}
+
+  void sample(long, double t, const mpm::Particles<2>& particles, const mpm::Balances<2>& sums) override {
+    result.time.push_back(t);
+    result.displacement.push_back(particles.position[observed][1] - particles.reference_position[observed][1]);
+    const double mismatch = std::abs(probe.total(particles) - sums.mass) / result.particle_mass;
+    result.largest_mass_mismatch = std::max(result.largest_mass_mismatch, mismatch);
+  }
+
+  void snapshot(int, double t, const mpm::Particles<2>& particles) override {
+    SoilSnapshot snap;
+    snap.time = t;
+    for (int p = 0; p < particles.size(); ++p)
+      snap.particles.push_back({particles.position[p][0], particles.position[p][1], particles.reference_position[p][0],
+                                particles.reference_position[p][1], particles.stress[p](0, 0), particles.stress[p](1, 1),
+                                particles.stress[p](0, 1)});
+    result.snapshots.push_back(snap);
+  }
+
+  SoilResult& result;
+  int observed;
+  NodalMassProbe<2>& probe;
+};
+
+/// Runs the scene at `scene_path` with `overrides` (mpm run --set syntax). A SimulationFailure
+/// (NaN, a particle off the grid, unbounded energy growth) is caught and recorded, with what was
+/// recorded up to it; a SceneError propagates (a wrong case list is a bug of the suite).
+inline SoilResult run_soil_case(const std::string& scene_path, const std::string& name,
+                                const std::vector<std::string>& overrides) {
+  SoilResult result;
+  result.name = name;
+  result.overrides = overrides;
+  result.scene = mpm::load_scene(scene_path, overrides);
+  const mpm::Setup<2> setup = mpm::build_setup<2>(result.scene);
+  const int observed = setup.observed.at(0);
+  result.reference_x = setup.particles.reference_position[observed][0];
+  result.reference_height = setup.particles.reference_position[observed][1];
+  for (double m : setup.particles.mass) result.particle_mass += m;
+  NodalMassProbe<2> probe(result.scene, setup);
+  SoilRecorder recorder(result, observed, probe);
+  const auto start = std::chrono::steady_clock::now();
+  mpm::RunSummary summary;
+  try {
+    summary = mpm::run_setup<2>(result.scene, setup, recorder, &summary);
+  } catch (const mpm::SimulationFailure& failure) {
+    result.failed = true;
+    result.failure = failure.message();
+  } catch (const mpm::ShapeFailure& failure) {  // from the probe: the run itself would fail on its next step
+    result.failed = true;
+    result.failure = std::string("nodal mass probe: ") + failure.what();
+  }
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.steps = summary.steps;
+  result.solver_seconds = summary.wall_seconds;
+  return result;
+}
+
+}  // namespace verification

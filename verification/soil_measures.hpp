@@ -1,0 +1,134 @@
+// A soil-block run against the exact column (spec 7.2, mpm/exact/column.hpp) and its finite-strain
+// static counterpart (mpm/exact/column_log_strain.hpp): the numbers the suite's figures, checks and
+// report are made of. The exact solutions take their parameters from the scene, never from the solver.
+#pragma once
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "mpm/analysis/rms_error.hpp"
+#include "mpm/exact/column.hpp"
+#include "mpm/exact/column_log_strain.hpp"
+#include "verification/soil_case.hpp"
+
+namespace verification {
+
+/// Spec 7.2: the constrained modulus of a laterally confined column (plane strain, lateral rollers),
+/// \f$ M = E(1-\nu)/((1+\nu)(1-2\nu)) \f$; M = E for nu = 0, with or without lateral rollers.
+inline double constrained_modulus(const mpm::io::Scene& scene) {
+  const double nu = scene.poisson_ratio;
+  return scene.young_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+}
+
+/// The exact column of the scene's block: H = the box height, g = |gravity_y|, T = ramp_period.
+inline mpm::exact::SoilColumn exact_column(const mpm::io::Scene& scene) {
+  return mpm::exact::SoilColumn(scene.length[1], constrained_modulus(scene), scene.density, std::abs(scene.gravity[1]),
+                                scene.ramp_period);
+}
+
+inline mpm::exact::SoilColumnLogStrain log_strain_column(const mpm::io::Scene& scene) {
+  return mpm::exact::SoilColumnLogStrain(scene.length[1], constrained_modulus(scene), scene.density,
+                                         std::abs(scene.gravity[1]));
+}
+
+/// \f$ T_1 = 4H/c \f$, \f$ c = \sqrt{M/\rho} \f$: the period of the column's first mode (spec 7.2).
+inline double first_period(const mpm::io::Scene& scene) {
+  return 4.0 * scene.length[1] / std::sqrt(constrained_modulus(scene) / scene.density);
+}
+
+struct SettlementMeasures {
+  std::vector<double> exact;        ///< u_exact(Y, t_n) at every sample (spec 7.2, small strain)
+  double final_displacement = 0.0;  ///< u(t_end) of the observed particle
+  double exact_final = 0.0;         ///< u_exact(Y, t_end)
+  double final_error = 0.0;         ///< u(t_end) - u_exact(Y, t_end)
+  double rms_error = 0.0;           ///< Eq. (43) over every sample of u
+  /// time average of u over the last four T1 of the run, all after the ramp: it removes the free
+  /// oscillation about the static state (spec 5.2.2: +-2.3 mm) and leaves the static settlement
+  double mean_settlement = std::numeric_limits<double>::quiet_NaN();
+  double static_small_strain = 0.0;  ///< static u(Y), spec 7.2
+  double static_log_strain = 0.0;    ///< static u(Y) at finite (logarithmic) strain
+};
+
+/// Compares the observed particle's u_y(t) with the exact column at its reference height Y.
+inline SettlementMeasures measure_settlement(const SoilResult& result) {
+  SettlementMeasures m;
+  const auto column = exact_column(result.scene);
+  for (double t : result.time) m.exact.push_back(column.displacement(result.reference_height, t));
+  m.final_displacement = result.displacement.back();
+  m.exact_final = m.exact.back();
+  m.final_error = m.final_displacement - m.exact_final;
+  m.rms_error = mpm::rms_error(result.displacement, m.exact);
+  m.static_small_strain = column.static_displacement(result.reference_height);
+  m.static_log_strain = log_strain_column(result.scene).displacement(result.reference_height);
+  const double end = result.scene.control.end_time, window_start = end - 4.0 * first_period(result.scene);
+  if (!result.failed && window_start >= 0.5 * result.scene.ramp_period) {
+    double area = 0.0, span = 0.0;  // trapezoid rule over the samples in the window
+    for (size_t n = 1; n < result.time.size(); ++n) {
+      if (result.time[n - 1] < window_start) continue;
+      const double dt = result.time[n] - result.time[n - 1];
+      area += 0.5 * dt * (result.displacement[n] + result.displacement[n - 1]);
+      span += dt;
+    }
+    m.mean_settlement = area / span;
+  }
+  return m;
+}
+
+struct StressMeasures {
+  double rms_relative = 0.0;      ///< RMS over particles of (sigma_yy - sigma_exact(Y, t)) / (rho g H)
+  double largest_relative = 0.0;  ///< the largest |sigma_yy - sigma_exact(Y, t)| / (rho g H)
+  double bottom_row_height = 0.0;     ///< Y of the lowest row of particles
+  double bottom_row_stress = 0.0;     ///< mean sigma_yy of that row
+  double bottom_row_exact = 0.0;      ///< sigma_exact(Y, t) there
+  double exact_base = 0.0;            ///< sigma_exact(0, t), the base
+  double largest_settlement = 0.0;    ///< max over particles of Y - y
+};
+
+/// sigma_yy of every particle at a snapshot against the exact sigma_yy at its reference height:
+/// the column is statically determinate, so sigma(Y) is the same at small and finite strain.
+inline StressMeasures measure_stress(const SoilResult& result, const SoilSnapshot& snap) {
+  StressMeasures m;
+  const auto column = exact_column(result.scene);
+  const double scale = result.scene.density * std::abs(result.scene.gravity[1]) * result.scene.length[1];
+  double sum = 0.0;
+  m.bottom_row_height = std::numeric_limits<double>::infinity();
+  for (const auto& p : snap.particles) m.bottom_row_height = std::min(m.bottom_row_height, p.reference_y);
+  int bottom_count = 0;
+  for (const auto& p : snap.particles) {
+    const double error = (p.sigma_yy - column.stress(p.reference_y, snap.time)) / scale;
+    sum += error * error;
+    m.largest_relative = std::max(m.largest_relative, std::abs(error));
+    m.largest_settlement = std::max(m.largest_settlement, p.reference_y - p.y);
+    if (std::abs(p.reference_y - m.bottom_row_height) < 1e-9) m.bottom_row_stress += p.sigma_yy, ++bottom_count;
+  }
+  m.rms_relative = std::sqrt(sum / snap.particles.size());
+  m.bottom_row_stress /= bottom_count;
+  m.bottom_row_exact = column.stress(m.bottom_row_height, snap.time);
+  m.exact_base = column.stress(0.0, snap.time);
+  return m;
+}
+
+struct RatioMeasures {
+  double expected = 0.0;           ///< nu / (1 - nu)
+  double mean = 0.0;               ///< mean of sigma_xx / sigma_yy over the particles used
+  double largest_deviation = 0.0;  ///< max |sigma_xx / sigma_yy - nu/(1-nu)| over them
+  int particles = 0;               ///< those below the top cell (Y < H - h), where sigma_yy is far from 0
+};
+
+/// Laterally confined column in plane strain: eps_xx = 0 gives sigma_xx / sigma_yy = lambda/(lambda + 2G) = nu/(1-nu).
+inline RatioMeasures measure_stress_ratio(const SoilResult& result, const SoilSnapshot& snap) {
+  RatioMeasures m;
+  const double nu = result.scene.poisson_ratio, top_cell = result.scene.length[1] - result.scene.spacing;
+  m.expected = nu / (1.0 - nu);
+  for (const auto& p : snap.particles) {
+    if (p.reference_y >= top_cell) continue;
+    const double ratio = p.sigma_xx / p.sigma_yy;
+    m.mean += ratio;
+    m.largest_deviation = std::max(m.largest_deviation, std::abs(ratio - m.expected));
+    ++m.particles;
+  }
+  m.mean /= m.particles;
+  return m;
+}
+
+}  // namespace verification
