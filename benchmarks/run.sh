@@ -5,7 +5,7 @@
 # particle_steps_per_second, speed relative to linear + the same integrator.
 set -euo pipefail
 build=${1:-build}
-root=$(cd "$(dirname "$0")/.. && pwd)
+root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=$root/$build/bin/mpm
 out=$root/results/bench
 mkdir -p "$out"
@@ -29,5 +29,18 @@ bench() {  # bench SCENE LABEL CELLS OVERRIDES...
 
 bench "$root/scenes/dyka_bar.toml" dyka_bar 40 --set grid.cells=[40]
 bench "$root/scenes/dyka_bar.toml" dyka_bar 640 --set grid.cells=[640]
+# 2D: the soil block at 1 m cells (400 particles, about 5800 steps to 20 s); a rigid row below the
+# base for every shape function, since uGIMP's support reaches below the base particles.
+bench "$root/scenes/soil_block.toml" soil_block 10x10 --set grid.cells=[10,10] --set grid.margin_min=[1,1] --set output.snapshots=[] --set output.every=100
 column -s, -t "$csv"
 echo "bench: wrote $csv"
+# Memory: the largest resident set of the biggest 1D run (5120 cells, 20 us), per shape function.
+memory=$out/memory.csv
+echo "shape,max_resident_kib" >"$memory"
+for shape in linear ugimp lme; do
+  kib=$(/usr/bin/time -f "%M" "$mpm" run "$root/scenes/dyka_bar.toml" --out "$out/runs/memory_$shape" \
+    --set grid.cells=[5120] --set "solver.shape=\"$shape\"" --set solver.end_time=2.0e-5 --set output.snapshots=[] 2>&1 >/dev/null | tail -1)
+  echo "$shape,$kib" >>"$memory"
+done
+column -s, -t "$memory"
+echo "bench: wrote $memory"
