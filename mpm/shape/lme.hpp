@@ -41,10 +41,10 @@ namespace mpm {
 
 struct LmeOptions {
   double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (spec 2.5: beta = gamma / h^2)
-  double support_tolerance = 1e-6;  ///< the prior \f$ e^{-\beta R^2} \f$ at the support radius R (A&O06; authors: 1e-5)
+  double support_tolerance = 1e-6;  ///< the prior \f$ e^{-\beta R^2} \f$ at the support radius R (A\&O06; authors: 1e-5)
   double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (spec 8.3)
   int max_iterations = 100;         ///< Newton updates of lambda per evaluation before ShapeFailure
-  /// grid_spacing: beta = gamma / h^2 (seed, A&O06). mean_neighbour_distance: beta = gamma / hbar^2,
+  /// grid_spacing: beta = gamma / h^2 (seed, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
   /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, spec 8.1). The
   /// neighbours are those within R = h sqrt(-ln(support_tolerance) / gamma) under both rules (with hbar in
   /// R the radius would feed on itself: hbar ~ 2R/3 in 2D makes R grow unless the patch is capped).
