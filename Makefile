@@ -8,7 +8,8 @@ deps:
 	@bash .ci/install-deps.sh
 
 build: deps
-	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > $(BUILD_DIR).configure.log 2>&1 || (cat $(BUILD_DIR).configure.log; exit 1)
+	@mkdir -p $(BUILD_DIR)
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > $(BUILD_DIR)/configure.log 2>&1 || (cat $(BUILD_DIR)/configure.log; exit 1)
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
 test: build
@@ -24,4 +25,4 @@ docs: deps
 	@doxygen paper/Doxyfile > /dev/null && echo "docs: wrote $(BUILD_DIR)/docs/html/index.html"
 
 clean:
-	@rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log runs
+	@rm -rf $(BUILD_DIR) runs results
