@@ -35,6 +35,9 @@ struct SoilResult {
   double reference_height = 0.0;       ///< Y of the observed particle
   double reference_x = 0.0;            ///< X of the observed particle
   std::vector<double> time, displacement;  ///< samples of u_y = y - Y of the observed particle
+  /// at the same samples: kinetic + strain energy, and the potential energy of full gravity,
+  /// sum_p m_p g (y_p - Y_p); their sum is conserved once the ramp is over (J per metre of thickness)
+  std::vector<double> kinetic_plus_strain, gravity_potential;
   std::vector<SoilSnapshot> snapshots;
   double particle_mass = 0.0;          ///< sum of m_p
   double largest_mass_mismatch = 0.0;  ///< max over samples of |sum_I m_I - sum_p m_p| / sum_p m_p
@@ -47,12 +50,17 @@ struct SoilResult {
 
 /// Records the observed particle, the snapshots and the nodal mass.
 struct SoilRecorder : mpm::Monitor<2> {
-  SoilRecorder(SoilResult& result_, int observed_, NodalMassProbe<2>& probe_)
-      : result(result_), observed(observed_), probe(probe_) {}
+  SoilRecorder(SoilResult& result_, int observed_, NodalMassProbe<2>& probe_, double gravity_)
+      : result(result_), observed(observed_), probe(probe_), gravity(gravity_) {}
 
   void sample(long, double t, const mpm::Particles<2>& particles, const mpm::Balances<2>& sums) override {
     result.time.push_back(t);
     result.displacement.push_back(particles.position[observed][1] - particles.reference_position[observed][1]);
+    double potential = 0.0;
+    for (int p = 0; p < particles.size(); ++p)
+      potential += particles.mass[p] * gravity * (particles.position[p][1] - particles.reference_position[p][1]);
+    result.kinetic_plus_strain.push_back(sums.total());
+    result.gravity_potential.push_back(potential);
     const double mismatch = std::abs(probe.total(particles) - sums.mass) / result.particle_mass;
     result.largest_mass_mismatch = std::max(result.largest_mass_mismatch, mismatch);
   }
@@ -70,6 +78,7 @@ struct SoilRecorder : mpm::Monitor<2> {
   SoilResult& result;
   int observed;
   NodalMassProbe<2>& probe;
+  double gravity;  ///< |g| at full strength, m/s^2
 };
 
 /// Runs the scene at `scene_path` with `overrides` (mpm run --set syntax). A SimulationFailure
@@ -87,7 +96,7 @@ inline SoilResult run_soil_case(const std::string& scene_path, const std::string
   result.reference_height = setup.particles.reference_position[observed][1];
   for (double m : setup.particles.mass) result.particle_mass += m;
   NodalMassProbe<2> probe(result.scene, setup);
-  SoilRecorder recorder(result, observed, probe);
+  SoilRecorder recorder(result, observed, probe, std::abs(result.scene.gravity[1]));
   const auto start = std::chrono::steady_clock::now();
   mpm::RunSummary summary;
   try {

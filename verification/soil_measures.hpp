@@ -2,6 +2,7 @@
 // static counterpart (mpm/exact/column_log_strain.hpp): the numbers the suite's figures, checks and
 // report are made of. The exact solutions take their parameters from the scene, never from the solver.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -45,6 +46,11 @@ struct SettlementMeasures {
   /// time average of u over the last four T1 of the run, all after the ramp: it removes the free
   /// oscillation about the static state (spec 5.2.2: +-2.3 mm) and leaves the static settlement
   double mean_settlement = std::numeric_limits<double>::quiet_NaN();
+  double swing = std::numeric_limits<double>::quiet_NaN();        ///< max - min of u over that window
+  double exact_swing = std::numeric_limits<double>::quiet_NaN();  ///< the same for u_exact
+  /// after the ramp (constant gravity) the mechanical energy E = kinetic + strain + gravity potential is
+  /// conserved: (max - min of E over t >= T/2) / (mean kinetic + strain energy there)
+  double energy_drift = std::numeric_limits<double>::quiet_NaN();
   double static_small_strain = 0.0;  ///< static u(Y), spec 7.2
   double static_log_strain = 0.0;    ///< static u(Y) at finite (logarithmic) strain
 };
@@ -60,16 +66,32 @@ inline SettlementMeasures measure_settlement(const SoilResult& result) {
   m.rms_error = mpm::rms_error(result.displacement, m.exact);
   m.static_small_strain = column.static_displacement(result.reference_height);
   m.static_log_strain = log_strain_column(result.scene).displacement(result.reference_height);
+  {
+    double lowest = INFINITY, highest = -INFINITY, strain = 0.0;
+    int count = 0;
+    for (size_t n = 0; n < result.time.size(); ++n) {
+      if (result.time[n] < 0.5 * result.scene.ramp_period) continue;
+      const double energy = result.kinetic_plus_strain[n] + result.gravity_potential[n];
+      lowest = std::min(lowest, energy), highest = std::max(highest, energy);
+      strain += result.kinetic_plus_strain[n], ++count;
+    }
+    if (count > 1) m.energy_drift = (highest - lowest) / (strain / count);
+  }
   const double end = result.scene.control.end_time, window_start = end - 4.0 * first_period(result.scene);
   if (!result.failed && window_start >= 0.5 * result.scene.ramp_period) {
     double area = 0.0, span = 0.0;  // trapezoid rule over the samples in the window
+    double lowest = INFINITY, highest = -INFINITY, exact_lowest = INFINITY, exact_highest = -INFINITY;
     for (size_t n = 1; n < result.time.size(); ++n) {
       if (result.time[n - 1] < window_start) continue;
       const double dt = result.time[n] - result.time[n - 1];
       area += 0.5 * dt * (result.displacement[n] + result.displacement[n - 1]);
       span += dt;
+      lowest = std::min(lowest, result.displacement[n]), highest = std::max(highest, result.displacement[n]);
+      exact_lowest = std::min(exact_lowest, m.exact[n]), exact_highest = std::max(exact_highest, m.exact[n]);
     }
     m.mean_settlement = area / span;
+    m.swing = highest - lowest;
+    m.exact_swing = exact_highest - exact_lowest;
   }
   return m;
 }
@@ -130,5 +152,11 @@ inline RatioMeasures measure_stress_ratio(const SoilResult& result, const SoilSn
   m.mean /= m.particles;
   return m;
 }
+
+/// A finished case with its settlement measures.
+struct SoilOutcome {
+  SoilResult result;
+  SettlementMeasures settlement;
+};
 
 }  // namespace verification

@@ -1,0 +1,34 @@
+# Beyond the paper: the soil block on 2, 1 and 0.5 m cells (2 x 2 particles per cell, NPC), errors of the
+# top particle's settlement. Left: RMS of u - u_exact over 0-20 s and |u - u_exact| at 20 s against the
+# small-strain exact column (spec 7.2), with the gap between the small- and finite-strain static columns.
+# Right: |mean settlement after the ramp - finite-strain static settlement| (mpm/exact/column_log_strain.hpp).
+# Runs that failed (completed = 0) are left out.
+# gnuplot -e "data='DATA_DIR'; out='.../soil_refinement'" soil_refinement.gp   (writes out.png and out.pdf)
+set datafile separator ","
+methods = "linear ugimp lme0.8 lme3"
+labels = "'linear (Q4)' 'uGIMP' 'LME {/Symbol g} = 0.8' 'LME {/Symbol g} = 3'"
+colours = "#2ca02c #9467bd #1f77b4 #d62728"
+file(m) = data."/soil_refinement_".word(methods, m).".csv"
+set logscale xy
+set xrange [0.4:2.5]
+set xtics ("0.5" 0.5, "1" 1, "2" 2)
+set xlabel "cell size h (m)"
+set grid
+set key bottom left font ",9"
+do for [format in "png pdf"] {
+  if (format eq "png") { set terminal pngcairo size 1200,500 font ",11" } else { set terminal pdfcairo size 8in,3.3in font ",8" }
+  set output out.".".format
+  set multiplot layout 1,2 title "Soil block, grid refinement (NPC, CFL 0.1)"
+  set title "against the small-strain exact column"
+  set ylabel "error of u_y (m)"
+  set yrange [2e-4:0.5]
+  plot for [m = 1:4] file(m) using ($6 == 1 ? $1 : NaN):2 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) title word(labels, m)." RMS", \
+       for [m = 1:4] file(m) using ($6 == 1 ? $1 : NaN):3 with linespoints lw 1.5 dt 2 pt 6 lc rgb word(colours, m) title word(labels, m)." at 20 s", \
+       file(4) using 1:5 with lines lw 2 lc rgb "black" dt 3 title "small- vs finite-strain static gap"
+  set title "against the finite-strain static column (mean after the ramp)"
+  set ylabel "|mean u_y - u_{finite strain}| (m)"
+  set key top left
+  set yrange [3e-5:0.3]
+  plot for [m = 1:4] file(m) using ($6 == 1 ? $1 : NaN):4 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) title word(labels, m)
+  unset multiplot
+}

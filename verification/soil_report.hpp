@@ -1,0 +1,243 @@
+// The soil block's report fragment (Markdown): for each figure the paper's claims (spec 6) and the
+// bounds of the theory, the numbers we measured, and whether each holds. Hard claims (theory bounds)
+// decide the suite's exit status; the paper's claims are reported, with numbers, never tuned away.
+#pragma once
+#include <cmath>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "verification/claims.hpp"
+#include "verification/soil_measures.hpp"
+
+namespace verification {
+
+using SoilLookup = std::function<const SoilOutcome&(const std::string&)>;
+
+/// Settlement tolerance against the small-strain exact column: the solver is updated Lagrangian and
+/// converges to the finite-strain column (mpm/exact/column_log_strain.hpp), which settles aH/3 = 3.8 %
+/// less at the top; the 2 m grid adds about 1 % (measured on the refinement). Hence 5 %.
+constexpr double settlement_tolerance = 0.05;
+/// Stress tolerance, RMS over the particles of (sigma_yy - sigma_exact(Y)) / (rho g(t) H): with 2 m cells
+/// the strain is about constant per cell (linear-like shapes), which puts the particles at the quarter
+/// points h/4 = 0.5 m off the cell-mean stress by rho g h / 4, i.e. h/(4H) = 5 % of rho g H; 50 % more
+/// for the rest of the discretisation and the free oscillation after the ramp: 7.5 %.
+constexpr double stress_tolerance = 0.075;
+/// sigma_xx / sigma_yy = nu/(1-nu) holds exactly wherever eps_xx = 0, i.e. when the walls hold v_x = 0;
+/// the tolerance (absolute, on the ratio 0.4286) leaves room for round-off and the Newton tolerance only.
+constexpr double ratio_tolerance = 1e-3;
+/// Eq. (13) lumped with shape functions that sum to one: the nodal and particle masses agree to round-off.
+constexpr double mass_tolerance = 1e-10;
+
+inline std::string metres(double value) { return number(value, "%.4f") + " m"; }
+inline std::string percent(double value) { return number(100.0 * value, "%.1f") + " %"; }
+inline std::string kilopascals(double value) { return number(value / 1e3, "%.1f") + " kPa"; }
+
+inline std::string method_label(const std::string& method) {
+  if (method == "linear") return "linear (Q4)";
+  if (method == "ugimp") return "uGIMP";
+  if (method == "lme0.8") return "LME gamma = 0.8";
+  return "LME gamma = 3";
+}
+
+inline std::string run_name(const std::string& method, const std::string& integrator, double h) {
+  return method + "_" + integrator + "_h" + number(h, "%g");
+}
+
+/// Fig. 12: sigma_yy of the LME gamma = 3, NPC run at t = 0, 5 and 20 s.
+inline std::vector<Claim> fig12_claims(const SoilOutcome& paper) {
+  std::vector<Claim> claims;
+  const auto& snaps = paper.result.snapshots;
+  if (snaps.size() != 3) return {{"Fig. 12: snapshots at t = 0, 5 and 20 s", "missing (run failed?)", false, true}};
+  double largest_initial = 0.0;
+  for (const auto& p : snaps[0].particles) largest_initial = std::max(largest_initial, std::abs(p.sigma_yy));
+  claims.push_back({"t = 0: sigma_yy = 0 (the initial state)", "largest magnitude " + number(largest_initial) + " Pa",
+                    largest_initial == 0.0, false});
+  const auto& scene = paper.result.scene;
+  for (int k : {1, 2}) {
+    const auto m = measure_stress(paper.result, snaps[k]);
+    const double load = exact_column(scene).gravity_at(snaps[k].time) / std::abs(scene.gravity[1]);
+    const bool end = k == 2;
+    claims.push_back(
+        {"t = " + number(snaps[k].time, "%g") + " s: sigma_yy = " + (end ? "-rho g (H - y), -0.589 MPa" : "-rho g (H - y)/2, -0.29 MPa") +
+             " at the base; particles within RMS " + percent(stress_tolerance) + " of rho g(t) H of the exact sigma_yy(Y, t)",
+         "RMS " + percent(m.rms_relative / load) + ", largest " + percent(m.largest_relative / load) + "; bottom row (Y = " +
+             number(m.bottom_row_height, "%g") + " m): " + kilopascals(m.bottom_row_stress) + ", exact " + kilopascals(m.bottom_row_exact) +
+             "; exact at the base " + kilopascals(m.exact_base),
+         m.rms_relative / load <= stress_tolerance, end});
+  }
+  const auto last = measure_stress(paper.result, snaps[2]);
+  claims.push_back({"particles move down by up to 0.59 m (within " + percent(settlement_tolerance) + ")",
+                    "largest settlement at t = 20 s: " + metres(last.largest_settlement) + " (top row, Y = " +
+                        number(paper.result.reference_height, "%g") + " m; exact small strain " +
+                        metres(-paper.settlement.exact_final) + ", finite strain static " + metres(-paper.settlement.static_log_strain) + ")",
+                    std::abs(last.largest_settlement - 0.589) <= settlement_tolerance * 0.589, false});
+  return claims;
+}
+
+/// Fig. 13: the settlement history of each shape function with NPC and FE.
+inline std::vector<Claim> fig13_claims(const SoilLookup& get, const std::vector<std::string>& methods) {
+  std::vector<Claim> claims;
+  for (const auto& method : methods) {
+    const auto& npc = get(run_name(method, "npc", 2.0));
+    const auto& fe = get(run_name(method, "fe", 2.0));
+    const double scale = std::abs(npc.settlement.static_small_strain);
+    const bool agree = !npc.result.failed && !fe.result.failed && npc.settlement.rms_error <= settlement_tolerance * scale &&
+                       fe.settlement.rms_error <= settlement_tolerance * scale;
+    claims.push_back({method_label(method) + ": u_y(t) agrees with the exact solution (RMS over 0-20 s within " +
+                          percent(settlement_tolerance) + " of the static settlement)",
+                      "RMS " + metres(npc.settlement.rms_error) + " NPC, " + metres(fe.settlement.rms_error) + " FE (" +
+                          percent(npc.settlement.rms_error / scale) + ", " + percent(fe.settlement.rms_error / scale) + ")",
+                      agree, false});
+    const double mean_npc = npc.settlement.mean_settlement, mean_fe = fe.settlement.mean_settlement;
+    const bool settles = std::abs(mean_npc / npc.settlement.static_small_strain - 1.0) <= settlement_tolerance &&
+                         std::abs(mean_fe / fe.settlement.static_small_strain - 1.0) <= settlement_tolerance;
+    claims.push_back({method_label(method) + ": after the ramp it settles at the static value " +
+                          metres(npc.settlement.static_small_strain) + " (mean over the last 4 T1, within " +
+                          percent(settlement_tolerance) + ")",
+                      metres(mean_npc) + " NPC, " + metres(mean_fe) + " FE", settles, false});
+    claims.push_back({method_label(method) + ": after the ramp (constant gravity, no dissipation in the model) the mechanical energy, "
+                          "kinetic + strain + gravity potential, stays constant within 1 % of the strain energy",
+                      "max - min: " + percent(npc.settlement.energy_drift) + " NPC, " + percent(fe.settlement.energy_drift) + " FE",
+                      npc.settlement.energy_drift <= 0.01 && fe.settlement.energy_drift <= 0.01, false});
+  }
+  const auto& paper = get(run_name("lme3", "npc", 2.0));
+  const double error = paper.settlement.final_error, exact = paper.settlement.exact_final;
+  claims.push_back({"LME gamma = 3, NPC: settlement at t = 20 s within " + percent(settlement_tolerance) + " of the exact one",
+                    metres(paper.settlement.final_displacement) + " against " + metres(exact) + ": error " + percent(std::abs(error / exact)),
+                    !paper.result.failed && std::abs(error) <= settlement_tolerance * std::abs(exact), true});
+  return claims;
+}
+
+/// Beyond the paper: the 2, 1 and 0.5 m grids, against both references.
+inline std::vector<Claim> refinement_claims(const SoilLookup& get, const std::vector<std::string>& methods,
+                                            const std::vector<double>& sizes) {
+  std::vector<Claim> claims;
+  for (const auto& method : methods) {
+    std::string measured;
+    bool decreasing = true, completed = true;
+    double previous = INFINITY, last = 0.0;
+    for (double h : sizes) {
+      const auto& o = get(run_name(method, "npc", h));
+      measured += std::string(measured.empty() ? "" : "; ") + "h = " + number(h, "%g") + " m: ";
+      if (o.result.failed) {
+        completed = false;
+        measured += "failed (" + o.result.failure + ")";
+        continue;
+      }
+      const double gap = std::abs(o.settlement.mean_settlement - o.settlement.static_log_strain);
+      measured += metres(gap);
+      decreasing = decreasing && gap < previous;
+      previous = last = gap;
+    }
+    const double reference = std::abs(get(run_name(method, "npc", sizes.back())).settlement.static_log_strain);
+    const bool small = completed && last <= 0.01 * reference;
+    const bool hard = method == "lme3";
+    claims.push_back({method_label(method) + ": the mean settlement after the ramp converges to the finite-strain column" +
+                          (hard ? " (decreasing at every refinement, below 1 % at the finest grid)" : " (below 1 % at the finest grid)"),
+                      measured, hard ? small && decreasing : small, hard});
+  }
+  return claims;
+}
+
+/// Beyond the paper: nu = 0.3 with lateral rollers, against the column with the constrained modulus M.
+inline std::vector<Claim> poisson_claims(const SoilOutcome& rollers, const SoilOutcome& margins) {
+  std::vector<Claim> claims;
+  if (rollers.result.snapshots.empty() || margins.result.snapshots.empty())
+    return {{"nu = 0.3: sigma_xx / sigma_yy = nu/(1-nu)", "no snapshot at t = 20 s (run failed?)", false, true}};
+  const auto ratio = measure_stress_ratio(rollers.result, rollers.result.snapshots.back());
+  claims.push_back({"nu = 0.3, t = 20 s: sigma_xx / sigma_yy = nu/(1-nu) = " + number(ratio.expected, "%.5f") +
+                        " on the particles below the top cell (within " + number(ratio_tolerance, "%g") + ")",
+                    "mean " + number(ratio.mean, "%.6f") + ", largest deviation " + number(ratio.largest_deviation, "%.2e") +
+                        " over " + std::to_string(ratio.particles) + " particles",
+                    ratio.largest_deviation <= ratio_tolerance, true});
+  const auto& s = rollers.settlement;
+  claims.push_back({"nu = 0.3: settlement at t = 20 s within " + percent(settlement_tolerance) +
+                        " of the exact column with M = E(1-nu)/((1+nu)(1-2nu))",
+                    metres(s.final_displacement) + " against " + metres(s.exact_final) + " (" + percent(std::abs(s.final_error / s.exact_final)) +
+                        "); mean after the ramp " + metres(s.mean_settlement) + ", finite-strain static " + metres(s.static_log_strain),
+                    !rollers.result.failed && std::abs(s.final_error) <= settlement_tolerance * std::abs(s.exact_final), false});
+  const auto walled = measure_stress_ratio(margins.result, margins.result.snapshots.back());
+  claims.push_back({"nu = 0.3 with rigid margin rows behind the walls (as uGIMP needs): LME still gives sigma_xx / sigma_yy = "
+                    "nu/(1-nu) within " + number(ratio_tolerance, "%g"),
+                    "largest deviation " + number(walled.largest_deviation, "%.2e") + " (mean " + number(walled.mean, "%.5f") + ")",
+                    walled.largest_deviation <= ratio_tolerance, false});
+  return claims;
+}
+
+/// Beyond the paper: what a rigid margin row below the base does to LME, and the free sides.
+inline std::vector<Claim> boundary_claims(const SoilLookup& get) {
+  std::vector<Claim> claims;
+  for (const std::string method : {"lme0.8", "lme3"}) {
+    const auto& walled = get(run_name(method, "npc", 2.0) + "_wall_margins");
+    const auto& plain = get(run_name(method, "npc", 2.0));
+    const auto& s = walled.settlement;
+    std::string stress = "no snapshot at t = 20 s";
+    if (walled.result.snapshots.size() == 3) {
+      const auto m = measure_stress(walled.result, walled.result.snapshots.back());
+      stress = "sigma_yy RMS " + percent(m.rms_relative) + " of rho g H, bottom row " + kilopascals(m.bottom_row_stress) + " (exact " +
+               kilopascals(m.bottom_row_exact) + ")";
+    }
+    claims.push_back({method_label(method) + " with rigid margin rows behind the walls and below the base: settlement at t = 20 s within " +
+                          percent(settlement_tolerance) + " of the exact one",
+                      metres(s.final_displacement) + " against " + metres(s.exact_final) + " (" + percent(std::abs(s.final_error / s.exact_final)) +
+                          "); without the rows " + metres(plain.settlement.final_displacement) + "; " + stress,
+                      !walled.result.failed && std::abs(s.final_error) <= settlement_tolerance * std::abs(s.exact_final), false});
+  }
+  const auto& free_sides = get("lme3_npc_h2_free_sides");
+  const auto& rollers = get("lme3_npc_h2");
+  double largest = 0.0;
+  for (size_t n = 0; n < std::min(free_sides.result.time.size(), rollers.result.time.size()); ++n)
+    largest = std::max(largest, std::abs(free_sides.result.displacement[n] - rollers.result.displacement[n]));
+  claims.push_back({"nu = 0: free sides and lateral rollers give the same settlement (within 1 mm; nothing pushes sideways)",
+                    "largest difference over 0-20 s: " + number(largest, "%.2e") + " m",
+                    !free_sides.result.failed && largest <= 1e-3, false});
+  return claims;
+}
+
+/// Beyond the paper: the Courant number of Eq. (42) uses sqrt(E/rho), slower than the P-wave speed
+/// sqrt(M/rho) when nu > 0, so the largest stable CFL should fall by sqrt(E/M) (0.862 for nu = 0.3).
+inline std::vector<Claim> stability_claims(const SoilLookup& get, const SoilOutcome& poisson, const std::vector<double>& cfls,
+                                           const std::function<std::string(double, double)>& sweep_name) {
+  std::vector<Claim> claims;
+  const double ratio = std::sqrt(constrained_modulus(poisson.result.scene) / poisson.result.scene.young_modulus);
+  claims.push_back({"nu = 0.3 at CFL 0.1 (Eq. 42 with sqrt(E/rho)) is stable: the P-wave Courant number is only 0.1 sqrt(M/E) = " +
+                        number(0.1 * ratio, "%.3f"),
+                    poisson.result.failed ? poisson.result.failure : "completed 20 s, " + std::to_string(poisson.result.steps) + " steps",
+                    !poisson.result.failed, false});
+  double largest_stable[2] = {0.0, 0.0};
+  for (int k = 0; k < 2; ++k) {
+    const double nu = k == 0 ? 0.0 : 0.3;
+    for (double cfl : cfls) {
+      if (get(sweep_name(nu, cfl)).result.failed) break;
+      largest_stable[k] = cfl;
+    }
+  }
+  const double step = cfls[1] - cfls[0];
+  const bool within = std::abs(largest_stable[1] * ratio - largest_stable[0]) <= step * ratio + 1e-12;
+  claims.push_back({"the largest stable CFL of Eq. (42) falls by sqrt(E/M) = " + number(1.0 / ratio, "%.3f") +
+                        " from nu = 0 to nu = 0.3 (the same P-wave Courant number; within one step of the sweep, " + number(step, "%g") + ")",
+                    "largest CFL completing 20 s: " + number(largest_stable[0], "%g") + " (nu = 0), " + number(largest_stable[1], "%g") +
+                        " (nu = 0.3), i.e. P-wave Courant numbers " + number(largest_stable[0], "%.3g") + " and " +
+                        number(largest_stable[1] * ratio, "%.3g"),
+                    within, false});
+  return claims;
+}
+
+/// The run-level hard checks: the runs of Figs. 12-13 complete, and the nodal mass is the particle mass.
+inline std::vector<Claim> run_claims(const std::vector<const SoilOutcome*>& paper_runs, const std::vector<const SoilOutcome*>& all_runs) {
+  std::string failures;
+  for (const auto* o : paper_runs)
+    if (o->result.failed) failures += o->result.name + ": " + o->result.failure + "; ";
+  double largest = 0.0;
+  std::string worst;
+  for (const auto* o : all_runs)
+    if (o->result.largest_mass_mismatch >= largest) largest = o->result.largest_mass_mismatch, worst = o->result.name;
+  return {{"every run of Figs. 12-13, nu = 0.3 and free sides completes 20 s: no particle leaves the grid, no NaN, no unbounded energy growth",
+           failures.empty() ? std::to_string(paper_runs.size()) + " runs completed" : failures, failures.empty(), true},
+          {"mass: at every sample of every run, sum_I m_I = sum_p m_p (Eq. 13 lumped) within " + number(mass_tolerance, "%g") + " relative",
+           "largest mismatch " + number(largest, "%.2e") + " (" + worst + ")", largest <= mass_tolerance, true}};
+}
+
+}  // namespace verification
