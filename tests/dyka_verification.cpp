@@ -11,9 +11,10 @@
 namespace {
 
 verification::DykaResult dyka(const std::string& shape, const std::string& integrator, int cells, double cfl = 0.5) {
-  return verification::run_dyka(mpm::testing::source_path("scenes/dyka_bar.toml"), shape + "_" + integrator,
-                                {"grid.cells=[" + std::to_string(cells) + "]", "solver.shape=\"" + shape + "\"",
-                                 "solver.integrator=\"" + integrator + "\"", "solver.cfl=" + std::to_string(cfl), "output.snapshots=[]"});
+  std::vector<std::string> overrides = verification::shape_settings(shape);
+  overrides.insert(overrides.end(), {"grid.cells=[" + std::to_string(cells) + "]", "solver.integrator=\"" + integrator + "\"",
+                                     "solver.cfl=" + std::to_string(cfl), "output.snapshots=[]"});
+  return verification::run_dyka(mpm::testing::source_path("scenes/dyka_bar.toml"), shape + "_" + integrator, overrides);
 }
 
 }  // namespace

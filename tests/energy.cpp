@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include "tests/support.hpp"
+#include "verification/dyka_case.hpp"
 
 namespace {
 
@@ -22,9 +23,9 @@ struct EnergyHistory {
 };
 
 EnergyHistory energy_over_ten_periods(const std::string& shape, const std::string& integrator) {
-  const auto scene = mpm::load_scene(mpm::testing::source_path("scenes/dyka_bar.toml"),
-                                     {"solver.shape=\"" + shape + "\"", "solver.integrator=\"" + integrator + "\"",
-                                      "solver.end_time=1.0551e-3", "output.snapshots=[]"});
+  std::vector<std::string> overrides = verification::shape_settings(shape);
+  overrides.insert(overrides.end(), {"solver.integrator=\"" + integrator + "\"", "solver.end_time=1.0551e-3", "output.snapshots=[]"});
+  const auto scene = mpm::load_scene(mpm::testing::source_path("scenes/dyka_bar.toml"), overrides);
   const auto setup = mpm::build_setup<1>(scene);
   mpm::testing::Recorder<1> recorder(0);
   mpm::run_setup<1>(scene, setup, recorder);

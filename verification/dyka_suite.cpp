@@ -51,10 +51,12 @@ std::vector<CaseSpec> all_cases() {
       for (const auto& integrator : integrators)
         // room beyond the free end: 4 cells, and 1% of the bar more on fine meshes, where grid
         // crossing can set the end particle adrift (spec 5.1.2)
-        cases.push_back({sweep_name(shape, integrator, cells),
-                         {"grid.cells=[" + std::to_string(cells) + "]", "grid.margin_min=[" + std::to_string(4 + cells / 100) + "]",
-                          "solver.shape=\"" + shape + "\"", "solver.integrator=\"" + integrator + "\"", "solver.lme_gamma=3.0",
-                          "output.snapshots=[]"}});
+      {
+        std::vector<std::string> overrides = verification::shape_settings(shape);
+        overrides.insert(overrides.end(), {"grid.cells=[" + std::to_string(cells) + "]", "grid.margin_min=[" + std::to_string(4 + cells / 100) + "]",
+                                           "solver.integrator=\"" + integrator + "\"", "solver.lme_gamma=3.0", "output.snapshots=[]"});
+        cases.push_back({sweep_name(shape, integrator, cells), overrides});
+      }
   for (const auto& integrator : integrators)
     for (double gamma : gammas) {
       std::ostringstream value;
