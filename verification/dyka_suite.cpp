@@ -11,16 +11,15 @@
 #include <gsl/gsl_fit.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <map>
 #include <sstream>
-#include <thread>
 
 #include "verification/dyka_case.hpp"
+#include "verification/parallel.hpp"
 
 namespace {
 
@@ -124,17 +123,10 @@ int main(int argc, char** argv) {
   const std::string folder = argv[1], report_path = argv[2], scene = argv[3];
   const auto cases = all_cases();
   std::vector<verification::DykaResult> results(cases.size());
-  std::atomic<size_t> next{0};
-  auto worker = [&] {
-    for (size_t k; (k = next++) < cases.size();) {
-      results[k] = verification::run_dyka(scene, cases[k].name, cases[k].overrides);
-      verification::write_series(results[k], folder + "/" + cases[k].name + ".csv");
-    }
-  };
-  std::vector<std::thread> threads;
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  for (unsigned t = 0; t < cores; ++t) threads.emplace_back(worker);
-  for (auto& thread : threads) thread.join();
+  verification::run_in_parallel(cases.size(), [&](size_t k) {
+    results[k] = verification::run_dyka(scene, cases[k].name, cases[k].overrides);
+    verification::write_series(results[k], folder + "/" + cases[k].name + ".csv");
+  });
   std::map<std::string, const verification::DykaResult*> by_name;
   for (const auto& result : results) by_name[result.name] = &result;
   auto result = [&](const std::string& name) -> const verification::DykaResult& { return *by_name.at(name); };

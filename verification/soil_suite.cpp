@@ -5,14 +5,13 @@
 //
 //   build/bin/soil_suite DATA_DIR REPORT SCENES_DIR
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <thread>
 
+#include "verification/parallel.hpp"
 #include "verification/claims.hpp"
 #include "verification/soil_data.hpp"
 #include "verification/soil_report.hpp"
@@ -195,17 +194,10 @@ int main(int argc, char** argv) {
     }
   }
   std::vector<Outcome> outcomes(cases.size());
-  std::atomic<size_t> next{0};
-  auto worker = [&] {
-    for (size_t k; (k = next++) < cases.size();) {
-      outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides);
-      outcomes[k].settlement = verification::measure_settlement(outcomes[k].result);
-    }
-  };
-  std::vector<std::thread> threads;
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  for (unsigned t = 0; t < cores; ++t) threads.emplace_back(worker);
-  for (auto& thread : threads) thread.join();
+  const unsigned cores = verification::run_in_parallel(cases.size(), [&](size_t k) {
+    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides);
+    outcomes[k].settlement = verification::measure_settlement(outcomes[k].result);
+  });
   std::map<std::string, const Outcome*> by_name;
   for (const auto& outcome : outcomes) by_name[outcome.result.name] = &outcome;
   const verification::SoilLookup get = [&](const std::string& name) -> const Outcome& { return *by_name.at(name); };

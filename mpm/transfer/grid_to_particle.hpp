@@ -25,7 +25,7 @@ enum class EulerPositionVelocity {
   start     ///< the literal Eqs. (20)-(21): v_I^k = p_I^k / m_I
 };
 
-/// Eqs. (19)-(22), forward Euler in momentum form:
+/// Eqs. (19)-(22), forward Euler in momentum form (Eq. (19) and Eq. (20) in velocities, Eq. (21) and Eq. (22) in momenta):
 /// \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \sum_I N_{Ip} \mathbf f_I / m_I \f$ and
 /// \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf p_I / m_I \f$.
 /// Expects nodal_velocity = v_I^k and nodal_momentum = p_I^{k+1} (after update_nodal_momentum).
@@ -54,7 +54,9 @@ enum class NewmarkPositionVelocity {
   projected   ///< the literal Eq. (33): v_I^k = sum_p N_Ip m_p v_p^k / m_I
 };
 
-/// Eqs. (31)-(33), the particle update of the predictor-corrector:
+/// Eqs. (31)-(33), the particle update of the predictor-corrector. Eq. (32) increments v_p with the
+/// new acceleration only, not the Newmark average of Eq. (23) (spec 3.1.3b): a first-order,
+/// dissipative choice (tests/energy.cpp measures it).
 /// \f[ \mathbf a_p^{k+1} = \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
 ///     \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
 ///     \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I + \tfrac12 \Delta t^2 \sum_I N_{Ip} \frac{\mathbf f_I}{m_I} \f]

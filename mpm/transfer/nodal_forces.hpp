@@ -1,6 +1,15 @@
 /// \file
 /// Nodal forces: the internal force of the stresses and the external body force.
 ///
+/// They come from the weak form of the balance of momentum, Eq. (2)
+/// \f$ \rho\, D\mathbf v/Dt = \nabla\cdot\boldsymbol\sigma + \rho\mathbf b \f$: Eq. (7),
+/// \f$ \int_\Omega \rho(\dot{\mathbf v} - \mathbf b)\cdot\mathbf u^\psi = \int_{\Gamma_t} \mathbf t\cdot\mathbf u^\psi - \int_\Omega \boldsymbol\sigma : \boldsymbol\varepsilon^\psi \f$,
+/// with test functions that vanish on the Dirichlet boundary, Eq. (5), and are square integrable
+/// with their strains, Eq. (6). The particles are the quadrature points: Eq. (8) turns the inertia
+/// term into \f$ \sum_p m_p \mathbf a_p\cdot\mathbf u^\psi_p \f$ (the lumped mass, Eq. 13), Eq. (9) the stress
+/// term into \f$ \sum_p V_p \boldsymbol\sigma_p : \boldsymbol\varepsilon^\psi_p \f$ (Eq. 14) and Eq. (10) the body
+/// force into \f$ \sum_p m_p \mathbf b\cdot\mathbf u^\psi_p \f$ (Eq. 15).
+///
 /// Contract: read the particles' m_p, rho_p, sigma_p and the stencils; add into nodal_force.
 #pragma once
 #include <doctest/doctest.h>

@@ -38,7 +38,9 @@ void nodal_velocity_from_momentum(GridFields<Dim>& grid) {
                                     : Vector<Dim>::Zero();
 }
 
-/// Eqs. (27)-(29), the Newmark velocity predictor built by mass-weighted projection:
+/// Eqs. (27)-(29), the Newmark velocity predictor built by mass-weighted projection: Eq. (26)'s
+/// \f$ \mathbf v_I^k + (1-\gamma)\Delta t\, \mathbf a_I^k \f$ with both nodal terms projected from the particles
+/// by Eq. (27), which is Eq. (28), gathered into
 /// \f[ \mathbf v_I^{pred} = \frac{1}{m_I}\sum_p N_{Ip}\, m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) \f]
 /// Also leaves \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p^k \f$ in nodal_momentum (the projected
 /// velocity p_I/m_I of the literal reading of Eq. (33)).

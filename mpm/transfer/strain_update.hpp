@@ -2,6 +2,12 @@
 /// Particle state from the nodal velocities: strain rate, strain, density, stress (Algorithm
 /// steps 4-5, the "update stress first" order of both integrators).
 ///
+/// The small-strain kinematics of Eq. (1), \f$ \boldsymbol\varepsilon = \nabla^s \mathbf u \f$, are
+/// integrated in time from the velocity gradient (Eq. 16) rather than from displacements, and mass
+/// conservation, Eq. (4), \f$ \dot\rho + \rho\,\nabla\cdot\mathbf v = 0 \f$, becomes the density update Eq. (17).
+/// Integrated on the moving particles, the strain is in effect a logarithmic (finite) strain: the
+/// soil block's settlement converges to the finite-strain column, not the small-strain one (report).
+///
 /// Contract: read nodal_velocity and the stencils; write the particles' epsilon_p, rho_p, sigma_p.
 #pragma once
 #include <doctest/doctest.h>
