@@ -31,7 +31,15 @@ g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability
 
 # The stability map's section of the report.
 {
+  echo "### Speed against accuracy (\`dyka_work_precision\`)"
+  echo
+  echo "![dyka_work_precision](figures/dyka_work_precision.png)"
+  echo
+  echo "RMS of v_A against the wall time of each run of the mesh sweep (points left to right: 10 to 5120 cells), measured with two runs at a time on 2 cores."
+  echo
   echo "### Where methods fail: the largest stable CFL (\`dyka_stability\`)"
+  echo
+  echo "![dyka_stability](figures/dyka_stability.png)"
   echo
   echo "Bisection on the exit code of \`mpm run\` (0: bounded to 200 µs; 3: stopped by the solver's own diagnosis), 40 cells."
   echo

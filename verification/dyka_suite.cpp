@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
       }
 
   // --- Claims and checks ---------------------------------------------------------------------
-  std::vector<std::pair<std::string, std::vector<Claim>>> sections;
+  std::vector<std::pair<std::string, std::vector<Claim>>> sections;  // title, claims; figures named in `title`
   bool hard_failure = false;
   auto add = [&](std::vector<Claim>& list, Claim claim) {
     if (claim.hard && !claim.holds) hard_failure = true;
@@ -309,7 +309,12 @@ int main(int argc, char** argv) {
          << "Scene `scenes/dyka_bar.toml`; error = Eq. (43) over every step of v_A against the exact solution (appendix A) "
             "at particle A's reference position; 1 particle per cell, CFL 0.5, 200 µs; RMS divided by |v0| = 5 m/s.\n\n";
   for (const auto& [title, list] : sections) {
-    report << "### " << title << "\n\n| claim | measured | verdict |\n|---|---|---|\n";
+    report << "### " << title << "\n\n";
+    for (size_t at = title.find('`'); at != std::string::npos; at = title.find('`', title.find('`', at + 1) + 1)) {
+      const std::string figure = title.substr(at + 1, title.find('`', at + 1) - at - 1);
+      report << "![" << figure << "](figures/" << figure << ".png)\n\n";
+    }
+    report << "| claim | measured | verdict |\n|---|---|---|\n";
     for (const auto& claim : list) report << "| " << claim.claim << " | " << claim.measured << " | " << verdict(claim) << " |\n";
     report << "\n";
   }

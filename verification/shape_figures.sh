@@ -43,6 +43,10 @@ d08=$(distance lme_0.8) d18=$(distance lme_1.8) d4=$(distance lme_4)
 {
   echo "## Shape functions (Fig. 4: \`shapes_fig4\`, \`shapes_fig4_1d\`)"
   echo
+  echo "![shapes_fig4](figures/shapes_fig4.png)"
+  echo
+  echo "![shapes_fig4_1d](figures/shapes_fig4_1d.png)"
+  echo
   echo "| claim | measured | verdict |"
   echo "|---|---|---|"
   echo -e "${unity_report%\\n}" | sed 's/^| \(.*\) | \(.*\) | \(.*\) |$/| Bound: partition of unity, sum_I N_I = 1 to 1e-9: \1 | largest |sum N - 1| = \2 | \3 |/'
