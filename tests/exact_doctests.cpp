@@ -2,3 +2,5 @@
 // code with the solver they check.
 #include "mpm/exact/bar.hpp"
 #include "mpm/exact/column.hpp"
+#include "mpm/exact/vibrating_bar.hpp"
+#include "mpm/exact/vibrating_bar_finite_strain.hpp"
