@@ -4,3 +4,4 @@
 #include "mpm/exact/column.hpp"
 #include "mpm/exact/vibrating_bar.hpp"
 #include "mpm/exact/vibrating_bar_finite_strain.hpp"
+#include "mpm/exact/manufactured.hpp"
