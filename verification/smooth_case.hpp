@@ -1,0 +1,145 @@
+// One case of the smooth-data suite: the vibrating bar (scenes/vibrating_bar.toml) run in-process
+// with overrides, its particles compared at fixed times with the exact first mode
+// (mpm/exact/vibrating_bar.hpp) or, at large amplitude, with the finite-strain reference
+// (mpm/exact/vibrating_bar_finite_strain.hpp).
+#pragma once
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "mpm/exact/vibrating_bar.hpp"
+#include "mpm/exact/vibrating_bar_finite_strain.hpp"
+#include "mpm/run.hpp"
+#include "verification/dyka_case.hpp"
+
+namespace verification {
+
+/// What a case measured: RMS errors over the particles and the sample times, normalised.
+struct SmoothResult {
+  double velocity_error = std::numeric_limits<double>::quiet_NaN();  ///< RMS(v_p - v) / velocity scale
+  double stress_error = std::numeric_limits<double>::quiet_NaN();    ///< RMS(sigma_p - sigma) / stress scale
+  double energy_ratio = std::numeric_limits<double>::quiet_NaN();    ///< (kinetic + strain) at the end / at t = 0
+  double wall_seconds = 0.0;
+  long steps = 0;
+  int particles = 0;
+  bool failed = false;
+  std::string failure;
+};
+
+/// The fraction of the period T at which the bar's particles are compared: T/4, T/2, 3T/4, T.
+inline const std::vector<double>& bar_sample_fractions() {
+  static const std::vector<double> fractions{0.25, 0.5, 0.75, 1.0};
+  return fractions;
+}
+
+/// Accumulates the squared errors of every particle at every snapshot, and the energies.
+template <int Dim, class Exact>
+struct ErrorMonitor : mpm::Monitor<Dim> {
+  explicit ErrorMonitor(Exact exact_solution) : exact(std::move(exact_solution)) {}
+  void sample(long step, double, const mpm::Particles<Dim>&, const mpm::Balances<Dim>& balances) override {
+    if (step == 0) initial_energy = balances.total();
+    final_energy = balances.total();
+  }
+  void snapshot(int index, double time, const mpm::Particles<Dim>& particles) override {
+    for (int p = 0; p < particles.size(); ++p) {
+      const auto [velocity_error, stress_error] = exact(particles, p, index, time);
+      velocity_squares += velocity_error;
+      stress_squares += stress_error;
+      ++count;
+    }
+  }
+  Exact exact;
+  double velocity_squares = 0.0, stress_squares = 0.0, initial_energy = 0.0, final_energy = 0.0;
+  long count = 0;
+};
+
+/// Runs a set-up scene with the monitor, fills the result; SimulationFailure is recorded, not thrown.
+template <int Dim, class Exact>
+SmoothResult run_and_measure(const mpm::io::Scene& scene, const mpm::Setup<Dim>& setup, ErrorMonitor<Dim, Exact>& monitor,
+                             double velocity_scale, double stress_scale) {
+  SmoothResult result;
+  result.particles = setup.particles.size();
+  const auto start = std::chrono::steady_clock::now();
+  mpm::RunSummary summary;
+  try {
+    summary = mpm::run_setup<Dim>(scene, setup, monitor, &summary);
+  } catch (const mpm::SimulationFailure& failure) {
+    result.failed = true;
+    result.failure = failure.message();
+  }
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.steps = summary.steps;
+  if (!result.failed && monitor.count > 0) {
+    result.velocity_error = std::sqrt(monitor.velocity_squares / monitor.count) / velocity_scale;
+    result.stress_error = std::sqrt(monitor.stress_squares / monitor.count) / stress_scale;
+    result.energy_ratio = monitor.final_energy / monitor.initial_energy;
+  }
+  return result;
+}
+
+/// One vibrating-bar case.
+struct BarCase {
+  std::string shape, integrator;
+  int cells = 16, particles_per_cell = 1;
+  double cfl = 0.5;
+  double amplitude = 1e-6;  ///< V / (omega L): the largest displacement over the bar's length
+};
+
+/// The vibrating bar's material and size, read from the scene (the exact solutions get them from there).
+struct BarScene {
+  std::string path;
+  double length = 0.0, young_modulus = 0.0, density = 0.0;
+  explicit BarScene(std::string scene_path) : path(std::move(scene_path)) {
+    const mpm::io::Scene scene = mpm::load_scene(path, {});
+    length = scene.length[0], young_modulus = scene.young_modulus, density = scene.density;
+  }
+  mpm::exact::VibratingBar mode(double amplitude) const {
+    const mpm::exact::VibratingBar unit(length, young_modulus, density, 1.0);
+    return mpm::exact::VibratingBar(length, young_modulus, density, amplitude * length * unit.angular_frequency());
+  }
+  /// The finite-strain reference at the sample times, on `cells` cells.
+  mpm::exact::FiniteStrainBar reference(double amplitude, int cells) const {
+    const auto linear = mode(amplitude);
+    std::vector<double> times;
+    for (double fraction : bar_sample_fractions()) times.push_back(fraction * linear.period());
+    return mpm::exact::FiniteStrainBar(length, young_modulus, density, linear.velocity_amplitude(), cells, times);
+  }
+};
+
+/// Runs one bar case: the scene with the case's overrides, the initial velocity V cos(pi X / 2L),
+/// to one period; the particles compared at T/4, T/2, 3T/4 and T with `reference` (nullptr: the
+/// linear first mode).
+inline SmoothResult run_bar(const BarScene& bar, const BarCase& c, const mpm::exact::FiniteStrainBar* reference) {
+  const mpm::exact::VibratingBar mode = bar.mode(c.amplitude);
+  const double T = mode.period();
+  // Room beyond the free end for its largest displacement, plus two cells for the supports.
+  const int margin = static_cast<int>(std::ceil(1.2 * c.amplitude * c.cells)) + 2;
+  std::vector<std::string> overrides = shape_settings(c.shape);
+  char end_time[64];
+  std::snprintf(end_time, sizeof end_time, "solver.end_time=%.17g", T);
+  overrides.insert(overrides.end(), {"grid.cells=[" + std::to_string(c.cells) + "]", "grid.margin_min=[" + std::to_string(margin) + "]",
+                                     "body[0].particles_per_cell=[" + std::to_string(c.particles_per_cell) + "]",
+                                     "solver.integrator=\"" + c.integrator + "\"", "solver.cfl=" + std::to_string(c.cfl), end_time,
+                                     "output.every=1000000000", "output.snapshots=[]"});
+  // Snapshot times exactly at fractions of T (the loop lands on them).
+  mpm::io::Scene scene = mpm::load_scene(bar.path, overrides);
+  scene.control.snapshot_times.clear();
+  for (double fraction : bar_sample_fractions()) scene.control.snapshot_times.push_back(fraction * T);
+  mpm::Setup<1> setup = mpm::build_setup<1>(scene);
+  const double V = mode.velocity_amplitude(), k = mode.wave_number();
+  for (int p = 0; p < setup.particles.size(); ++p)
+    setup.particles.velocity[p][0] = V * std::cos(k * setup.particles.reference_position[p][0]);
+  auto exact = [&mode, reference](const mpm::Particles<1>& particles, int p, int index, double time) {
+    const double X = std::clamp(particles.reference_position[p][0], 0.0, mode.length());
+    const double v = reference ? reference->velocity(X, index) : mode.velocity(X, time);
+    const double s = reference ? reference->stress(X, index) : mode.stress(X, time);
+    const double dv = particles.velocity[p][0] - v, ds = particles.stress[p](0, 0) - s;
+    return std::pair<double, double>{dv * dv, ds * ds};
+  };
+  ErrorMonitor<1, decltype(exact)> monitor(exact);
+  return run_and_measure<1>(scene, setup, monitor, V, mode.impedance() * V);
+}
+
+}  // namespace verification
