@@ -6,7 +6,7 @@
 
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/grid.hpp"
-#include "mpm/loading/gravity.hpp"
+#include "mpm/loading/body_force.hpp"
 #include "mpm/material/linear_elastic.hpp"
 
 namespace mpm {
@@ -16,7 +16,7 @@ struct Model {
   Grid<Dim> grid;
   LinearElastic material;
   std::vector<FixedDof> fixed;  ///< velocity components held at zero
-  Gravity<Dim> gravity;
+  BodyForce<Dim> body_force;  ///< b of Eq. (15): gravity ramped by Eq. (44), plus an optional field b(x, X, t)
 };
 
 }  // namespace mpm

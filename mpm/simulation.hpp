@@ -81,6 +81,7 @@ class Simulation {
     wall_start_ = std::chrono::steady_clock::now();
     shape_.initialise(particles_);
     stencils_.resize(particles_.size(), shape_.capacity());
+    body_force_.per_unit_mass.resize(particles_.size());
     initial_energy_ = balances(particles_).total();
 
     RunSummary& summary = summary_;
@@ -103,8 +104,8 @@ class Simulation {
       locate_particles(step, time);
       // 3. One step of the integrator.
       const double body_force_time = control_.body_force_time == BodyForceTime::step_end ? time + dt : time;
-      const Vector<Dim> body_force = model_.gravity.at(body_force_time);
-      integrator_.step(model_, stencils_, body_force, dt, particles_, grid_fields_);
+      model_.body_force.evaluate(body_force_time, particles_, body_force_);  // b_p of Eq. (15), at x_p^k
+      integrator_.step(model_, stencils_, body_force_, dt, particles_, grid_fields_);
       time = lands ? target : time + dt;
       ++step;
       summary.steps = step;
@@ -114,7 +115,7 @@ class Simulation {
       // 4. Health.
       const Balances<Dim> now = balances(particles_);
       summary.largest_mass_error = std::max(summary.largest_mass_error, nodal_mass_error(now.mass));
-      external_work_ += dt * body_force.dot(now.momentum);
+      external_work_ += dt * body_force_power(particles_, body_force_);
       check_health(step, time, now);
       // 5. Output.
       const bool last = time >= control_.end_time;
@@ -205,10 +206,11 @@ class Simulation {
   RunControl control_;
   GridFields<Dim> grid_fields_;
   Stencils<Dim> stencils_;
+  ParticleBodyForces<Dim> body_force_;  ///< b_p of the current step
   RunSummary summary_;
   std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   double initial_energy_ = 0.0;
-  double external_work_ = 0.0;  ///< \f$ \int \sum_p m_p \mathbf b \cdot \mathbf v_p \, dt \f$
+  double external_work_ = 0.0;  ///< \f$ \int \sum_p m_p \mathbf b_p \cdot \mathbf v_p \, dt \f$
 };
 
 }  // namespace mpm

@@ -16,9 +16,9 @@ struct ForwardEuler {
   static constexpr const char* name = "fe";
   EulerPositionVelocity position_velocity = EulerPositionVelocity::updated;
 
-  /// One step from t_k to t_k + dt. The stencils hold N_Ip, grad N_Ip at x_p^k; body_force is b.
+  /// One step from t_k to t_k + dt. The stencils hold N_Ip, grad N_Ip at x_p^k; body_force holds b_p.
   template <int Dim>
-  void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const Vector<Dim>& body_force, double dt,
+  void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
             Particles<Dim>& particles, GridFields<Dim>& grid) const {
     grid.reset();
     // 1. P2G: lumped mass, Eq. (13), and momentum p_I = sum_p N_Ip m_p v_p.

@@ -21,9 +21,9 @@ struct NewmarkPredictorCorrector {
   double newmark_gamma = 0.5;
   NewmarkPositionVelocity position_velocity = NewmarkPositionVelocity::corrected;
 
-  /// One step from t_k to t_k + dt. The stencils hold N_Ip, grad N_Ip at x_p^k; body_force is b.
+  /// One step from t_k to t_k + dt. The stencils hold N_Ip, grad N_Ip at x_p^k; body_force holds b_p.
   template <int Dim>
-  void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const Vector<Dim>& body_force, double dt,
+  void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
             Particles<Dim>& particles, GridFields<Dim>& grid) const {
     grid.reset();
     // Step 1. Lumped nodal mass, Eq. (13).

@@ -45,8 +45,8 @@ Model<Dim> build_model(const Scene& scene) {
       model.fixed.insert(model.fixed.end(), dofs.begin(), dofs.end());
     }
   }
-  model.gravity.acceleration = to_vector<Dim>(scene.gravity);
-  model.gravity.ramp_period = scene.ramp_period;
+  model.body_force.gravity.acceleration = to_vector<Dim>(scene.gravity);
+  model.body_force.gravity.ramp_period = scene.ramp_period;
   return model;
 }
 

@@ -37,6 +37,18 @@ struct LinearElastic {
     }
   }
 
+  /// Eq. (3) inverted: the strain of an in-plane stress, \f$ \varepsilon = \sigma / E \f$ in 1D and, in plane
+  /// strain (\f$ \varepsilon_{zz} = 0 \f$), \f$ \boldsymbol\varepsilon = \frac{1+\nu}{E}\left(\boldsymbol\sigma - \nu\,\mathrm{tr}(\boldsymbol\sigma)\,\mathbf I\right) \f$.
+  /// Used to start a particle from a given stress (loading/initial_fields.hpp).
+  template <int Dim>
+  Matrix<Dim> strain(const Matrix<Dim>& stress) const {
+    if constexpr (Dim == 1) {
+      return stress / young_modulus;
+    } else {
+      return (1.0 + poisson_ratio) / young_modulus * (stress - poisson_ratio * stress.trace() * Matrix<Dim>::Identity());
+    }
+  }
+
   /// Eq. (3), the out-of-plane stress of plane strain (0 in 1D).
   template <int Dim>
   double stress_zz(const Matrix<Dim>& strain) const {
@@ -62,6 +74,14 @@ TEST_CASE("Hooke's law, Eq. (3): 1D, plane strain, and the constrained-column ra
   strain.setZero();
   strain(0, 1) = strain(1, 0) = 1e-3;
   CHECK(soil.stress<2>(strain)(0, 1) == doctest::Approx(2.0 * 5e6 / 2.6 * 1e-3));
+  // The inverse: the confined column's stress gives back eps_yy = -0.01, eps_xx = 0; any stress round-trips.
+  const Matrix<2> column_strain = soil.strain<2>(sigma);
+  CHECK(column_strain(1, 1) == doctest::Approx(-0.01));
+  CHECK(column_strain(0, 0) == doctest::Approx(0.0).scale(1e-2));
+  Matrix<2> stress;
+  stress << 3e4, -1e4, -1e4, 7e4;
+  CHECK((soil.stress<2>(soil.strain<2>(stress)) - stress).norm() < 1e-10 * stress.norm());
+  CHECK(steel.strain<1>(Matrix<1>::Constant(2e8))(0, 0) == doctest::Approx(1e-3));
 }
 
 }  // namespace mpm

@@ -15,6 +15,7 @@
 #include <doctest/doctest.h>
 
 #include "mpm/grid/grid_fields.hpp"
+#include "mpm/loading/body_force.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/particles/stencils.hpp"
 #include "mpm/transfer/worked_example.hpp"
@@ -32,15 +33,17 @@ void add_internal_force(const Particles<Dim>& particles, const Stencils<Dim>& st
   }
 }
 
-/// Eq. (15), body-force part: \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b \f$ (no tractions in
-/// this project's scenes; Eq. (11)'s surface term is not implemented).
+/// Eq. (15), body-force part: \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b_p \f$, with b_p the body
+/// force per unit mass at each particle (loading/body_force.hpp; no tractions in this project's
+/// scenes; Eq. (11)'s surface term is not implemented).
 template <int Dim>
-void add_body_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils, const Vector<Dim>& body_force,
-                    GridFields<Dim>& grid) {
-  if (body_force.squaredNorm() == 0.0) return;
-  for (int p = 0; p < particles.size(); ++p)
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      grid.nodal_force[stencils.node[k]] += stencils.value[k] * particles.mass[p] * body_force;
+void add_body_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils,
+                    const ParticleBodyForces<Dim>& body_force, GridFields<Dim>& grid) {
+  if (body_force.all_zero) return;
+  for (int p = 0; p < particles.size(); ++p) {
+    const Vector<Dim> force = particles.mass[p] * body_force.per_unit_mass[p];
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k) grid.nodal_force[stencils.node[k]] += stencils.value[k] * force;
+  }
 }
 
 TEST_CASE("Nodal forces on the worked example: Eq. (14) by hand, Eq. (15) sums to the weight") {
@@ -50,10 +53,20 @@ TEST_CASE("Nodal forces on the worked example: Eq. (14) by hand, Eq. (15) sums t
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(-25.0));
   CHECK(example.fields.nodal_force[2][0] == doctest::Approx(20.0));
   example.fields.reset();
-  add_body_force(example.particles, example.stencils, Vector<1>(-9.81), example.fields);
+  ParticleBodyForces<1> gravity{{Vector<1>(-9.81), Vector<1>(-9.81)}, false};
+  add_body_force(example.particles, example.stencils, gravity, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-9.81 * 1.5));
   CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
         doctest::Approx(-9.81 * 6.0));
+  // A different b_p per particle: the nodal forces still sum to sum_p m_p b_p (partition of unity).
+  example.fields.reset();
+  const ParticleBodyForces<1> field{{Vector<1>(2.0), Vector<1>(-1.0)}, false};
+  add_body_force(example.particles, example.stencils, field, example.fields);
+  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(0.75 * 2.0 * 2.0));
+  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(0.25 * 2.0 * 2.0 - 0.5 * 4.0 * 1.0));
+  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(-0.5 * 4.0 * 1.0));
+  CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
+        doctest::Approx(example.particles.mass[0] * 2.0 - example.particles.mass[1]));
 }
 
 }  // namespace mpm
