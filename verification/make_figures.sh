@@ -25,9 +25,14 @@ bash "$root/verification/dyka_figures.sh" >"$out/report/dyka.log" 2>&1 &
 dyka=$!
 bash "$root/verification/soil_figures.sh" >"$out/report/soil.log" 2>&1 &
 soil=$!
+bash "$root/verification/smooth_figures.sh" >"$out/report/smooth.log" 2>&1 &
+smooth=$!
 bash "$root/verification/shape_figures.sh" >"$out/report/shapes.log" 2>&1 || { echo "figures: shape functions (Fig. 4) failed, see $out/report/shapes.log"; status=1; }
 wait $dyka || { echo "figures: Dyka bar suite failed, see $out/report/dyka.log"; status=1; }
 wait $soil || { echo "figures: soil block suite failed, see $out/report/soil.log"; status=1; }
+wait $smooth || { echo "figures: smooth-data suite failed, see $out/report/smooth.log"; status=1; }
+# Fig. 6 at 2 particles per cell compares the smooth suite's runs with the Dyka suite's sweep.
+bash "$root/verification/smooth_figures.sh" fig6 >>"$out/report/smooth.log" 2>&1 || { echo "figures: Fig. 6 at 2 ppc failed, see $out/report/smooth.log"; status=1; }
 
 elapsed=$(( $(date +%s) - start ))
 {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/exact/manufactured.hpp"
 #include "mpm/exact/vibrating_bar.hpp"
 #include "mpm/exact/vibrating_bar_finite_strain.hpp"
 #include "mpm/run.hpp"
@@ -140,6 +141,70 @@ inline SmoothResult run_bar(const BarScene& bar, const BarCase& c, const mpm::ex
   };
   ErrorMonitor<1, decltype(exact)> monitor(exact);
   return run_and_measure<1>(scene, setup, monitor, V, mode.impedance() * V);
+}
+
+/// One case of the 2D manufactured solutions.
+struct ManufacturedCase {
+  std::string shape, integrator;
+  int cells = 16, particles_per_cell = 2;
+  double cfl = 0.5;
+  bool large = false;  ///< large amplitude (diagonal stretch, rollers) or small (any field, faces fixed)
+};
+
+/// The manufactured motions' amplitudes: small A = 1e-6 L; large a_x = 0.04 L, a_y = 0.02 L
+/// (largest stretches 1 -+ 0.13 on both axes).
+constexpr double manufactured_small = 1e-6, manufactured_large_x = 0.04, manufactured_large_y = 0.02;
+
+/// The fraction of the period 2 pi / omega at which the particles are compared; the run ends at the last.
+inline const std::vector<double>& manufactured_sample_fractions() {
+  static const std::vector<double> fractions{0.125, 0.25, 0.375, 0.5};
+  return fractions;
+}
+
+/// Runs one manufactured case of scenes/manufactured_square.toml: the motion's initial velocity,
+/// its body force b(x, t) and, at large amplitude, rollers on every face; the particles compared at
+/// the sample times with the motion (velocity and in-plane Cauchy stress, RMS over particles).
+inline SmoothResult run_manufactured(const std::string& scene_path, const ManufacturedCase& c) {
+  const mpm::io::Scene base = mpm::load_scene(scene_path, {});
+  const mpm::exact::ManufacturedMaterial material{base.length[0], base.young_modulus, base.poisson_ratio, base.density};
+  const double L = material.length, period = 2.0 * mpm::exact::ManufacturedMaterial::pi / material.angular_frequency();
+  const mpm::exact::ManufacturedSmall small(material, manufactured_small * L);
+  const mpm::exact::ManufacturedLarge large(material, manufactured_large_x * L, manufactured_large_y * L);
+  const std::string n = std::to_string(c.cells), ppc = std::to_string(c.particles_per_cell);
+  std::vector<std::string> overrides{"solver.shape=\"" + c.shape + "\"", "grid.cells=[" + n + ", " + n + "]",
+                                     "body[0].particles_per_cell=[" + ppc + ", " + ppc + "]", "solver.integrator=\"" + c.integrator + "\"",
+                                     "solver.cfl=" + std::to_string(c.cfl), "output.every=1000000000", "output.snapshots=[]"};
+  if (c.shape == "ugimp") overrides.insert(overrides.end(), {"grid.margin_min=[1, 1]", "grid.margin_max=[1, 1]"});  // rigid cells behind the walls
+  char end_time[64];
+  std::snprintf(end_time, sizeof end_time, "solver.end_time=%.17g", manufactured_sample_fractions().back() * period);
+  overrides.push_back(end_time);
+  if (c.large)
+    for (int face = 0; face < 4; ++face) overrides.push_back("fixed[" + std::to_string(face) + "].components=[\"" + (face < 2 ? "x" : "y") + "\"]");
+  mpm::io::Scene scene = mpm::load_scene(scene_path, overrides);
+  for (double fraction : manufactured_sample_fractions()) scene.control.snapshot_times.push_back(fraction * period);
+  mpm::Setup<2> setup = mpm::build_setup<2>(scene);
+  auto to_pair = [](const mpm::Vector<2>& v) { return mpm::exact::Pair{v[0], v[1]}; };
+  for (int p = 0; p < setup.particles.size(); ++p) {
+    const auto X = to_pair(setup.particles.reference_position[p]);
+    const auto v = c.large ? large.initial_velocity(X) : small.initial_velocity(X);
+    setup.particles.velocity[p] = mpm::Vector<2>(v[0], v[1]);
+  }
+  setup.model.body_force.field = [&small, &large, large_case = c.large, to_pair](const mpm::Vector<2>& x, const mpm::Vector<2>&, double t) {
+    const auto b = large_case ? large.body_force(to_pair(x), t) : small.body_force(to_pair(x), t);
+    return mpm::Vector<2>(b[0], b[1]);
+  };
+  auto exact = [&](const mpm::Particles<2>& particles, int p, int, double time) {
+    const auto X = to_pair(particles.reference_position[p]);
+    const auto v = c.large ? large.velocity(X, time) : small.velocity(X, time);
+    const auto s = c.large ? large.stress(X, time) : small.stress(X, time);
+    const mpm::Matrix<2>& sigma = particles.stress[p];
+    const double dv = (particles.velocity[p] - mpm::Vector<2>(v[0], v[1])).squaredNorm();
+    const double ds = (sigma(0, 0) - s.xx) * (sigma(0, 0) - s.xx) + (sigma(1, 1) - s.yy) * (sigma(1, 1) - s.yy) + 2.0 * (sigma(0, 1) - s.xy) * (sigma(0, 1) - s.xy);
+    return std::pair<double, double>{dv, ds};
+  };
+  ErrorMonitor<2, decltype(exact)> monitor(exact);
+  return run_and_measure<2>(scene, setup, monitor, c.large ? large.velocity_scale() : small.velocity_scale(),
+                            c.large ? large.stress_scale() : small.stress_scale());
 }
 
 }  // namespace verification
