@@ -4,13 +4,14 @@
 # stopped are left out (their line breaks).
 # gnuplot -e "dir='...'; data='...'; out='...'; amplitude='small|large'; caption='...'" smooth_bar.gp
 load dir."/common.gp"
+up(i) = (i eq 'fe' ? 'FE' : 'NPC')
 w = 12; h = 7
 sweep = data.'/smooth_bar.csv'
 ok(s, i, p, c) = (strcol(1) eq amplitude && strcol(2) eq s && strcol(3) eq i && $4 == p && abs($5 - c) < 1e-9 && strcol(12) eq 'ok')
 colour(i) = (i eq 'fe' ? '#d62728' : '#1f77b4')
-curves(s, col) = sprintf("for [i in 'fe npc'] for [p = 1:2] for [c in '0.5 0.1'] sweep using (ok('%s', i, p, real(c)) ? $6 : NaN):%d with linespoints lw 1.5 dt p pt (real(c) > 0.3 ? 7 : 6) lc rgb colour(i) title sprintf('%%s, %%d ppc, CFL %%s', toupper(i), p, c), 0.5*(x/8)**-1 with lines dt 3 lc rgb '#888888' title 'h^1', 0.5*(x/8)**-2 with lines dt 4 lc rgb '#888888' title 'h^2'", s, col)
+curves(s, col) = sprintf("for [i in 'fe npc'] for [p = 1:2] for [c in '0.5 0.1'] sweep using (ok('%s', i, p, real(c)) ? $6 : NaN):%d with linespoints lw 1.5 dt p pt (real(c) > 0.3 ? 7 : 6) lc rgb colour(i) title sprintf('%%s, %%d ppc, CFL %%s', up(i), p, c), 0.05*(x/8)**-1 with lines dt 3 lc rgb '#888888' title 'h^1', 0.05*(x/8)**-2 with lines dt 4 lc rgb '#888888' title 'h^2'", s, col)
 panel(s, title, col, ylabel) = sprintf("set title '%s'; set ylabel '%s'; plot %s", title, ylabel, curves(s, col))
-draw = "set multiplot layout 2,3 title caption; set logscale xy; set xrange [6:340]; set yrange [1e-6:2]; set xlabel 'cells'; set key bottom left font ',6' maxrows 4; " . \
+draw = "set multiplot layout 2,3 title caption; set logscale xy; set format y '10^{%L}'; set xrange [6:340]; set yrange [1e-6:2]; set xlabel 'cells'; set key bottom left font ',6' maxrows 4; " . \
   panel('linear', 'linear', 7, 'RMS(v_p - v) / V') . "; set key off; " . panel('ugimp', 'uGIMP', 7, '') . "; " . panel('lme', 'LME, γ = 3', 7, '') . "; " . \
   panel('linear', '', 8, 'RMS(σ_p - σ) / ZV') . "; " . panel('ugimp', '', 8, '') . "; " . panel('lme', '', 8, '') . "; unset multiplot"
 load dir."/output.gp"

@@ -4,11 +4,12 @@
 # next to the free end first reaches a cell face. Crosses at the top: the run stopped.
 # gnuplot -e "dir='...'; data='...'; out='...'" smooth_crossing.gp
 load dir."/common.gp"
+up(i) = (i eq 'fe' ? 'FE' : 'NPC')
 w = 11; h = 7
 file = data.'/smooth_crossing.csv'
 colour(s) = (s eq 'linear' ? '#2ca02c' : s eq 'ugimp' ? '#9467bd' : '#d62728')
 name(s) = (s eq 'linear' ? 'linear' : s eq 'ugimp' ? 'uGIMP' : 'LME, γ = 3')
-panel(i, p) = sprintf("set title '%s, %d particle%s per cell'; set arrow 1 from %g, graph 0 to %g, graph 1 nohead dt 3 lc rgb '#555555'; plot for [s in 'linear ugimp lme'] file using (strcol(1) eq s && strcol(2) eq '%s' && $3 == %d && strcol(7) eq 'ok' ? $4 : NaN):5 with linespoints lw 1.5 pt 7 lc rgb colour(s) title name(s), for [s in 'linear ugimp lme'] file using (strcol(1) eq s && strcol(2) eq '%s' && $3 == %d && strcol(7) eq 'failed' ? $4 : NaN):(1.0) with points pt 2 ps 1.5 lc rgb colour(s) notitle", toupper(i), p, p > 1 ? 's' : '', 0.5/p, 0.5/p, i, p, i, p)
-draw = "set multiplot layout 2,2 title 'Grid crossing isolated: vibrating bar, 32 cells, CFL 0.5; RMS(v_p - v)/V against U/h'; set logscale xy; set xrange [0.008:2.5]; set yrange [1e-3:2]; set xlabel 'U / h (largest displacement / cell size)'; set ylabel 'RMS(v_p - v) / V'; set key top left; " . \
+panel(i, p) = sprintf("set title '%s, %d particle%s per cell'; set arrow 1 from %g, graph 0 to %g, graph 1 nohead dt 3 lc rgb '#555555'; plot for [s in 'linear ugimp lme'] file using (strcol(1) eq s && strcol(2) eq '%s' && $3 == %d && strcol(7) eq 'ok' ? $4 : NaN):5 with linespoints lw 1.5 pt 7 lc rgb colour(s) title name(s), for [s in 'linear ugimp lme'] file using (strcol(1) eq s && strcol(2) eq '%s' && $3 == %d && strcol(7) eq 'failed' ? $4 : NaN):(1.0) with points pt 2 ps 1.5 lc rgb colour(s) notitle", up(i), p, p > 1 ? 's' : '', 0.5/p, 0.5/p, i, p, i, p)
+draw = "set multiplot layout 2,2 title 'Grid crossing isolated: vibrating bar, 32 cells, CFL 0.5; RMS(v_p - v)/V against U/h'; set logscale xy; set format y '10^{%L}'; set xrange [0.008:2.5]; set yrange [1e-3:2]; set xlabel 'U / h (largest displacement / cell size)'; set ylabel 'RMS(v_p - v) / V'; set key top left; " . \
   panel('fe', 1) . "; " . panel('npc', 1) . "; " . panel('fe', 2) . "; " . panel('npc', 2) . "; unset multiplot"
 load dir."/output.gp"

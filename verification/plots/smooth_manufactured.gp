@@ -4,12 +4,13 @@
 # Grey guides: slopes 1 and 2. Runs that stopped are left out.
 # gnuplot -e "dir='...'; data='...'; out='...'" smooth_manufactured.gp
 load dir."/common.gp"
+up(i) = (i eq 'fe' ? 'FE' : 'NPC')
 w = 10; h = 7
 file = data.'/smooth_manufactured.csv'
 colour(s) = (s eq 'linear' ? '#2ca02c' : s eq 'ugimp' ? '#9467bd' : '#d62728')
 ok(a, s, i, p) = (strcol(1) eq a && strcol(2) eq s && strcol(3) eq i && $4 == p && strcol(10) eq 'ok')
-panel(a, col, title, ylabel) = sprintf("set title '%s'; set ylabel '%s'; plot for [s in 'linear ugimp lme'] for [i in 'fe npc'] for [p = 1:2] file using (ok('%s', s, i, p) ? $5 : NaN):%d with linespoints lw 1.5 dt (i eq 'fe' ? 1 : 2) pt (p == 2 ? 7 : 6) lc rgb colour(s) title sprintf('%%s, %%s, %%dx%%d', s, toupper(i), p, p), 0.5*(x/8)**-1 with lines dt 3 lc rgb '#888888' title 'h^1', 0.5*(x/8)**-2 with lines dt 4 lc rgb '#888888' title 'h^2'", title, ylabel, a, col)
-draw = "set multiplot layout 2,2 title '2D manufactured solutions (plane strain, ν = 0.3): RMS errors at 1/8, 1/4, 3/8, 1/2 period'; set logscale xy; set xrange [6:40]; set yrange [1e-5:3]; set xlabel 'cells per side'; set key bottom left font ',6' maxrows 6; " . \
+panel(a, col, title, ylabel) = sprintf("set title '%s'; set ylabel '%s'; plot for [s in 'linear ugimp lme'] for [i in 'fe npc'] for [p = 1:2] file using (ok('%s', s, i, p) ? $5 : NaN):%d with linespoints lw 1.5 dt 1+(i eq 'npc') pt (p == 2 ? 7 : 6) lc rgb colour(s) title sprintf('%%s, %%s, %%dx%%d', s, up(i), p, p), 0.15*(x/8)**-1 with lines dt 3 lc rgb '#888888' title 'h^1', 0.15*(x/8)**-2 with lines dt 4 lc rgb '#888888' title 'h^2'", title, ylabel, a, col)
+draw = "set multiplot layout 2,2 title '2D manufactured solutions (plane strain, ν = 0.3): RMS errors at 1/8, 1/4, 3/8, 1/2 period'; set logscale xy; set format y '10^{%L}'; set xrange [6:40]; set yrange [3e-3:3]; set xtics (8, 12, 16, 24, 32); set xlabel 'cells per side'; set key bottom left font ',6' maxrows 6; " . \
   panel('small', 6, 'small amplitude: velocity', 'RMS |v_p - v| / Aω') . "; set key off; " . panel('small', 7, 'small amplitude: stress', 'RMS |σ_p - σ| / σ scale') . "; " . \
   panel('large', 6, 'large amplitude (diagonal stretch): velocity', 'RMS |v_p - v| / aω') . "; " . panel('large', 7, 'large amplitude: stress', 'RMS |σ_p - σ| / σ scale') . "; unset multiplot"
 load dir."/output.gp"
