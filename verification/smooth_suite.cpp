@@ -140,21 +140,28 @@ int fig6_two_particles_report(const std::string& folder, const std::string& repo
   auto less = [](double shape, double linear) { return std::isfinite(shape) && (!std::isfinite(linear) || shape < linear); };
   const std::map<int, std::vector<int>> crossing_meshes{{1, {2560, 5120}}, {2, {1280}}};
   std::vector<Claim> list;
-  std::map<std::string, bool> verdict;
+  std::map<std::string, std::string> verdict;
   for (const std::string shape : {"ugimp", "lme"})
     for (int ppc : {1, 2})
       for (const auto& integrator : integrators) {
-        bool holds = true;
+        bool below = true, converging = true;
         std::string measured;
+        const double before = at(shape, integrator, ppc, 160);  // no crossing at either ppc (ratio 0.08 / 0.16)
         for (int cells : crossing_meshes.at(ppc)) {
           const double mine = at(shape, integrator, ppc, cells), linear = at("linear", integrator, ppc, cells);
-          holds = holds && less(mine, linear);
+          below = below && less(mine, linear);
+          converging = converging && std::isfinite(mine) && mine < before;
           measured += std::to_string(cells) + " cells: " + shape + " " + text(mine) + ", linear " + text(linear) + "; ";
         }
-        verdict[shape + std::to_string(ppc) + integrator] = holds;
-        list.push_back({"Paper (Fig. 6): " + std::string(shape == "ugimp" ? "uGIMP" : "LME") + " suffers less from grid crossing than linear shape functions (" +
-                            std::to_string(ppc) + " ppc, " + integrator + ", the crossing meshes of " + std::to_string(ppc) + " ppc)",
-                        "RMS/v0 at " + measured, holds, false});
+        const std::string name = shape == "ugimp" ? "uGIMP" : "LME";
+        verdict[shape + std::to_string(ppc) + integrator] =
+            below && converging ? "holds: below linear, and below its own 160-cell error" : below ? "holds only comparatively: below linear, but above its own 160-cell error" : "does not hold";
+        list.push_back({"Paper (Fig. 6): " + name + " suffers less from grid crossing than linear shape functions: its RMS on the crossing meshes is below linear's, or linear's run stopped (" +
+                            std::to_string(ppc) + " ppc, " + integrator + ")",
+                        "RMS/v0 at " + measured, below, false});
+        list.push_back({"... and " + name + " keeps converging through crossing: its RMS on the crossing meshes stays below its RMS at 160 cells (" + std::to_string(ppc) +
+                            " ppc, " + integrator + ")",
+                        "RMS/v0 at 160 cells " + text(before) + "; " + measured, converging, false});
       }
   for (const std::string shape : {"ugimp", "lme"})
     for (const auto& integrator : integrators) {
@@ -177,7 +184,7 @@ int fig6_two_particles_report(const std::string& folder, const std::string& repo
   for (const std::string shape : {"ugimp", "lme"}) {
     report << "| " << (shape == "ugimp" ? "uGIMP" : "LME");
     for (int ppc : {1, 2})
-      for (const auto& integrator : integrators) report << " | " << (verdict[shape + std::to_string(ppc) + integrator] ? "holds" : "does not hold");
+      for (const auto& integrator : integrators) report << " | " << verdict[shape + std::to_string(ppc) + integrator];
     report << " |\n";
   }
   report << "\n";
@@ -370,15 +377,18 @@ int main(int argc, char** argv) {
 
   std::ofstream dyka_file(folder + "/dyka_2ppc.csv");  // Fig. 6 at 2 particles per cell
   dyka_file << std::setprecision(8) << "shape,integrator,cells,crossing_ratio,rms_over_v0,largest_speed_over_v0,wall_seconds,status,failure\n";
+  std::map<std::string, const verification::DykaResult*> dyka_by_name;
   for (size_t k = 0; k < jobs.size(); ++k)
-    if (jobs[k].group == "dyka") {
-      const auto& r = dyka_results[k];
-      std::string failure = r.failure;
-      std::replace(failure.begin(), failure.end(), ',', ';');
-      dyka_file << jobs[k].bar.shape << "," << jobs[k].bar.integrator << "," << r.cells << "," << dyka_crossing_ratio(r.cells, 2) << ","
-                << (r.failed ? std::nan("") : r.rms / dyka_speed) << "," << r.largest_speed / dyka_speed << "," << r.wall_seconds << ","
-                << (r.failed ? "failed" : "ok") << "," << failure << "\n";
-    }
+    if (jobs[k].group == "dyka") dyka_by_name[dyka_name(jobs[k].bar.shape, jobs[k].bar.integrator, jobs[k].bar.cells)] = &dyka_results[k];
+  for (const auto& shape : shapes)
+    for (const auto& integrator : integrators)
+      for (int cells : dyka_cells) {
+        const auto& r = *dyka_by_name.at(dyka_name(shape, integrator, cells));
+        std::string failure = r.failure;
+        std::replace(failure.begin(), failure.end(), ',', ';');
+        dyka_file << shape << "," << integrator << "," << cells << "," << dyka_crossing_ratio(cells, 2) << "," << (r.failed ? std::nan("") : r.rms / dyka_speed)
+                  << "," << r.largest_speed / dyka_speed << "," << r.wall_seconds << "," << (r.failed ? "failed" : "ok") << "," << failure << "\n";
+      }
 
   // --- Claims ---------------------------------------------------------------------------------
   std::vector<std::pair<std::string, std::vector<Claim>>> sections;
