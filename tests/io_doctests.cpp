@@ -2,3 +2,4 @@
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/io/scene.hpp"
 #include "mpm/io/scene_file.hpp"
+#include "mpm/io/scene_formulas.hpp"

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mpm/io/scene_file.hpp"
+#include "mpm/io/scene_formulas.hpp"
 #include "mpm/simulation.hpp"
 
 namespace mpm::io {
@@ -58,6 +59,8 @@ struct Scene {
   RunControl control;
   // [[observer]], [output]
   std::vector<ObserverSettings> observers;
+  // [constants], [initial_field], [body_force] (io/scene_formulas.hpp)
+  SceneFormulas formulas;
   /// the resolved scene (file plus overrides) as JSON, for run.json
   std::string resolved_json;
 };
@@ -238,6 +241,7 @@ inline Scene read_scene(const SceneFile& file) {
       if (time < 0.0 || time > scene.control.end_time) output.fail("snapshots", "times must lie in [0, solver.end_time]");
     output.reject_unknown_keys();
   }
+  scene.formulas = read_scene_formulas(file, root, dim, scene.young_modulus, scene.poisson_ratio, scene.density);
   root.reject_unknown_keys();
   std::ostringstream json;
   json << toml::json_formatter{file.table};

@@ -47,6 +47,7 @@ Model<Dim> build_model(const Scene& scene) {
   }
   model.body_force.gravity.acceleration = to_vector<Dim>(scene.gravity);
   model.body_force.gravity.ramp_period = scene.ramp_period;
+  model.body_force.field = body_force_field<Dim>(scene.formulas);
   return model;
 }
 
@@ -59,6 +60,8 @@ Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
     fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, scene.density,
              to_vector<Dim>(body.velocity), body.placement == "gauss" ? Placement::gauss : Placement::uniform, particles);
   }
+  apply_scene_formulas<Dim>(scene.formulas, LinearElastic{scene.young_modulus, scene.poisson_ratio, scene.density},
+                            scene.control.end_time, particles);  // [initial_field], before the boxes
   for (const auto& box : scene.initial_velocities) {  // applied in order: later boxes win
     const Vector<Dim> lower = to_vector<Dim>(box.min), upper = to_vector<Dim>(box.max);
     for (int p = 0; p < particles.size(); ++p) {
