@@ -13,15 +13,13 @@ csv=$out/speed.csv
 echo "scene,cells,shape,integrator,particles,steps,wall_seconds,particle_steps_per_second,relative_to_linear" >"$csv"
 field() { grep -o "\"$1\": [-0-9.e+]*" "$2" | head -1 | awk '{print $2}'; }
 
-bench() {  # bench SCENE LABEL CELLS UGIMP_MARGIN OVERRIDES...   (UGIMP_MARGIN: rigid cells behind walls, uGIMP only)
-  local scene=$1 label=$2 cells=$3 ugimp_margin=$4; shift 4
+bench() {  # bench SCENE LABEL CELLS OVERRIDES...
+  local scene=$1 label=$2 cells=$3; shift 3
   for integrator in fe npc; do
     local linear_speed=""
     for shape in linear ugimp lme; do
       local dir=$out/runs/${label}_${cells}_${shape}_${integrator}
-      local extra=(); [[ $shape == ugimp ]] && extra=(--set "grid.margin_max=$ugimp_margin")
-      [[ $shape == ugimp && $label == soil_block ]] && extra+=(--set "grid.margin_min=[1,1]")
-      "$mpm" run "$scene" --out "$dir" --set "solver.shape=\"$shape\"" --set "solver.integrator=\"$integrator\"" "$@" "${extra[@]}" >/dev/null
+      "$mpm" run "$scene" --out "$dir" --set "solver.shape=\"$shape\"" --set "solver.integrator=\"$integrator\"" "$@" >/dev/null
       local speed; speed=$(field particle_steps_per_second "$dir/run.json")
       [[ $shape == linear ]] && linear_speed=$speed
       echo "$label,$cells,$shape,$integrator,$(field particles "$dir/run.json"),$(field steps "$dir/run.json"),$(field wall_seconds "$dir/run.json"),$speed,$(awk -v a="$speed" -v b="$linear_speed" 'BEGIN{printf "%.3f", a/b}')" >>"$csv"
@@ -29,11 +27,10 @@ bench() {  # bench SCENE LABEL CELLS UGIMP_MARGIN OVERRIDES...   (UGIMP_MARGIN: 
   done
 }
 
-bench "$root/scenes/dyka_bar.toml" dyka_bar 40 [1] --set grid.cells=[40]
-bench "$root/scenes/dyka_bar.toml" dyka_bar 640 [1] --set grid.cells=[640]
-# 2D: the soil block at 1 m cells (400 particles, about 5800 steps to 20 s); for uGIMP also a rigid
-# row below the base (margin_min stays [0, 0] for the others, whose supports need no room there).
-bench "$root/scenes/soil_block.toml" soil_block 10x10 [1,0] --set grid.cells=[10,10] --set output.snapshots=[] --set output.every=100
+bench "$root/scenes/dyka_bar.toml" dyka_bar 40 --set grid.cells=[40]
+bench "$root/scenes/dyka_bar.toml" dyka_bar 640 --set grid.cells=[640]
+# 2D: the soil block at 1 m cells (400 particles, about 5800 steps to 20 s).
+bench "$root/scenes/soil_block.toml" soil_block 10x10 --set grid.cells=[10,10] --set output.snapshots=[] --set output.every=100
 column -s, -t "$csv"
 echo "bench: wrote $csv"
 # Memory: the largest resident set of the biggest 1D run (5120 cells, 20 us), per shape function.
@@ -41,7 +38,7 @@ memory=$out/memory.csv
 echo "shape,max_resident_kib" >"$memory"
 for shape in linear ugimp lme; do
   kib=$(/usr/bin/time -f "%M" "$mpm" run "$root/scenes/dyka_bar.toml" --out "$out/runs/memory_$shape" \
-    --set grid.cells=[5120] --set grid.margin_max=[1] --set "solver.shape=\"$shape\"" --set solver.end_time=2.0e-5 --set output.snapshots=[] 2>&1 >/dev/null | tail -1)
+    --set grid.cells=[5120] --set "solver.shape=\"$shape\"" --set solver.end_time=2.0e-5 --set output.snapshots=[] 2>&1 >/dev/null | tail -1)
   echo "$shape,$kib" >>"$memory"
 done
 column -s, -t "$memory"

@@ -40,16 +40,12 @@ struct VelocityRecorder : mpm::Monitor<1> {
   std::vector<double> time, velocity;
 };
 
-/// The scene settings that select a shape function on the Dyka bar. uGIMP alone gets one rigid
-/// cell behind the fixed end: its particle domain (l_p fixed at h/2) crosses x = L as soon as the
-/// last particle is pushed towards the wall. LME must not get it: it interpolates nodal values
-/// exactly only on the boundary of its nodes' hull, so with rigid nodes beyond the wall the wall
-/// gives way (at gamma = 0.8 v_A changes by 0.54 m/s RMS).
-inline std::vector<std::string> shape_settings(const std::string& shape) {
-  std::vector<std::string> settings{"solver.shape=\"" + shape + "\""};
-  if (shape == "ugimp") settings.push_back("grid.margin_max=[1]");
-  return settings;
-}
+/// The scene settings that select a shape function on the Dyka bar. Every shape runs on the grid
+/// that ends at the fixed end: uGIMP clips its particle domain there (shape/ugimp.hpp), and LME
+/// must not get rigid cells beyond the wall: it interpolates nodal values exactly only on the
+/// boundary of its nodes' hull, so with rigid nodes beyond the wall the wall gives way (at
+/// gamma = 0.8 v_A changes by 0.54 m/s RMS).
+inline std::vector<std::string> shape_settings(const std::string& shape) { return {"solver.shape=\"" + shape + "\""}; }
 
 inline DykaResult run_dyka(const std::string& scene_path, const std::string& name, const std::vector<std::string>& overrides) {
   DykaResult result;

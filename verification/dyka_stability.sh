@@ -36,7 +36,7 @@ export mpm scene work
 {
   for integrator in fe npc; do
     echo "linear_$integrator --set 'solver.shape=\"linear\"' --set 'solver.integrator=\"$integrator\"'"
-    echo "ugimp_$integrator --set 'solver.shape=\"ugimp\"' --set grid.margin_max=[1] --set 'solver.integrator=\"$integrator\"'"  # a rigid cell behind the wall
+    echo "ugimp_$integrator --set 'solver.shape=\"ugimp\"' --set 'solver.integrator=\"$integrator\"'"
     for gamma in 1.0 3.0 5.0; do
       echo "lme${gamma}_$integrator --set 'solver.shape=\"lme\"' --set solver.lme_gamma=$gamma --set 'solver.integrator=\"$integrator\"'"
     done
