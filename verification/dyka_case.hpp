@@ -71,7 +71,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   result.steps = summary.steps;
   result.mass_error = summary.largest_mass_error;
   result.newton_mean = summary.shape.newton_iterations_mean();
-  result.newton_max = summary.shape.newton_iterations_max;
+  result.newton_max = summary.shape.newton_iterations_max();
   result.neighbours_mean = summary.shape.neighbours_mean();
   // The exact solution of the discrete initial data: v0 on the union of the domains
   // [X_p - l_p, X_p + l_p] of the particles that start with it (L/4 when the cells divide by 4).
