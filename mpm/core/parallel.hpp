@@ -21,9 +21,9 @@
 namespace mpm {
 
 inline constexpr int max_threads = 64;
-/// Fewer items than this: one thread (measured: below ~2000 particles the start of a team of
-/// threads costs more than the work it shares).
-inline constexpr int parallel_threshold = 2048;
+/// Fewer items than this: one thread (starting a team of threads costs a few microseconds, the
+/// work of a linear 1D transfer over 1000 particles about as much).
+inline constexpr int parallel_threshold = 1024;
 
 /// The machine's cores (at most max_threads).
 inline int available_cores() { return std::clamp(omp_get_num_procs(), 1, max_threads); }
