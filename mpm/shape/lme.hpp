@@ -85,8 +85,7 @@ struct LmePartition {
   double log_z() const { return largest + std::log(weight_sum); }
 };
 
-/// Eq. (36), the partition function, stably (the exponentials of a stencil in SIMD: Eigen's exp,
-/// within an ulp or two of std::exp):
+/// Eq. (36), the partition function, stably:
 /// \f[ Z(x, \lambda) = \sum_I \exp\left[ -\beta |x - x_I|^2 + \lambda \cdot (x - x_I) \right] . \f]
 /// Writes the shifted weights w_I to `weights`.
 template <int Dim>
@@ -97,10 +96,11 @@ LmePartition lme_partition(int count, const Vector<Dim>* offsets, double beta, c
     weights[I] = lme_exponent(beta, lambda, offsets[I]);
     largest = std::max(largest, weights[I]);
   }
-  Eigen::Map<Eigen::ArrayXd> shifted(weights, count);
-  shifted = (shifted - largest).exp();  // Eigen's exp: several exponentials per SIMD instruction
   double sum = 0.0;
-  for (int I = 0; I < count; ++I) sum += weights[I];
+  for (int I = 0; I < count; ++I) {
+    weights[I] = std::exp(weights[I] - largest);
+    sum += weights[I];
+  }
   return {largest, sum};
 }
 
