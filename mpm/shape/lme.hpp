@@ -1,6 +1,7 @@
 /// \file
-/// Local maximum-entropy (LME) shape functions of Arroyo & Ortiz (2006): the paper's Eqs. (34)-(41),
-/// in its order, then the Newton solve that finds the multiplier lambda*, then the shape class.
+/// Local maximum-entropy (LME) shape functions of Arroyo & Ortiz (2006): the paper's Eqs. (34)-(41)
+/// (paper/04_shape_functions.md), in its order, then the Newton solve that finds the multiplier
+/// lambda*, then the shape class.
 ///
 /// At a point x with neighbour nodes I, the LME functions are the least biased (most entropic,
 /// Eq. (34)) non-negative partition of unity that reproduces x, biased towards near nodes by the
@@ -14,7 +15,7 @@
 /// \f$ \beta = \gamma / h^2 \f$: gamma -> infinity tends to the linear (Delaunay) interpolant, gamma ~ 1
 /// smooths over a few cells. The solution exists when x is inside the convex hull of its neighbours.
 ///
-/// Numerics (spec 8.3). Everything runs in cell units: offsets \f$ \hat l_I = (x - x_I)/h \f$,
+/// Numerics (paper/09_choices.md, 'Newton for the multiplier'). Everything runs in cell units: offsets \f$ \hat l_I = (x - x_I)/h \f$,
 /// \f$ \hat\beta = \beta h^2 \f$ (= gamma), \f$ \hat\lambda = \lambda h \f$, so r/h and J/h^2 are dimensionless
 /// and the Newton tolerance is relative to h. Exponents are shifted by their maximum before exp.
 /// Newton is warm-started from the particle's multiplier of the previous call; its safeguards (a
@@ -46,12 +47,12 @@
 namespace mpm {
 
 struct LmeOptions {
-  double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (spec 2.5: beta = gamma / h^2)
+  double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (paper/04_shape_functions.md: beta = gamma / h^2)
   double support_tolerance = 1e-6;  ///< the prior \f$ e^{-\beta R^2} \f$ at the support radius R (A\&O06; authors: 1e-5)
-  double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (spec 8.3)
+  double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (paper/04_shape_functions.md)
   int max_iterations = 100;         ///< Newton updates of lambda per evaluation before ShapeFailure
-  /// grid_spacing: beta = gamma / h^2 (seed, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
-  /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, spec 8.1). The
+  /// grid_spacing: beta = gamma / h^2 (the paper, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
+  /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, paper/09_choices.md). The
   /// neighbours are those within R = h sqrt(-ln(support_tolerance) / gamma) under both rules (with hbar in
   /// R the radius would feed on itself: hbar ~ 2R/3 in 2D makes R grow unless the patch is capped).
   enum class BetaRule { grid_spacing, mean_neighbour_distance } beta_rule = BetaRule::grid_spacing;
@@ -175,7 +176,7 @@ struct LmeSolution {
 /// by at least 1e-4 of the first-order prediction t r.s (armijo_step_length). Stops when |r| <= tolerance;
 /// leaves the weights of the last lambda in `weights`. `diameter`: that of the neighbourhood, 2 R / h.
 template <int Dim>
-LmeSolution<Dim> lme_newton(int count, const Vector<Dim>* offsets, double beta, Vector<Dim> lambda, double diameter,
+LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offsets, double beta, Vector<Dim> lambda, double diameter,
                             double tolerance, int max_iterations, double* weights) {
   LmeSolution<Dim> at{lambda, lme_partition(count, offsets, beta, lambda, weights), {}, 0, nullptr};
   at.moments = lme_moments(count, offsets, weights, at.partition.weight_sum);
@@ -265,7 +266,7 @@ class LmeShape {
     Vector<Dim>* offsets = gradients;  // the offsets (x - x_I)/h live where the gradients will go
     const int count = lme_neighbours(grid_, radius_squared_, capacity_, particle, x, nodes, offsets);
     const double beta = beta_in_cell_units(count, offsets);
-    const LmeSolution<Dim> solution = lme_newton(count, offsets, beta, Vector<Dim>(lambda_[particle] * h),
+    const LmeSolution<Dim> solution = solve_lme_multiplier(count, offsets, beta, Vector<Dim>(lambda_[particle] * h),
                                                  2.0 * std::sqrt(radius_squared_), options_.newton_tolerance,
                                                  options_.max_iterations, values);
     if (solution.failure) throw not_converged(particle, solution.iterations, solution.moments, solution.failure);
@@ -614,7 +615,7 @@ TEST_CASE("LME options: the hull condition on gamma and the support tolerance, a
   CHECK_THROWS_AS(LmeShape<1>(line, options), std::invalid_argument);
 
   // beta = gamma / hbar^2. In 1D at a cell centre with gamma = 3 the neighbours are at 0.5 h and 1.5 h,
-  // so hbar = h and N is the default's (spec 4.1, example 2), to rounding. (So it is wherever x has
+  // so hbar = h and N is the default's (paper/09_choices.md, 'The beta rule'), to rounding. (So it is wherever x has
   // four neighbours, two on each side: their distances add up to 4 h.)
   int nodes[64];
   double values[64], reference[64];

@@ -25,8 +25,8 @@ bool positive_definite(const Matrix<Dim>& J) {
 /// singular, e.g. a warm start with lambda h ~ 100 left by a point at the grid edge, and the full
 /// step would throw lambda where every weight but one underflows; the cap lets lambda at most double,
 /// or move by 1, per iteration, and the line search does the rest. If rounding has left J not
-/// positive definite, the step of the authors' damped matrix J + |r| I (dimensionless here, spec
-/// 8.3) is used; failing that, steepest descent -r.
+/// positive definite, the step of the authors' damped matrix J + |r| I (dimensionless here,
+/// paper/09_choices.md) is used; failing that, steepest descent -r.
 template <int Dim>
 Vector<Dim> safeguarded_newton_step(const Vector<Dim>& r, Matrix<Dim> J, const Vector<Dim>& lambda) {
   if (!positive_definite(J)) J += r.norm() * Matrix<Dim>::Identity();
