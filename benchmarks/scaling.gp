@@ -20,8 +20,7 @@ do for [ext in "png pdf"] {
   set output out.".".ext
   set multiplot layout 2,2 title sprintf("MPM cost per particle-step (make bench); solid: 1 thread, dashed: %d threads", cores)
   set title "1D: Dyka bar, 40 to 20480 cells"
-  plot for [s in shapes] for [i in integrators] csv using (pick("1", s, i, 1) == pick("1", s, i, 1) ? $5 : NaN):(pick("1", s, i, 1)) \
-         with linespoints lc rgb colour(s) pt point(i) dt 1 title s." + ".i, \
+  plot for [s in shapes] for [i in integrators] csv using 5:(pick("1", s, i, 1)) with linespoints lc rgb colour(s) pt point(i) dt 1 title s." + ".i, \
        for [s in shapes] for [i in integrators] csv using 5:(pick("1", s, i, cores)) with linespoints lc rgb colour(s) pt point(i) dt 2 notitle
   set title "2D: soil block, 100 to 10^6 particles"
   plot for [s in shapes] for [i in integrators] csv using 5:(pick("2", s, i, 1)) with linespoints lc rgb colour(s) pt point(i) dt 1 title s." + ".i, \
