@@ -1,6 +1,6 @@
 // Runs the independent cases of a verification suite on the machine's cores, never more threads
-// than cores at once (cases x threads <= cores), and says on the terminal when each group of cases
-// has finished.
+// than cores at once (cases x threads <= cores), and says on the terminal when each long case and
+// each group of cases has finished.
 #pragma once
 #include <algorithm>
 #include <atomic>
@@ -62,6 +62,9 @@ void run_cases(const std::string& suite, const std::vector<std::string>& names, 
       continue;
     }
     task(k, static_cast<int>(cores));
+    std::printf("figures: %s: %s done on %u threads (%.0f s)\n", suite.c_str(), names[k].c_str(), cores,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    std::fflush(stdout);
     finished(k);
   }
   std::atomic<std::size_t> next{0};
