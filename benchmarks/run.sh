@@ -12,8 +12,10 @@
 #   scaling.png, scaling.pdf   the chart of scaling.csv;  summary.md  the numbers that matter, in words
 # The time per particle-step is the sum of the step's phases (run.json phase_seconds, output
 # excluded) over steps x particles: set-up and writing files are not the solver's speed.
+#   benchmarks/run.sh BUILD_DIR [--targets]    (--targets: part 1 only, a minute or so)
 set -euo pipefail
 build=${1:-build}
+only_targets=${2:-}
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=$root/$build/bin/mpm
 out=$root/results/bench
@@ -66,6 +68,7 @@ for integrator in fe npc; do
   done
 done
 echo "bench: targets done in $(( $(date +%s) - start )) s"
+if [[ $only_targets == --targets ]]; then column -s, -t "$speed" | cut -c1-200; exit 0; fi
 
 # ---- 2. How cost grows: particle-steps per run about budget (at least 10 steps) ----
 scaling=$out/scaling.csv
