@@ -65,3 +65,23 @@ TEST_CASE("Free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-
 TEST_CASE("Free fall, predictor-corrector: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2 to 1e-11 m") {
   check_fall("npc", [](double g, double dt, double t) { return g * dt * t - 0.5 * g * dt * dt; });
 }
+
+TEST_CASE("Free fall under a [body_force] formula of X and t: the same fall as under [gravity], to the last bit") {
+  // b = (0, -g X / 1.5 + 0 t) at the particle's X = 1.5 is gravity; the particle moves in x, so a
+  // formula of the current x instead of X would not be.
+  for (const std::string integrator : {"fe", "npc"}) {
+    const auto with_gravity = mpm::testing::scene_from_text(falling_particle, {"solver.integrator=\"" + integrator + "\""});
+    const auto with_field = mpm::testing::scene_from_text(
+        falling_particle, {"solver.integrator=\"" + integrator + "\"", "gravity.acceleration=[0.0, 0.0]", "constants.g=9.81",
+                           "body_force.acceleration=[\"0\", \"-g * X / 1.5 + 0 * t\"]"});
+    mpm::testing::Recorder<2> gravity_fall(0), field_fall(0);
+    mpm::run_setup<2>(with_gravity, mpm::build_setup<2>(with_gravity), gravity_fall);
+    mpm::run_setup<2>(with_field, mpm::build_setup<2>(with_field), field_fall);
+    REQUIRE(field_fall.position.size() == gravity_fall.position.size());
+    for (size_t n = 0; n < gravity_fall.position.size(); ++n) {
+      CHECK(field_fall.position[n] == gravity_fall.position[n]);
+      CHECK(field_fall.velocity[n] == gravity_fall.velocity[n]);
+    }
+    CHECK(field_fall.position.back()[1] < 6.5 - 2.0);  // it did fall: 6.5 + 2 t - g t^2 / 2 = 3.6 m at t = 1 s
+  }
+}

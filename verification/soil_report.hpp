@@ -159,7 +159,7 @@ inline std::vector<Claim> poisson_claims(const SoilOutcome& rollers, const SoilO
                         "); mean after the ramp " + metres(s.mean_settlement) + ", finite-strain static " + metres(s.static_log_strain),
                     !rollers.result.failed && std::abs(s.final_error) <= settlement_tolerance * std::abs(s.exact_final), false});
   const auto walled = measure_stress_ratio(margins.result, margins.result.snapshots.back());
-  claims.push_back({"nu = 0.3 with rigid margin rows behind the walls (as uGIMP needs): LME still gives sigma_xx / sigma_yy = "
+  claims.push_back({"nu = 0.3 with rigid margin rows behind the walls: LME still gives sigma_xx / sigma_yy = "
                     "nu/(1-nu) within " + number(ratio_tolerance, "%g"),
                     "largest deviation " + number(walled.largest_deviation, "%.2e") + " (mean " + number(walled.mean, "%.5f") + ")",
                     walled.largest_deviation <= ratio_tolerance, false});

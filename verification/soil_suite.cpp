@@ -29,10 +29,10 @@ struct CaseSpec {
   bool must_complete = false;  ///< a run of Figs. 12-13, nu = 0.3 or free sides: failing it is a hard failure
 };
 
-// The shape functions of Fig. 13. Linear and LME run on a grid whose edges are the walls and the
-// base (scenes/soil_block.toml): LME interpolates there, so the fixed nodes hold the particles.
-// uGIMP's support reaches h + l_p past a particle, beyond the walls: it needs a rigid margin row
-// behind each of them. The same rows for LME are a case of their own ("_wall_margins").
+// The shape functions of Fig. 13, all on a grid whose edges are the walls and the base
+// (scenes/soil_block.toml): LME interpolates there, so the fixed nodes hold the particles, and
+// uGIMP clips its particle domains there (shape/ugimp.hpp). Rigid margin rows behind the walls
+// are a case of their own for LME ("_wall_margins").
 const std::vector<std::string> methods{"linear", "ugimp", "lme0.8", "lme3"};
 const std::vector<std::string> wall_margins{"grid.margin_min=[1,1]", "grid.margin_max=[1,0]"};
 
@@ -43,7 +43,7 @@ std::vector<std::string> join(std::vector<std::string> a, const std::vector<std:
 
 std::vector<std::string> method_overrides(const std::string& method) {
   if (method == "linear") return {"solver.shape=\"linear\""};
-  if (method == "ugimp") return join({"solver.shape=\"ugimp\""}, wall_margins);
+  if (method == "ugimp") return {"solver.shape=\"ugimp\""};
   if (method == "lme0.8") return {"solver.shape=\"lme\"", "solver.lme_gamma=0.8"};
   return {"solver.shape=\"lme\"", "solver.lme_gamma=3.0"};
 }
@@ -108,9 +108,9 @@ void write_introduction(std::ostream& report, const Outcome& paper, size_t runs,
             "in the fifth digit when it is evaluated at the start instead).\n\n"
          << "Choices where the paper is silent: nu = 0 and lateral rollers (paper/09_choices.md); particles at the quarter points "
             "(the top row at Y = 9.5 m, where the authors' LME and Q4 runs used the Gauss point 9.577 m); the observed particle "
-            "is the top-row particle at (4.5, 9.5) m (4.5 and 5.5 are equally near W/2; we take the first); no grid margins "
-            "for linear and LME, whose walls and base are then the edges of the grid, where LME interpolates; one rigid margin "
-            "row behind each wall and below the base for uGIMP, whose support reaches past them.\n\n"
+            "is the top-row particle at (4.5, 9.5) m (4.5 and 5.5 are equally near W/2; we take the first); no grid margins, "
+            "so the walls and base are the edges of the grid, where LME interpolates and uGIMP's particle domains are clipped "
+            "to the grid (the domain's part inside the grid, `mpm/shape/ugimp.hpp`).\n\n"
          << "**Finite strain.** The strain at the base reaches rho g H / E = 12 %. The solver is updated Lagrangian: it "
             "accumulates the strain from the velocity gradient on the current configuration (Eq. 16), i.e. the logarithmic "
             "strain, with Hooke's law on it. Its static column (`mpm/exact/column_log_strain.hpp`) has the same stress "
@@ -176,8 +176,9 @@ void write_refinement_table(std::ostream& report, const verification::SoilLookup
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR\n");
+  const unsigned cores = verification::suite_threads(argc, argv);
+  if (argc != 4 || cores == 0) {
+    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR [--threads N]\n");
     return 2;
   }
   const std::string folder = argv[1], report_path = argv[2], scenes = argv[3];
@@ -194,8 +195,15 @@ int main(int argc, char** argv) {
     }
   }
   std::vector<Outcome> outcomes(cases.size());
-  const unsigned cores = verification::run_in_parallel(cases.size(), [&](size_t k) {
-    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides);
+  std::vector<std::string> names;
+  std::vector<bool> wide;  // the meshes with enough particles for the solver's own threads
+  for (const auto& spec : cases) {
+    names.push_back(spec.name);
+    const mpm::io::Scene scene = mpm::load_scene(scenes + "/" + spec.scene_file, spec.overrides);
+    wide.push_back(mpm::build_setup<2>(scene).particles.size() >= mpm::parallel_threshold);
+  }
+  verification::run_cases("soil", names, wide, cores, [&](size_t k, int threads) {
+    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides, threads);
     outcomes[k].settlement = verification::measure_settlement(outcomes[k].result);
   });
   std::map<std::string, const Outcome*> by_name;
@@ -265,8 +273,8 @@ int main(int argc, char** argv) {
   verification::write_claims(report, poisson_claims);
   verification::write_claims(report, stability);
   report << "### Beyond the paper: boundaries\n\n"
-         << "LME interpolates only on the boundary of the convex hull of the nodes. With a rigid margin row behind a wall "
-            "(what uGIMP needs), the wall's own nodes are inside the hull, where the LME functions of the free nodes beyond "
+         << "LME interpolates only on the boundary of the convex hull of the nodes. With a rigid margin row behind a wall, "
+            "the wall's own nodes are inside the hull, where the LME functions of the free nodes beyond "
             "them do not vanish, so the particles next to the wall move with those nodes: the wall yields. The wider the "
             "support (smaller gamma), the more it yields.\n\n";
   verification::write_claims(report, boundary);

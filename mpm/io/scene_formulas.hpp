@@ -366,7 +366,7 @@ TEST_CASE("Scene formulas: constants, a formula against a hand value, each bad f
   CHECK(bar.body_force->components[0](&x, &X, 2.0) == doctest::Approx(0.75 * 2.0 + 0.5));
   const Formula copy = bar.body_force->components[0];  // a copy evaluates on its own
   CHECK(copy(&X, &X, 1.0) == doctest::Approx(1.0));
-  CHECK(bar.body_force->source.line == 11);
+  CHECK(bar.body_force->source.line == 13);  // the line of body_force.acceleration
 
   // 2D: the body force as Model's field, and the initial stress at the particles.
   const auto block = read("[initial_field]\nstress = [\"-density * 9.81 * (10 - Y)\", \"0\", \"x * y\"]\n"
@@ -382,7 +382,7 @@ TEST_CASE("Scene formulas: constants, a formula against a hand value, each bad f
   CHECK(particles.stress[0](1, 0) == doctest::Approx(8.0));
 
   CHECK(message_of("[initial_field]\nvelocity = [\"2 * x +\"]\n") ==
-        "error: f.toml:5: initial_field.velocity: '2 * x +': Unexpected end of expression at position 7");
+        "error: f.toml:5: initial_field.velocity: '2 * x +': Unexpected end of expression at position 8");
   CHECK(message_of("[initial_field]\nvelocity = [\"sin(t)\"]\n") ==
         "error: f.toml:5: initial_field.velocity: 'sin(t)': Unexpected token \"t\" found at position 4. "
         "(unknown name; known here: x, X, pi, density, poisson_ratio, young_modulus)");

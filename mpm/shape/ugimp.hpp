@@ -11,6 +11,17 @@
 ///
 /// Unlike the linear hat, S is C1: grad N does not jump when a particle crosses a cell face,
 /// which is why uGIMP has less grid-crossing noise than linear shapes (Fig. 6).
+///
+/// At the grid's edge (a wall, or a free end with no margin) the particle's domain is clipped to
+/// the grid, the usual treatment of GIMP domains at a boundary: per axis the segment
+/// \f$ [x_p - l_p, x_p + l_p] \cap [x_{min}, x_{max}] = [a, b] \f$ replaces the particle's, and the weight
+/// and its gradient are the hat and the hat's gradient averaged over it,
+/// \f$ S_I = \frac{1}{b - a}\int_a^b \hat N_I \f$, \f$ G_I = \frac{\hat N_I(b) - \hat N_I(a)}{b - a} \f$: the formulas
+/// above with centre (a + b)/2 and half-length (b - a)/2. Partition of unity, \f$ \sum_I G_I = 0 \f$ and
+/// \f$ \sum_I x_I \otimes \nabla N_I = \mathbf I \f$ (a uniform stretch gives its exact strain rate) hold;
+/// \f$ \sum_I N_I x_I \f$ is the clipped centre, and G is no longer the derivative of S in x_p (our
+/// choice: the averaged gradient is what the weak form, Eq. (14), integrates over the domain).
+/// So no ghost cells are needed behind a wall, and a particle is never refused for its size.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -144,27 +155,31 @@ class UgimpShape {
   Vector<Dim> half_length(int particle) const { return relative_half_length_[particle] * grid_.spacing(); }
 
   /// N_I(x_p) and grad N_I(x_p) for every node with \f$ |\Delta_a| < h + l_p \f$ on each axis a
-  /// (initialise() first). Nodes nearer to that edge of the support than the rounding of the lattice
-  /// coordinate xi, 8 eps (|xi| + 2) cells, are left out, so that a particle touching the grid's edge
-  /// is not refused for rounding: their S is below (8 eps (|xi| + 2))^2 h / (4 l_p), ~1e-24 h / l_p on a
-  /// grid of 1000 cells.
-  /// \throws ShapeFailure if x_p is outside the grid, or if the particle's support crosses the
-  /// edge of the grid (a stencil node would lie outside it).
+  /// (initialise() first), the particle's domain clipped to the grid (see the file's comment). Nodes
+  /// nearer to that edge of the support than the rounding of the lattice coordinate xi,
+  /// 8 eps (|xi| + 2) cells, are left out: their S is below (8 eps (|xi| + 2))^2 h / (4 l_p),
+  /// ~1e-24 h / l_p on a grid of 1000 cells.
+  /// \throws ShapeFailure if x_p is outside the grid.
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
     const double h = grid_.spacing();
     const Vector<Dim>& lambda = relative_half_length_[particle];
     std::array<AxisFactors<max_nodes_per_axis>, Dim> axes;
     for (int axis = 0; axis < Dim; ++axis) {
-      const double xi = (x[axis] - grid_.origin()[axis]) / h;  // lattice coordinate of x
-      const double slack = 8.0 * std::numeric_limits<double>::epsilon() * (std::abs(xi) + 2.0);
-      const double reach = 1.0 + lambda[axis] - slack;
-      const int first = static_cast<int>(std::floor(xi - reach)) + 1;     // first node with xi - k < reach
-      int last = static_cast<int>(std::ceil(xi + reach)) - 1;             // last node with k - xi < reach
+      double centre = (x[axis] - grid_.origin()[axis]) / h, half = lambda[axis];  // lattice coordinate, l_p / h
+      const double cells = grid_.cells(axis);
+      if (centre - half < 0.0 || centre + half > cells) {  // clip [centre - half, centre + half] to [0, cells]
+        const double lower = std::max(centre - half, 0.0), upper = std::min(centre + half, cells);
+        centre = 0.5 * (lower + upper);
+        half = 0.5 * (upper - lower);
+      }
+      const double slack = 8.0 * std::numeric_limits<double>::epsilon() * (std::abs(centre) + 2.0);
+      const double reach = 1.0 + half - slack;
+      const int first = std::max(static_cast<int>(std::floor(centre - reach)) + 1, 0);      // first node with xi - k < reach
+      int last = std::min(static_cast<int>(std::ceil(centre + reach)) - 1, grid_.cells(axis));  // last with k - xi < reach
       last = std::min(last, first + nodes_along_axis(lambda[axis]) - 1);  // only ever trims a node with S ~ 0
-      if (first < 0 || last > grid_.cells(axis)) throw support_left_grid(particle, x, axis, lambda[axis] * h);
       for (int k = first; k <= last; ++k) {
-        const GimpFactor s = gimp_factor(xi - k, lambda[axis]);
+        const GimpFactor s = gimp_factor(centre - k, half);
         axes[axis].add(k, s.value, s.derivative / h);
       }
     }
@@ -178,15 +193,6 @@ class UgimpShape {
  private:
   /// Most lattice points an open interval of length 2 (1 + lambda) can hold (lambda = 1/2 is 3).
   static int nodes_along_axis(double lambda) { return static_cast<int>(std::ceil(2.0 * (1.0 + lambda) - 1e-9)); }
-
-  ShapeFailure support_left_grid(int particle, const Vector<Dim>& x, int axis, double half_length) const {
-    std::ostringstream cause;
-    cause.precision(9);
-    cause << "uGIMP support left the grid: along " << axis_name(axis) << " the particle spans ["
-          << x[axis] - half_length << ", " << x[axis] + half_length << "] but the grid is ["
-          << grid_.origin()[axis] << ", " << grid_.upper_corner()[axis] << "]";
-    return ShapeFailure(particle, cause.str());
-  }
 
   Grid<Dim> grid_;
   std::vector<Vector<Dim>> relative_half_length_;  ///< l_p / h per particle and axis
@@ -349,7 +355,81 @@ TEST_CASE("uGIMP tends to the linear shape functions as the particle shrinks") {
   }
 }
 
-TEST_CASE("uGIMP: the support must stay in the grid, sizes are checked, capacity is reached") {
+TEST_CASE("uGIMP at the grid's edge: the particle's domain clipped to the grid, weights and gradients by hand") {
+  // 1D, h = 0.25 on [0, 2] (cell units below: s = x / h). A particle of l_p = h/2 at x = 0.05 spans
+  // [-0.3, 0.7] cells, clipped to [0, 0.7]: N_0 = mean of 1 - s = 0.65, N_1 = mean of s = 0.35,
+  // grad N = (N(0.7) - N(0)) / 0.7 per cell: -1 and +1, i.e. -4 and +4 per metre.
+  const Grid<1> line(Vector<1>(0.0), 0.25, {8});
+  UgimpShape<1> gimp(line);
+  gimp.initialise(1, Vector<1>(0.125));
+  int nodes[16];
+  double values[16];
+  Vector<1> gradients1[16];
+  REQUIRE(gimp.evaluate(0, Vector<1>(0.05), nodes, values, gradients1) == 2);
+  CHECK(nodes[0] == 0);
+  CHECK(values[0] == doctest::Approx(0.65).epsilon(1e-14));
+  CHECK(values[1] == doctest::Approx(0.35).epsilon(1e-14));
+  CHECK(gradients1[0][0] == doctest::Approx(-4.0).epsilon(1e-14));
+  CHECK(gradients1[1][0] == doctest::Approx(4.0).epsilon(1e-14));
+  // Centred on the wall, x = 0: [0, 0.5] cells, N_0 = 0.75, N_1 = 0.25. At the upper wall, x = 2 - 0.02:
+  // [7.42, 8.42] clipped to [7.42, 8]: N_7 = mean of 8 - s = 0.29, N_8 = 0.71.
+  REQUIRE(gimp.evaluate(0, Vector<1>(0.0), nodes, values, gradients1) == 2);
+  CHECK(values[0] == doctest::Approx(0.75).epsilon(1e-14));
+  REQUIRE(gimp.evaluate(0, Vector<1>(1.98), nodes, values, gradients1) == 2);
+  CHECK(nodes[0] == 7);
+  CHECK(values[0] == doctest::Approx(0.29).epsilon(1e-13));
+  CHECK(values[1] == doctest::Approx(0.71).epsilon(1e-13));
+  CHECK(gradients1[1][0] == doctest::Approx(4.0).epsilon(1e-13));
+  // A particle of l_p = h at s = 0.4 spans [-0.6, 1.4], clipped to [0, 1.4]: the integrals of the hats
+  // over it are 0.5, 0.5 + 0.32 = 0.82 and 0.08; their gradients' are -1, 0.6 and 0.4. Divided by 1.4.
+  gimp.set_half_length(0, Vector<1>(0.25));
+  REQUIRE(gimp.evaluate(0, Vector<1>(0.1), nodes, values, gradients1) == 3);
+  CHECK(values[0] == doctest::Approx(0.5 / 1.4).epsilon(1e-14));
+  CHECK(values[1] == doctest::Approx(0.82 / 1.4).epsilon(1e-14));
+  CHECK(values[2] == doctest::Approx(0.08 / 1.4).epsilon(1e-13));
+  CHECK(gradients1[0][0] * 0.25 == doctest::Approx(-1.0 / 1.4).epsilon(1e-14));
+  CHECK(gradients1[1][0] * 0.25 == doctest::Approx(0.6 / 1.4).epsilon(1e-14));
+  CHECK(gradients1[2][0] * 0.25 == doctest::Approx(0.4 / 1.4).epsilon(1e-14));
+
+  // The properties a clipped particle keeps, in 1D and 2D, along every edge and in the corners:
+  // sum N = 1 and sum grad N = 0 to 1e-12, sum x_I (x) grad N = I (a uniform stretch is exact),
+  // N >= 0, and sum N x_I = the centre of the clipped domain.
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 0.5, {6, 4});
+  for (double l : {0.0625, 0.125, 0.25, 0.5}) {
+    UgimpShape<2> gimp2(plane);
+    gimp2.initialise(1, Vector<2>(l, 0.5 * l));
+    const Vector<2> half(l, 0.5 * l);
+    for (double fx : {0.0, 1e-9, 0.3, 0.99, 1.0}) {
+      for (double fy : {0.0, 0.5, 1.0}) {
+        for (const Vector<2>& corner : {Vector<2>(0.0, 0.0), Vector<2>(3.0, 2.0), Vector<2>(0.0, 2.0), Vector<2>(3.0, 0.0)}) {
+          const Vector<2> inward((corner[0] == 0.0 ? 1.0 : -1.0) * fx * l, (corner[1] == 0.0 ? 1.0 : -1.0) * fy * 0.5 * l);
+          const Vector<2> along_edge(0.0, fy == 0.5 ? (corner[1] == 0.0 ? 0.7 : -0.7) : 0.0);  // away from the corner
+          const Vector<2> x = corner + inward + along_edge;
+          Vector<2> gradients[16];
+          const int count = gimp2.evaluate(0, x, nodes, values, gradients);
+          double sum = 0.0;
+          Vector<2> reproduced = Vector<2>::Zero(), gradient_sum = Vector<2>::Zero();
+          Matrix<2> gradient_of_x = Matrix<2>::Zero();
+          for (int k = 0; k < count; ++k) {
+            CHECK(values[k] >= 0.0);
+            sum += values[k];
+            reproduced += values[k] * plane.node_position(nodes[k]);
+            gradient_sum += gradients[k];
+            gradient_of_x += plane.node_position(nodes[k]) * gradients[k].transpose();
+          }
+          const Vector<2> lower = (x - half).cwiseMax(plane.origin()), upper = (x + half).cwiseMin(plane.upper_corner());
+          INFO("l_p = ", half.transpose(), ", x = ", x.transpose());
+          CHECK(std::abs(sum - 1.0) <= 1e-12);
+          CHECK(gradient_sum.norm() * plane.spacing() <= 1e-12);
+          CHECK((gradient_of_x - Matrix<2>::Identity()).norm() <= 1e-12);
+          CHECK((reproduced - 0.5 * (lower + upper)).norm() / plane.spacing() <= 1e-12);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("uGIMP: sizes are checked, capacity is reached, a particle off the grid is refused") {
   const Grid<2> plane(Vector<2>(0.0, 0.0), 0.5, {6, 4});
   Particles<2> particles;
   particles.add(Vector<2>(0.125, 0.125), 1.0, 1.0, Vector<2>::Zero(), Vector<2>(0.125, 0.125));
@@ -363,24 +443,19 @@ TEST_CASE("uGIMP: the support must stay in the grid, sizes are checked, capacity
   Vector<2> gradients[16];
   CHECK(gimp.evaluate(0, Vector<2>(0.125, 0.125), nodes, values, gradients) == 4);  // touches the edge: fine
   CHECK(gimp.evaluate(0, Vector<2>(0.5, 1.0), nodes, values, gradients) == 9);       // on a node: 3 x 3
-  CHECK(gimp.diagnostics().neighbours_max == 9);
-  CHECK(gimp.diagnostics().evaluations == 2);
+  CHECK(gimp.diagnostics().neighbours_max() == 9);
+  CHECK(gimp.diagnostics().evaluations() == 2);
 
-  // The particle's support crossing the grid edge, and the particle leaving the grid.
-  CHECK_THROWS_WITH_AS(gimp.evaluate(0, Vector<2>(0.12, 1.0), nodes, values, gradients),
-                       doctest::Contains("uGIMP support left the grid: along x the particle spans [-0.005, 0.245]"),
-                       ShapeFailure);
-  CHECK_THROWS_WITH_AS(gimp.evaluate(0, Vector<2>(1.0, 1.9), nodes, values, gradients),
-                       doctest::Contains("along y"), ShapeFailure);
-  CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(3.0, 1.0), nodes, values, gradients),
-                       doctest::Contains("the particle spans [2.875, 3.125] but the grid is [0, 3]"), ShapeFailure);
+  // Crossing the grid's edge is clipped (above); leaving the grid is refused.
+  CHECK(gimp.evaluate(0, Vector<2>(0.12, 1.0), nodes, values, gradients) == 6);
+  CHECK(gimp.evaluate(1, Vector<2>(3.0, 1.0), nodes, values, gradients) == 6);
   CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(3.0001, 1.0), nodes, values, gradients), "particle left the grid",
                        ShapeFailure);
   CHECK_THROWS_WITH_AS(gimp.evaluate(1, Vector<2>(1.0, -1e-300), nodes, values, gradients), "particle left the grid",
                        ShapeFailure);
   int failed_particle = -1;
   try {
-    gimp.evaluate(1, Vector<2>(0.1, 1.0), nodes, values, gradients);
+    gimp.evaluate(1, Vector<2>(-0.1, 1.0), nodes, values, gradients);
   } catch (const ShapeFailure& failure) {
     failed_particle = failure.particle;
   }

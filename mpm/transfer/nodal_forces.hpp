@@ -14,6 +14,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include "mpm/core/parallel.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/loading/body_force.hpp"
 #include "mpm/particles/particles.hpp"
@@ -26,11 +27,10 @@ namespace mpm {
 /// with the particle volume V_p = m_p / rho_p of the current density.
 template <int Dim>
 void add_internal_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  for (int p = 0; p < particles.size(); ++p) {
+  scatter_to_nodes(particles.size(), grid.nodal_force, grid.vector_copies, [&](int p, Vector<Dim>* nodal_force) {
     const Matrix<Dim> volume_stress = particles.volume(p) * particles.stress[p];
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      grid.nodal_force[stencils.node[k]] -= volume_stress * stencils.gradient[k];
-  }
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_force[stencils.node[k]] -= volume_stress * stencils.gradient[k];
+  });
 }
 
 /// Eq. (15), body-force part: \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b_p \f$, with b_p the body
@@ -40,10 +40,10 @@ template <int Dim>
 void add_body_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils,
                     const ParticleBodyForces<Dim>& body_force, GridFields<Dim>& grid) {
   if (body_force.all_zero) return;
-  for (int p = 0; p < particles.size(); ++p) {
+  scatter_to_nodes(particles.size(), grid.nodal_force, grid.vector_copies, [&](int p, Vector<Dim>* nodal_force) {
     const Vector<Dim> force = particles.mass[p] * body_force.per_unit_mass[p];
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k) grid.nodal_force[stencils.node[k]] += stencils.value[k] * force;
-  }
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_force[stencils.node[k]] += stencils.value[k] * force;
+  });
 }
 
 TEST_CASE("Nodal forces on the worked example: Eq. (14) by hand, Eq. (15) sums to the weight") {
@@ -53,14 +53,14 @@ TEST_CASE("Nodal forces on the worked example: Eq. (14) by hand, Eq. (15) sums t
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(-25.0));
   CHECK(example.fields.nodal_force[2][0] == doctest::Approx(20.0));
   example.fields.reset();
-  ParticleBodyForces<1> gravity{{Vector<1>(-9.81), Vector<1>(-9.81)}, false};
+  const ParticleBodyForces<1> gravity{{Vector<1>(-9.81), Vector<1>(-9.81)}, false, true};
   add_body_force(example.particles, example.stencils, gravity, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-9.81 * 1.5));
   CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
         doctest::Approx(-9.81 * 6.0));
   // A different b_p per particle: the nodal forces still sum to sum_p m_p b_p (partition of unity).
   example.fields.reset();
-  const ParticleBodyForces<1> field{{Vector<1>(2.0), Vector<1>(-1.0)}, false};
+  const ParticleBodyForces<1> field{{Vector<1>(2.0), Vector<1>(-1.0)}, false, false};
   add_body_force(example.particles, example.stencils, field, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(0.75 * 2.0 * 2.0));
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(0.25 * 2.0 * 2.0 - 0.5 * 4.0 * 1.0));
