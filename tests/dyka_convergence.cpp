@@ -31,7 +31,7 @@ inline double dyka_rms(const std::vector<std::string>& overrides) {
 
 }  // namespace mpm::testing
 
-TEST_CASE("Dyka bar, linear + forward Euler: the RMS of v_A falls from 40 to 80 to 160 cells") {
+TEST_CASE("Eq. (43): Dyka bar, linear + forward Euler: the RMS of v_A falls from 40 to 80 to 160 cells") {
   const double rms40 = mpm::testing::dyka_rms({"grid.cells=[40]"});
   const double rms80 = mpm::testing::dyka_rms({"grid.cells=[80]"});
   const double rms160 = mpm::testing::dyka_rms({"grid.cells=[160]"});

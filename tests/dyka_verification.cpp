@@ -37,7 +37,7 @@ TEST_CASE("Dyka subset: every method converges from 20 to 80 cells, conserves ma
   }
 }
 
-TEST_CASE("Dyka subset: the stability limits of linear shape functions (measured 2.00 for FE, 1.42 for NPC)") {
+TEST_CASE("Eq. (42): Dyka subset: the stability limits of linear shape functions (measured 2.00 for FE, 1.42 for NPC)") {
   CHECK_FALSE(dyka("linear", "fe", 40, 1.9).failed);
   const auto unstable_fe = dyka("linear", "fe", 40, 2.1);
   CHECK(unstable_fe.failed);

@@ -58,10 +58,10 @@ void check_fall(const std::string& integrator, Expected expected_offset) {
 
 }  // namespace
 
-TEST_CASE("Free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
+TEST_CASE("Eqs. (19)-(22): free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
   check_fall("fe", [](double g, double dt, double t) { return 0.5 * g * dt * t; });
 }
 
-TEST_CASE("Free fall, predictor-corrector: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2 to 1e-11 m") {
+TEST_CASE("Eqs. (26)-(33): free fall, predictor-corrector: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2 to 1e-11 m") {
   check_fall("npc", [](double g, double dt, double t) { return g * dt * t - 0.5 * g * dt * dt; });
 }

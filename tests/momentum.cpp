@@ -54,12 +54,12 @@ void check_momentum(const std::string& shape, const std::string& integrator) {
 
 }  // namespace
 
-TEST_CASE("Free bar, linear shape functions: momentum constant to round-off, FE and NPC") {
+TEST_CASE("Eq. (2), Eq. (12): free bar, linear shape functions: momentum constant to round-off, FE and NPC") {
   check_momentum("linear", "fe");
   check_momentum("linear", "npc");
 }
 
-TEST_CASE("Free bar, uGIMP and LME: momentum constant to round-off, FE and NPC") {
+TEST_CASE("Eq. (2), Eq. (12): free bar, uGIMP and LME: momentum constant to round-off, FE and NPC") {
   check_momentum("ugimp", "fe");
   check_momentum("ugimp", "npc");
   check_momentum("lme", "fe");

@@ -208,14 +208,14 @@ class ElasticBar {
 // Tests. Every expected value below is derived by hand in the comments, never by the code under test.
 // ---------------------------------------------------------------------------------------------------
 
-TEST_CASE("exact::ElasticBar: wave speed and impedance of the Dyka bar (spec 5.1.6)") {
+TEST_CASE("Eq. (A.6), Eq. (A.19): exact::ElasticBar: wave speed and impedance of the Dyka bar") {
   const ElasticBar bar(0.1333, 200e9, 7833.0, {});
   CHECK(bar.wave_speed() == doctest::Approx(5053.02).epsilon(1e-6));  // sqrt(200e9 / 7833)
   CHECK(bar.impedance() == doctest::Approx(3.958e7).epsilon(1e-3));   // 7833 * 5053.02
   CHECK(bar.impedance() == doctest::Approx(7833.0 * bar.wave_speed()).epsilon(1e-14));
 }
 
-TEST_CASE("exact::ElasticBar: boundary relations, v(L,t) = 0 and sigma(0,t) = 0, for any data and time") {
+TEST_CASE("Eq. (A.19): exact::ElasticBar: boundary relations, v(L,t) = 0 and sigma(0,t) = 0, for any data and time") {
   // Deliberately messy data: velocity and stress, gaps, adjacent pieces, a piece touching each end.
   const double length = 2.0;
   const ElasticBar bar(length, 3.0, 2.0,
@@ -229,7 +229,7 @@ TEST_CASE("exact::ElasticBar: boundary relations, v(L,t) = 0 and sigma(0,t) = 0,
   }
 }
 
-TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6)") {
+TEST_CASE("Eqs. (A.16)-(A.19): exact::ElasticBar: the Dyka bar, velocity of the free end (the test-cases page)") {
   // L = 0.1333 m, a = L/4, v0 = -5 m/s on [0, a]. Hand derivation: R^I_0 = R^II_0 = v0/2 on [0, a], and
   // v(0,t) = 2 F(ct). Unfolding F (spec 7.1 step 2): F = v0/2 on [0, a], -v0/2 on [2L - a, 2L + a],
   // +v0/2 on [4L - a, 4L + a], ... so v(0,t) = v0 for ct < a, 0 until 2L - a, -v0 until 2L + a, 0 until
@@ -269,7 +269,7 @@ TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6
   CHECK(bar.velocity(2.0 * quarter, 0.0) == 0.0);
 }
 
-TEST_CASE("exact::ElasticBar: Dyka tension plateau Z|v0|/2, its doubling at the fixed end, sigma = -Z v behind a right-going front") {
+TEST_CASE("Eq. (A.5), Eq. (A.19): exact::ElasticBar: Dyka tension plateau Z|v0|/2, its doubling at the fixed end, sigma = -Z v behind a right-going front") {
   // Hand derivation: R^I_0 = v0/2 on [0, a] plus its free-end image gives a right-going pulse of
   // R^I = v0/2 occupying X - ct in (-a, a); R^II = 0 in the interior for a < ct < L - a. There
   // v = R^I = v0/2 = -2.5 m/s and sigma = -Z R^I = -Z v0/2 = +98.95 MPa (tension). At the fixed end,
@@ -303,7 +303,7 @@ TEST_CASE("exact::ElasticBar: Dyka tension plateau Z|v0|/2, its doubling at the 
   }
 }
 
-TEST_CASE("exact::ElasticBar: a bar hitting the wall as a whole gives the square wave") {
+TEST_CASE("Eqs. (A.16)-(A.19): exact::ElasticBar: a bar hitting the wall as a whole gives the square wave") {
   // Uniform v0 = +1 m/s towards the fixed end, sigma0 = 0: R^I_0 = R^II_0 = v0/2 on [0, L], hence
   // F = +v0/2 on (0, L), -v0/2 on (L, 3L), +v0/2 on (3L, 4L), v = F(ct - X) + F(ct + X),
   // sigma = Z [F(ct + X) - F(ct - X)]. Phase by phase (c t measured in L):
@@ -339,7 +339,7 @@ TEST_CASE("exact::ElasticBar: a bar hitting the wall as a whole gives the square
   CHECK(bar.velocity(0.0, length / c) == doctest::Approx(0.0));  // at the switch: average of v0 and -v0
 }
 
-TEST_CASE("exact::ElasticBar: a stress pulse splits into two halves, sigma = -Z v right-going and +Z v left-going") {
+TEST_CASE("Eqs. (A.17)-(A.19): exact::ElasticBar: a stress pulse splits into two halves, sigma = -Z v right-going and +Z v left-going") {
   // sigma0 = s on [0.4L, 0.6L], v0 = 0: R^I_0 = -s/(2Z), R^II_0 = s/(2Z). At ct = 0.25 L the halves are
   // centred at 0.75L (right-going: sigma = s/2, v = -s/(2Z)) and 0.25L (left-going: sigma = s/2, v = +s/(2Z)).
   // A compressive pulse (s < 0) pushes the material outwards on both sides.

@@ -247,7 +247,7 @@ class SoilColumn {
 // H = 10 m, g = 9.81, T = 20 s.
 // ---------------------------------------------------------------------------------------------------
 
-TEST_CASE("exact::SoilColumn: closed-form static solution and wave speed (spec 7.2)") {
+TEST_CASE("exact::SoilColumn: closed-form static solution and wave speed (the exact-column page)") {
   const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0);
   // c = sqrt(5e6 / 6000) = 28.8675 m/s, T1 = 4H/c = 1.3856 s.
   CHECK(column.wave_speed() == doctest::Approx(28.8675).epsilon(1e-5));
@@ -265,7 +265,7 @@ TEST_CASE("exact::SoilColumn: closed-form static solution and wave speed (spec 7
   CHECK_THROWS_AS(SoilColumn(10.0, 5e6, 6000.0, 9.81, 20.0, 0), std::invalid_argument);
 }
 
-TEST_CASE("exact::SoilColumn: gravity ramp of Eq. (44)") {
+TEST_CASE("Eq. (44): exact::SoilColumn: its gravity ramp") {
   const double g = 9.81, period = 20.0;
   const SoilColumn column(10.0, 5e6, 6000.0, g, period);
   CHECK(column.gravity_at(0.0) == doctest::Approx(0.0).scale(1e-14));      // sin(-pi/2) + 1 = 0
@@ -289,7 +289,7 @@ TEST_CASE("exact::SoilColumn: gravity ramp of Eq. (44)") {
   CHECK(constant.gravity_at(3.0) == g);
 }
 
-TEST_CASE("exact::SoilColumn: the modal series of the static solution is the closed form (spec 7.2 static check)") {
+TEST_CASE("exact::SoilColumn: the modal series of the static solution is the closed form (static check of the exact-column page)") {
   // sum_n -2g/(H c^2 k_n^3) sin(k_n y) = -(g/c^2)(H y - y^2/2); terms ~ n^-3, so 2000 terms reach 1e-6 relative.
   const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0, 2000);
   for (double y : {0.5, 1.0, 2.0, 3.7, 5.0, 7.5, 9.0, 9.57735, 10.0}) {
@@ -321,7 +321,7 @@ TEST_CASE("exact::SoilColumn: after the ramp the solution oscillates about the s
   }
 }
 
-TEST_CASE("exact::SoilColumn: values of the table in spec 7.2") {
+TEST_CASE("exact::SoilColumn: values of the table of the exact-column page") {
   const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0);
   struct Row { double time, top_displacement; };
   const std::vector<Row> top{{2.5, -0.0857}, {5.0, -0.2932}, {7.5, -0.5022}, {10.0, -0.5904},
@@ -358,7 +358,7 @@ TEST_CASE("exact::SoilColumn: mode-accelerated sum equals the plain modal series
   }
 }
 
-TEST_CASE("exact::SoilColumn: after the ramp u_top stays in [-0.5909, -0.5863] m (spec 7.2)") {
+TEST_CASE("exact::SoilColumn: after the ramp u_top stays in [-0.5909, -0.5863] m (the exact-column page)") {
   const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0);
   double lowest = 0.0, highest = -1.0;
   for (int i = 0; i <= 2000; ++i) {

@@ -244,7 +244,7 @@ void check_ugimp_properties(UgimpShape<Dim>& shape, const Grid<Dim>& grid, int p
 
 }  // namespace testing
 
-TEST_CASE("uGIMP 1D weight: the spec 4.2 table by hand, its continuity, and against its definition") {
+TEST_CASE("uGIMP 1D weight: the table of the shape-functions page by hand, its continuity, and against its definition") {
   const double lambda = 0.25;  // l_p = h/4: two particles per cell
   // By hand. Exact in binary for lambda = 1/4, so only the last bit may differ.
   CHECK(gimp_factor(0.0, lambda).value == doctest::Approx(1.0 - lambda / 2.0).epsilon(1e-15));  // 1 - l_p/(2h)
