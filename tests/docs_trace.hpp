@@ -167,7 +167,7 @@ inline std::vector<Section> sections_in(const std::string& text, const std::stri
                                         std::vector<std::string>& problems) {
   static const std::regex page_title(R"(^# .*\{#([A-Za-z0-9_]+)\}\s*$)");
   static const std::regex heading(R"(^### Eqs?\. \(([^)]*)\): (.+?) \{#([A-Za-z0-9_]+)\}\s*$)");
-  static const std::regex loose_heading(R"(^#{1,6} .*Eqs?\. \()");
+  static const std::regex loose_heading(R"(^#{1,6} Eqs?\. \([^)]*\):)");
   static const std::regex reference(R"(\\ref\s+(mpm::[A-Za-z0-9_:]+))");
   static const std::regex in_file(R"(\bin\s+`?((?:mpm|tests|verification)/[A-Za-z0-9_/]+\.(?:hpp|cpp))`?)");
   static const std::regex test_reference(R"(^- test:\s*\\ref\s+([A-Za-z0-9_]+))");
