@@ -143,15 +143,15 @@ struct Section {
   std::string label;      ///< "16", "A.5"
   std::string title;      ///< the words after "Eq. (16): "
   std::string page_file;  ///< paper/02_mpm_forward_euler.md
-  std::string page_id;    ///< the page's {#id}
+  std::string page_id;    ///< the page's id, from `{#id}` on its first line
   int line = 0;
-  std::string anchor;     ///< what {#...} says
+  std::string anchor;     ///< what the heading's `{#...}` says
   bool has_display_formula = false;
-  std::string formula;    ///< the text between \f[ and \f]
+  std::string formula;    ///< the text between `\f[` and `\f]`
   std::vector<KernelReference> kernels;
   std::vector<std::string> malformed_kernel_lines;
   bool no_kernel = false;
-  std::string test_anchor;  ///< the \ref target of the `- test:` line, empty if none
+  std::string test_anchor;  ///< the target of the `\ref` on the `- test:` line, empty if none
 };
 
 inline std::string trim(const std::string& text) {
