@@ -39,29 +39,63 @@ done
 failures=0
 fail() { echo "docs_browser: FAIL: $*"; failures=$((failures + 1)); }
 
-# Open every page after MathJax ran (virtual time lets its timers and loads finish), two at a time.
-dump() {
-  local page=$1 profile
-  profile=$(mktemp -d "$work/profile.XXXX")
-  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
-    --disable-background-networking --disable-component-update --disable-sync --disable-extensions \
-    --user-data-dir="$profile" --virtual-time-budget=10000 --dump-dom "file://$html/$page" \
-    > "$work/${page//\//_}.dom" 2> "$work/${page//\//_}.err"
-  rm -rf "$profile"
+# One Chromium run opens every page in turn in an iframe of a check page, waits for MathJax to finish
+# typesetting it (MathJax.Hub.Queue), and writes what it found into the check page, which Chromium dumps.
+{
+  echo '<html><body><pre id="out"></pre><script>'
+  printf 'var base = "file://%s/";\nvar pages = [' "$html"
+  printf '"%s",' "${pages[@]}"
+  echo '];'
+  cat <<'JS'
+var i = 0, out = document.getElementById('out');
+function line(s) { out.appendChild(document.createTextNode(s + "\n")); }
+function next() {
+  if (i >= pages.length) { line("DONE"); return; }
+  var page = pages[i++], frame = document.createElement('iframe'), reported = false;
+  frame.onload = function () {
+    var w = frame.contentWindow;
+    var finish = function () {
+      if (reported) return;
+      reported = true;
+      var d = w.document, text = d.body ? d.body.textContent : "";
+      line(page + "\tloaded\t" + (d.body ? 1 : 0));
+      line(page + "\tmathjax\t" + (w.MathJax && w.MathJax.Hub ? 1 : 0));
+      line(page + "\trendered\t" + d.querySelectorAll('.MathJax, .MathJax_Display').length);
+      line(page + "\tmerror\t" + d.querySelectorAll('.merror').length);
+      line(page + "\tundefined\t" + (text.indexOf("Undefined control sequence") >= 0 ? 1 : 0));
+      line(page + "\tprocessing\t" + (text.indexOf("Math Processing Error") >= 0 ? 1 : 0));
+      var links = d.querySelectorAll('a[href]');
+      for (var k = 0; k < links.length; ++k) line(page + "\thref\t" + links[k].getAttribute('href'));
+      frame.remove();
+      next();
+    };
+    if (w.MathJax && w.MathJax.Hub && w.MathJax.Hub.Queue) w.MathJax.Hub.Queue(finish); else finish();
+  };
+  frame.src = base + page;
+  document.body.appendChild(frame);
 }
-export -f dump
-export browser html work
-printf '%s\n' "${pages[@]}" | xargs -P 2 -I{} bash -c 'dump "$@"' _ {}
+next();
+</script></body></html>
+JS
+} > "$work/check.html"
+profile=$(mktemp -d "$work/profile.XXXX")
+timeout 600 "$browser" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
+  --disable-background-networking --disable-component-update --disable-sync --disable-extensions \
+  --allow-file-access-from-files --user-data-dir="$profile" --virtual-time-budget=600000 \
+  --dump-dom "file://$work/check.html" > "$work/check.dom" 2> "$work/chromium.err"
+sed -n '/<pre id="out">/,/<\/pre>/p' "$work/check.dom" | sed 's/^<html><head><\/head><body><pre id="out">//; s/<\/pre>.*//' \
+  | sed 's/&amp;/\&/g' > "$work/report.tsv"
+grep -qx 'DONE' "$work/report.tsv" || fail "Chromium did not get through every page (see below); its stderr: $(tail -c 500 "$work/chromium.err")"
 
+value() { awk -F'\t' -v p="$1" -v k="$2" '$1 == p && $2 == k { print $3 }' "$work/report.tsv"; }
 for page in "${pages[@]}"; do
-  dom=$work/${page//\//_}.dom
-  [[ -s $dom ]] || { fail "$page: Chromium produced no DOM ($(head -c 300 "$work/${page//\//_}.err"))"; continue; }
-  grep -q 'class="merror"\|class="MathJax_merror"\|merror' "$dom" && fail "$page: a MathJax error (merror): $(grep -o 'merror[^<]*<[^<]*' "$dom" | head -3 | tr '\n' ' ')"
-  grep -q 'Undefined control sequence' "$dom" && fail "$page: MathJax: $(grep -o 'Undefined control sequence[^<"]*' "$dom" | sort -u | head -5 | tr '\n' ' ')"
-  grep -q 'Math Processing Error' "$dom" && fail "$page: MathJax: Math Processing Error"
-  # Formulas left as TeX: MathJax did not run (or did not finish) on this page.
-  if grep -q 'class="formulaDsp"\|\\(\|\\\[' "$html/$page" && ! grep -q 'class="MathJax' "$dom"; then
-    fail "$page: has formulas, but MathJax did not render them"
+  [[ $(value "$page" loaded) == 1 ]] || { fail "$page: not opened"; continue; }
+  [[ $(value "$page" merror) == 0 ]] || fail "$page: $(value "$page" merror) MathJax errors (class merror)"
+  [[ $(value "$page" undefined) == 0 ]] || fail "$page: MathJax: Undefined control sequence"
+  [[ $(value "$page" processing) == 0 ]] || fail "$page: MathJax: Math Processing Error"
+  # Formulas left as TeX: MathJax did not run on this page.
+  if grep -q '\\(\|\\\[' "$html/$page" && [[ $(value "$page" rendered) == 0 ]]; then
+    fail "$page: has formulas, but MathJax did not render them (mathjax loaded: $(value "$page" mathjax))"
   fi
   # Every local link: its file exists, and its #anchor is an id or a name in that file.
   while IFS= read -r href; do
@@ -73,7 +107,7 @@ for page in "${pages[@]}"; do
     if [[ -n $anchor ]] && ! grep -q "id=\"$anchor\"\|name=\"$anchor\"" "$html/$target"; then
       fail "$page: broken link to $href (no anchor $anchor in $target)"
     fi
-  done < <(grep -o 'href="[^"]*"' "$dom" | sed 's/^href="//; s/"$//' | grep -v '^[a-z]*:' | grep -v '^javascript' | sort -u)
+  done < <(value "$page" href | grep -v '^[a-z]*:' | sort -u)
 done
 
 total=$(( $(date +%s) - start ))
