@@ -33,6 +33,7 @@ linked=$(for page in "${pages[@]}"; do
   grep -o 'href="[^"#:]*\.html' "$html/$page" | sed 's/^href="//'
 done | sort -u)
 for page in $linked; do
+  [[ -f $html/$page ]] || continue  # reported below as a broken link of the page that names it
   case " ${pages[*]} " in *" $page "*) ;; *) pages+=("$page") ;; esac
 done
 
@@ -57,6 +58,11 @@ function next() {
     var finish = function () {
       if (reported) return;
       reported = true;
+      try { report(w); } catch (e) { line(page + "\terror\t" + e); }
+      frame.remove();
+      next();
+    };
+    var report = function (w) {
       var d = w.document, text = d.body ? d.body.textContent : "";
       line(page + "\tloaded\t" + (d.body ? 1 : 0));
       line(page + "\tmathjax\t" + (w.MathJax && w.MathJax.Hub ? 1 : 0));
@@ -66,10 +72,11 @@ function next() {
       line(page + "\tprocessing\t" + (text.indexOf("Math Processing Error") >= 0 ? 1 : 0));
       var links = d.querySelectorAll('a[href]');
       for (var k = 0; k < links.length; ++k) line(page + "\thref\t" + links[k].getAttribute('href'));
-      frame.remove();
-      next();
     };
-    if (w.MathJax && w.MathJax.Hub && w.MathJax.Hub.Queue) w.MathJax.Hub.Queue(finish); else finish();
+    setTimeout(finish, 30000);  // a page whose MathJax never finishes is reported, not waited for
+    try {
+      if (w.MathJax && w.MathJax.Hub && w.MathJax.Hub.Queue) w.MathJax.Hub.Queue(finish); else finish();
+    } catch (e) { finish(); }
   };
   frame.src = base + page;
   document.body.appendChild(frame);
@@ -83,35 +90,52 @@ timeout 600 "$browser" --headless --no-sandbox --disable-gpu --disable-quic --no
   --disable-background-networking --disable-component-update --disable-sync --disable-extensions \
   --allow-file-access-from-files --user-data-dir="$profile" --virtual-time-budget=600000 \
   --dump-dom "file://$work/check.html" > "$work/check.dom" 2> "$work/chromium.err"
+browser_seconds=$(( $(date +%s) - start - docs_seconds ))
 sed -n '/<pre id="out">/,/<\/pre>/p' "$work/check.dom" | sed 's/^<html><head><\/head><body><pre id="out">//; s/<\/pre>.*//' \
   | sed 's/&amp;/\&/g' > "$work/report.tsv"
 grep -qx 'DONE' "$work/report.tsv" || fail "Chromium did not get through every page (see below); its stderr: $(tail -c 500 "$work/chromium.err")"
 
-value() { awk -F'\t' -v p="$1" -v k="$2" '$1 == p && $2 == k { print $3 }' "$work/report.tsv"; }
-for page in "${pages[@]}"; do
-  [[ $(value "$page" loaded) == 1 ]] || { fail "$page: not opened"; continue; }
-  [[ $(value "$page" merror) == 0 ]] || fail "$page: $(value "$page" merror) MathJax errors (class merror)"
-  [[ $(value "$page" undefined) == 0 ]] || fail "$page: MathJax: Undefined control sequence"
-  [[ $(value "$page" processing) == 0 ]] || fail "$page: MathJax: Math Processing Error"
-  # Formulas left as TeX: MathJax did not run on this page.
-  if grep -q '\\(\|\\\[' "$html/$page" && [[ $(value "$page" rendered) == 0 ]]; then
-    fail "$page: has formulas, but MathJax did not render them (mathjax loaded: $(value "$page" mathjax))"
-  fi
-  # Every local link: its file exists, and its #anchor is an id or a name in that file.
-  while IFS= read -r href; do
-    target=${href%%#*}
-    anchor=
-    [[ $href == *"#"* ]] && anchor=${href#*#}
-    [[ -z $target ]] && target=$page
-    [[ -f $html/$target ]] || { fail "$page: broken link to $href (no file $target)"; continue; }
-    if [[ -n $anchor ]] && ! grep -q "id=\"$anchor\"\|name=\"$anchor\"" "$html/$target"; then
-      fail "$page: broken link to $href (no anchor $anchor in $target)"
-    fi
-  done < <(value "$page" href | grep -v '^[a-z]*:' | sort -u)
-done
+# The findings, checked in one pass: MathJax errors, formulas left as TeX, and every local link (its
+# file exists, and its #anchor is an id or a name in that file).
+(cd "$html" && find . \( -type f -o -type l \) -printf '%P\n') > "$work/files.txt"
+(cd "$html" && grep -o -H 'id="[^"]*"\|name="[^"]*"' -- *.html) | sed 's/:id="/#/; s/:name="/#/; s/"$//' > "$work/anchors.txt"
+(cd "$html" && grep -l '\\(\|\\\[' -- "${pages[@]}") > "$work/with_formulas.txt" || true
+printf '%s\n' "${pages[@]}" > "$work/pages.txt"
+awk -F'\t' '
+  FILENAME == ARGV[1] { files[$0] = 1; next }
+  FILENAME == ARGV[2] { anchors[$0] = 1; next }
+  FILENAME == ARGV[3] { formulas[$0] = 1; next }
+  FILENAME == ARGV[4] { wanted[$0] = 1; order[++count] = $0; next }
+  $2 == "loaded" { loaded[$1] = $3 }
+  $2 == "error" { error[$1] = $3 }
+  $2 == "mathjax" { mathjax[$1] = $3 }
+  $2 == "rendered" { rendered[$1] = $3 }
+  $2 == "merror" && $3 != 0 { print "docs_browser: FAIL: " $1 ": " $3 " MathJax errors (class merror)" }
+  $2 == "undefined" && $3 != 0 { print "docs_browser: FAIL: " $1 ": MathJax: Undefined control sequence" }
+  $2 == "processing" && $3 != 0 { print "docs_browser: FAIL: " $1 ": MathJax: Math Processing Error" }
+  $2 == "href" && $3 !~ /^[a-z]+:/ {
+    href = $3; target = href; anchor = ""
+    at = index(href, "#")
+    if (at > 0) { target = substr(href, 1, at - 1); anchor = substr(href, at + 1) }
+    if (target == "") target = $1
+    if (!(target in files)) print "docs_browser: FAIL: " $1 ": broken link to " href " (no file " target ")"
+    else if (anchor != "" && target ~ /\.html$/ && !((target "#" anchor) in anchors))
+      print "docs_browser: FAIL: " $1 ": broken link to " href " (no anchor " anchor " in " target ")"
+  }
+  END {
+    for (k = 1; k <= count; ++k) {
+      page = order[k]
+      if (loaded[page] != 1) { print "docs_browser: FAIL: " page ": not opened " error[page]; continue }
+      if ((page in formulas) && rendered[page] == 0)
+        print "docs_browser: FAIL: " page ": has formulas, but MathJax did not render them (MathJax loaded: " mathjax[page] ")"
+    }
+  }' "$work/files.txt" "$work/anchors.txt" "$work/with_formulas.txt" "$work/pages.txt" "$work/report.tsv" \
+  | sort -u > "$work/failures.txt"
+cat "$work/failures.txt"
+failures=$((failures + $(wc -l < "$work/failures.txt")))
 
 total=$(( $(date +%s) - start ))
-echo "docs_browser: ${#pages[@]} pages opened in Chromium; make docs took ${docs_seconds} s, the whole check ${total} s"
+echo "docs_browser: ${#pages[@]} pages opened in Chromium in ${browser_seconds} s; make docs took ${docs_seconds} s, the whole check ${total} s"
 if (( failures > 0 )); then
   echo "docs_browser: $failures problems"
   exit 1
