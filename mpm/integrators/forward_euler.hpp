@@ -12,6 +12,8 @@
 
 namespace mpm {
 
+/// Forward Euler (FE), the standard explicit MPM of the paper, Eqs. (12)-(22): one step() per time step,
+/// chosen once per run as the Integrator of mpm::Simulation. Its steps are listed with step().
 struct ForwardEuler {
   static constexpr const char* name = "fe";
   EulerPositionVelocity position_velocity = EulerPositionVelocity::updated;

@@ -16,6 +16,8 @@
 
 namespace mpm {
 
+/// The explicit Newmark predictor-corrector (NPC) of the paper, Eqs. (26)-(33): one step() per time step,
+/// chosen once per run as the Integrator of mpm::Simulation. Its steps are listed with step().
 struct NewmarkPredictorCorrector {
   static constexpr const char* name = "npc";
   double newmark_gamma = 0.5;
