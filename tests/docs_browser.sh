@@ -12,8 +12,8 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-build}
 [[ $build = /* ]] || build=$root/$build
-browser=$(command -v chromium || command -v chromium-browser || true)
-if [[ -z $browser ]]; then
+browser=${CHROMIUM:-$(command -v chromium || command -v chromium-browser || true)}
+if [[ -z $browser || ! -x $browser ]]; then
   echo "docs_browser: SKIPPED: Chromium is not installed (make deps installs Debian's chromium)."
   exit 77
 fi
@@ -133,6 +133,19 @@ awk -F'\t' '
   | sort -u > "$work/failures.txt"
 cat "$work/failures.txt"
 failures=$((failures + $(wc -l < "$work/failures.txt")))
+
+# The search box finds "Eq. (16)": the results page of its index letter lists Eq. (16)'s page.
+index=$(cd "$html/search" && grep -l "tests_eq16.html" all_*.js | head -1)
+if [[ -z $index ]]; then
+  fail "search: no search index entry for Eq. (16)"
+else
+  "$browser" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking \
+    --disable-component-update --disable-sync --disable-extensions --allow-file-access-from-files \
+    --user-data-dir="$(mktemp -d "$work/profile.XXXX")" --virtual-time-budget=5000 \
+    --dump-dom "file://$html/search/${index%.js}.html?Eq.%20(16)" > "$work/search.dom" 2> /dev/null
+  grep -q 'style="display: block;"><div class="SREntry"[^>]*><a [^>]*href="../tests_eq16.html"' "$work/search.dom" \
+    || fail "search: typing \"Eq. (16)\" in the search box does not list the page of Eq. (16)"
+fi
 
 total=$(( $(date +%s) - start ))
 echo "docs_browser: ${#pages[@]} pages opened in Chromium in ${browser_seconds} s; make docs took ${docs_seconds} s, the whole check ${total} s"

@@ -163,7 +163,8 @@ TEST_CASE("docs_trace: each broken piece of a sample fails, naming its equation"
     CHECK(mentions(errors, "Eq. (A.5): no TEST_CASE"));
   }
   SUBCASE("an equation stated twice, and a heading of the wrong shape") {
-    const auto errors = with(section("16", good_kernel) + section("16", good_kernel) + "## Eq. (7) weak form\n", tests);
+    const auto errors = with(section("16", good_kernel) + section("16", good_kernel) + "## Eq. (7): weak form, a level too high and no anchor\n" + "### Eq. (32) is not the Newmark average {#choice_eq32}\n", tests);
+    CHECK(errors.size() == 2);  // the other heading about Eq. (32) is prose, not a statement
     CHECK(mentions(errors, "Eq. (16): stated 2 times"));
     CHECK(mentions(errors, "paper/02_sample.md:21: an equation heading not of the shape"));
   }
