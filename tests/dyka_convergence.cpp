@@ -1,7 +1,8 @@
-// The Dyka bar of scenes/dyka_bar.toml against its exact solution (appendix A, mpm/exact/bar.hpp).
-//
-// The error measure is Eq. (43): the RMS over every time sample (every step, t = 0 included) of
-// v_A - v_exact(X_A, t), with X_A the reference position of particle A (paper/05_time_step_error_gravity.md, Eq. (43)).
+/// \file
+/// The Dyka bar of scenes/dyka_bar.toml against its exact solution (appendix A, mpm/exact/bar.hpp).
+///
+/// The error measure is Eq. (43): the RMS over every time sample (every step, t = 0 included) of
+/// v_A - v_exact(X_A, t), with X_A the reference position of particle A (paper/05_time_step_error_gravity.md, Eq. (43)).
 #include <doctest/doctest.h>
 
 #include <cmath>
