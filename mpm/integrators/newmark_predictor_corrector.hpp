@@ -6,6 +6,7 @@
 /// Eq. (24) for x_p with its beta, Eq. (25) for a_p, and then builds the explicit predictor and
 /// corrector on the grid instead: Eqs. (26)-(30), with the particle update of Eqs. (31)-(33).
 #pragma once
+#include "mpm/core/phase_timers.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
 #include "mpm/model.hpp"
@@ -45,25 +46,32 @@ struct NewmarkPredictorCorrector {
   /// 9. The nodal fields are reset at the start of the next step (GridFields::reset).
   template <int Dim>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const Vector<Dim>& body_force, double dt,
-            Particles<Dim>& particles, GridFields<Dim>& grid) const {
+            Particles<Dim>& particles, GridFields<Dim>& grid, PhaseTimers& timers) const {
     grid.reset();
+    timers.lap(Phase::grid);
     // Step 1. Lumped nodal mass, Eq. (13).
     lumped_nodal_mass(particles, stencils, grid);
     // Step 2. Velocity predictor by projection, Eqs. (26)-(29).
     nodal_velocity_predictor(particles, stencils, newmark_gamma, dt, grid);
+    timers.lap(Phase::p2g);
     // Step 3. Essential boundary conditions overwrite the predictor.
     impose_fixed_velocity(model.fixed, grid.nodal_velocity);
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    timers.lap(Phase::grid);
     // Steps 4-5. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
     update_strain_density_stress(stencils, grid.nodal_velocity, model.material, dt, particles);
+    timers.lap(Phase::stress);
     // Step 6. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_internal_force(particles, stencils, grid);
     add_body_force(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
+    timers.lap(Phase::forces);
     // Step 7. Corrector, Eq. (30): v_I += gamma dt f_I / m_I.
     newmark_corrector(newmark_gamma, dt, grid);
+    timers.lap(Phase::grid);
     // Step 8. Particle update, Eqs. (31)-(33).
     newmark_particle_update(stencils, grid, newmark_gamma, dt, position_velocity, particles);
+    timers.lap(Phase::g2p);
     // Step 9. The nodal fields are reset at the start of the next step.
   }
 };
