@@ -37,9 +37,11 @@ inline std::string case_group(const std::string& name) {
   return cut == std::string::npos ? name : name.substr(0, cut);
 }
 
-/// Calls task(k, threads) for every case k: first the `wide` ones (enough particles for the
-/// solver's own threads to pay), one at a time on all `cores`; then the others, `cores` at a time
-/// on one thread each, taking the next k as they free up (list the most expensive first).
+/// Calls task(k, threads) for every case k: first the `wide` ones, one at a time on all `cores`; then
+/// the others, `cores` at a time on one thread each, taking the next k as they free up (list the most
+/// expensive first). The suites mark no case wide: measured on the shared 2-core development machine
+/// (load ~14), a run on two threads took 2-4 times as long as on one, its threads waiting for each
+/// other at every parallel loop while other processes held the cores; one thread per case is robust.
 template <class Task>
 void run_cases(const std::string& suite, const std::vector<std::string>& names, const std::vector<bool>& wide,
                unsigned cores, Task task) {

@@ -113,7 +113,7 @@ struct BarScene {
 /// Runs one bar case: the scene with the case's overrides (its [initial_field] gives the velocity
 /// V cos(pi X / 2L), with V set by constants.amplitude_ratio), to one period; the particles compared
 /// at T/4, T/2, 3T/4 and T with `reference` (nullptr: the linear first mode).
-inline SmoothResult run_bar(const BarScene& bar, const BarCase& c, const mpm::exact::FiniteStrainBar* reference) {
+inline SmoothResult run_bar(const BarScene& bar, const BarCase& c, const mpm::exact::FiniteStrainBar* reference, int threads = 1) {
   const mpm::exact::VibratingBar mode = bar.mode(c.amplitude);
   const double T = mode.period();
   // Room beyond the free end for its largest displacement, plus two cells for the supports.
@@ -131,6 +131,7 @@ inline SmoothResult run_bar(const BarScene& bar, const BarCase& c, const mpm::ex
   mpm::io::Scene scene = mpm::load_scene(bar.path, overrides);
   scene.control.snapshot_times.clear();
   for (double fraction : bar_sample_fractions()) scene.control.snapshot_times.push_back(fraction * T);
+  scene.control.threads = threads;
   const mpm::Setup<1> setup = mpm::build_setup<1>(scene);
   const double V = mode.velocity_amplitude();
   double mismatch = 0.0;  // the scene's formula against the exact mode, at t = 0
@@ -170,7 +171,7 @@ inline const std::vector<double>& manufactured_sample_fractions() {
 /// Runs one manufactured case of scenes/manufactured_square.toml: the motion's initial velocity,
 /// its body force b(x, t) and, at large amplitude, rollers on every face; the particles compared at
 /// the sample times with the motion (velocity and in-plane Cauchy stress, RMS over particles).
-inline SmoothResult run_manufactured(const std::string& scene_path, const ManufacturedCase& c) {
+inline SmoothResult run_manufactured(const std::string& scene_path, const ManufacturedCase& c, int threads = 1) {
   const mpm::io::Scene base = mpm::load_scene(scene_path, {});
   const mpm::exact::ManufacturedMaterial material{base.length[0], base.young_modulus, base.poisson_ratio, base.density};
   const double L = material.length, period = 2.0 * mpm::exact::ManufacturedMaterial::pi / material.angular_frequency();
@@ -180,7 +181,6 @@ inline SmoothResult run_manufactured(const std::string& scene_path, const Manufa
   std::vector<std::string> overrides{"solver.shape=\"" + c.shape + "\"", "grid.cells=[" + n + ", " + n + "]",
                                      "body[0].particles_per_cell=[" + ppc + ", " + ppc + "]", "solver.integrator=\"" + c.integrator + "\"",
                                      "solver.cfl=" + std::to_string(c.cfl), "output.every=1000000000", "output.snapshots=[]"};
-  if (c.shape == "ugimp") overrides.insert(overrides.end(), {"grid.margin_min=[1, 1]", "grid.margin_max=[1, 1]"});  // rigid cells behind the walls
   char end_time[64];
   std::snprintf(end_time, sizeof end_time, "solver.end_time=%.17g", manufactured_sample_fractions().back() * period);
   overrides.push_back(end_time);
@@ -188,6 +188,7 @@ inline SmoothResult run_manufactured(const std::string& scene_path, const Manufa
     for (int face = 0; face < 4; ++face) overrides.push_back("fixed[" + std::to_string(face) + "].components=[\"" + (face < 2 ? "x" : "y") + "\"]");
   mpm::io::Scene scene = mpm::load_scene(scene_path, overrides);
   for (double fraction : manufactured_sample_fractions()) scene.control.snapshot_times.push_back(fraction * period);
+  scene.control.threads = threads;
   mpm::Setup<2> setup = mpm::build_setup<2>(scene);
   auto to_pair = [](const mpm::Vector<2>& v) { return mpm::exact::Pair{v[0], v[1]}; };
   for (int p = 0; p < setup.particles.size(); ++p) {

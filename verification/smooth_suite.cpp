@@ -195,6 +195,11 @@ int fig6_two_particles_report(const std::string& folder, const std::string& repo
 }  // namespace
 
 int main(int argc, char** argv) {
+  const unsigned cores = verification::suite_threads(argc, argv);
+  if (cores == 0) {
+    std::fprintf(stderr, "smooth_suite: --threads needs a whole number >= 1\n");
+    return 2;
+  }
   if (argc == 4 && std::string(argv[1]) == "--fig6-2ppc") {
     try {
       return fig6_two_particles_report(argv[2], argv[3]);
@@ -204,7 +209,7 @@ int main(int argc, char** argv) {
     }
   }
   if (argc != 6) {
-    std::fprintf(stderr, "usage: smooth_suite DATA_DIR REPORT BAR_SCENE DYKA_SCENE MANUFACTURED_SCENE\n       smooth_suite --fig6-2ppc DATA_DIR REPORT\n");
+    std::fprintf(stderr, "usage: smooth_suite DATA_DIR REPORT BAR_SCENE DYKA_SCENE MANUFACTURED_SCENE [--threads N]\n       smooth_suite --fig6-2ppc DATA_DIR REPORT\n");
     return 2;
   }
   const std::string folder = argv[1], report_path = argv[2];
@@ -219,7 +224,9 @@ int main(int argc, char** argv) {
   for (double ratio : crossing_ratios) reference_amplitudes.push_back(ratio / crossing_cells);
   {
     std::vector<std::unique_ptr<mpm::exact::FiniteStrainBar>> built(reference_amplitudes.size());
-    verification::run_in_parallel(reference_amplitudes.size(), [&](size_t k) {
+    std::vector<std::string> reference_names;
+    for (size_t k = 0; k < reference_amplitudes.size(); ++k) reference_names.push_back("references_" + std::to_string(k));
+    verification::run_cases("smooth", reference_names, std::vector<bool>(reference_amplitudes.size(), false), cores, [&](size_t k, int) {
       built[k] = std::make_unique<mpm::exact::FiniteStrainBar>(
           bar.reference(reference_amplitudes[k], k == 0 ? reference_cells : crossing_reference_cells));
     });
@@ -273,21 +280,24 @@ int main(int argc, char** argv) {
   std::vector<verification::SmoothResult> results(jobs.size());
   std::vector<verification::DykaResult> dyka_results(jobs.size());
   const auto runs_start = std::chrono::steady_clock::now();
-  const unsigned cores = verification::run_in_parallel(jobs.size(), [&](size_t k) {
+  // Every case on one thread (see verification/parallel.hpp, run_cases, for why).
+  std::vector<std::string> names;
+  for (const auto& job : jobs) names.push_back("smooth_" + job.group + "_" + std::to_string(names.size()));
+  verification::run_cases("smooth", names, std::vector<bool>(jobs.size(), false), cores, [&](size_t k, int threads) {
     const auto& c = jobs[k].bar;
     if (jobs[k].group == "manufactured") {
-      results[k] = verification::run_manufactured(manufactured_scene, jobs[k].manufactured);
+      results[k] = verification::run_manufactured(manufactured_scene, jobs[k].manufactured, threads);
       return;
     }
     if (jobs[k].group != "dyka") {
-      results[k] = verification::run_bar(bar, c, jobs[k].reference);
+      results[k] = verification::run_bar(bar, c, jobs[k].reference, threads);
       return;
     }
     std::vector<std::string> overrides = verification::shape_settings(c.shape);
     overrides.insert(overrides.end(), {"grid.cells=[" + std::to_string(c.cells) + "]", "grid.margin_min=[" + std::to_string(4 + c.cells / 100) + "]",
                                        "body[0].particles_per_cell=[2]", "solver.integrator=\"" + c.integrator + "\"", "solver.lme_gamma=3.0",
                                        "output.snapshots=[]"});
-    dyka_results[k] = verification::run_dyka(dyka_scene, dyka_name(c.shape, c.integrator, c.cells), overrides);
+    dyka_results[k] = verification::run_dyka(dyka_scene, dyka_name(c.shape, c.integrator, c.cells), overrides, threads);
     results[k].wall_seconds = dyka_results[k].wall_seconds;
   });
   const double runs_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runs_start).count();

@@ -3,7 +3,7 @@
 ///
 ///   mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N]
 ///       Runs a scene on N cores (default: all; the results equal those on one core to 1e-12); writes observers.csv, energy.csv, snapshots and run.json to DIR
-///       (default runs/<scene name>). Exit codes: 0 done, 2 bad scene or option (nothing written),
+///       (default `runs/<scene name>`). Exit codes: 0 done, 2 bad scene or option (nothing written),
 ///       3 the method failed during the run (one line on stderr; what was written is kept).
 ///   mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
 ///             [--particle-size S] [--tol T]

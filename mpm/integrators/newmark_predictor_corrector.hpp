@@ -17,12 +17,33 @@
 
 namespace mpm {
 
+/// The explicit Newmark predictor-corrector (NPC) of the paper, Eqs. (26)-(33): one step() per time step,
+/// chosen once per run as the Integrator of mpm::Simulation. Its steps are listed with step().
 struct NewmarkPredictorCorrector {
   static constexpr const char* name = "npc";
   double newmark_gamma = 0.5;
   NewmarkPositionVelocity position_velocity = NewmarkPositionVelocity::corrected;
 
-  /// One step from t_k to t_k + dt. The stencils hold N_Ip, grad N_Ip at x_p^k; body_force holds b_p.
+  /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
+  /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle. The steps of the
+  /// algorithm, as in the code:
+  /// 1. Lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13) (\ref lumped_nodal_mass).
+  /// 2. Velocity predictor by projection, Eqs. (26)-(29):
+  ///    \f$ \mathbf v_I^{pred} = \sum_p N_{Ip} m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) / m_I \f$
+  ///    (\ref nodal_velocity_predictor).
+  /// 3. Essential boundary conditions overwrite the predictor (\ref impose_fixed_velocity).
+  /// 4. Strain rate with the predicted velocity, Eq. (16), and strain increment
+  ///    \f$ \Delta t\, \dot{\boldsymbol\varepsilon}_p \f$ (\ref update_strain_density_stress).
+  /// 5. Density, Eq. (17), and stress, Eq. (3), in the same call.
+  /// 6. New nodal forces \f$ \mathbf f_I^{k+1} \f$, Eqs. (14)-(15) (\ref add_internal_force, \ref add_body_force);
+  ///    the fixed components become reactions (\ref store_reactions).
+  /// 7. Corrector, Eq. (30): \f$ \mathbf v_I^{k+1} = \mathbf v_I^{pred} + \gamma\,\Delta t\, \mathbf f_I^{k+1} / m_I \f$
+  ///    (\ref newmark_corrector).
+  /// 8. Particle update, Eqs. (31)-(33): \f$ \mathbf a_p^{k+1} = \sum_I N_{Ip} \mathbf f_I / m_I \f$,
+  ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t\, \mathbf a_p^{k+1} \f$,
+  ///    \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I^{k+1} + \tfrac12 \Delta t^2 \mathbf a_p^{k+1} \f$
+  ///    (\ref newmark_particle_update).
+  /// 9. The nodal fields are reset at the start of the next step (GridFields::reset).
   template <int Dim>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
             Particles<Dim>& particles, GridFields<Dim>& grid, PhaseTimers& timers) const {

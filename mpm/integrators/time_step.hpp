@@ -39,7 +39,7 @@ double courant_time_step(const Particles<Dim>& particles, double young_modulus, 
   return courant_time_step(fastest_particle, wave_speed, cell_size, cfl, rule);
 }
 
-TEST_CASE("Courant time step, Eq. (42): the Dyka bar at 40 cells") {
+TEST_CASE("Eq. (42): Courant time step: the Dyka bar at 40 cells") {
   Particles<1> bar;
   bar.add(Vector<1>(0.0), 1.0, 7833.0, Vector<1>(-5.0), Vector<1>(0.0));
   const double h = 0.1333 / 40, c = std::sqrt(200e9 / 7833.0);  // c = 5053.0 m/s

@@ -703,7 +703,7 @@ TEST_CASE("Eq. (34): N maximises the entropy less beta U among the partitions of
   CHECK(lme_entropy(3, corner) == 0.0);
 }
 
-TEST_CASE("Eqs. (37)-(38) and (40): r and J are the gradient and Hessian of log Z (finite differences in lambda); f_I by hand") {
+TEST_CASE("Eqs. (37)-(38) and Eq. (40): r and J are the gradient and Hessian of log Z (finite differences in lambda); f_I by hand") {
   // Eq. (40) by hand: beta = 3, lambda = (0.5, -1), x - x_I = (1, 2): -3 (1 + 4) + (0.5 - 2) = -16.5.
   CHECK(lme_exponent<2>(3.0, Vector<2>(0.5, -1.0), Vector<2>(1.0, 2.0)) == -16.5);
   // The 16 neighbours of a point, a lambda away from the root: log Z is smooth in lambda, and central

@@ -83,7 +83,7 @@ void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim
   });
 }
 
-TEST_CASE("G2P on the worked example: Eqs. (19)-(22) and (31)-(33) by hand") {
+TEST_CASE("Eq. (18), Eqs. (19)-(22), Eqs. (31)-(33): G2P on the worked example by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   grid.nodal_mass = {1.5, 2.5, 2.0};

@@ -46,7 +46,7 @@ void add_body_force(const Particles<Dim>& particles, const Stencils<Dim>& stenci
   });
 }
 
-TEST_CASE("Nodal forces on the worked example: Eq. (14) by hand, Eq. (15) sums to the weight") {
+TEST_CASE("Eq. (9), Eq. (10), Eqs. (14)-(15): nodal forces on the worked example: the internal force by hand, the body force sums to the weight") {
   testing::WorkedExample example;
   add_internal_force(example.particles, example.stencils, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(5.0));

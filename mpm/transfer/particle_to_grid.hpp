@@ -65,7 +65,7 @@ void nodal_velocity_predictor(const Particles<Dim>& particles, const Stencils<Di
                                                             : Vector<Dim>::Zero();
 }
 
-TEST_CASE("P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
+TEST_CASE("Eq. (8), Eq. (13), Eqs. (21)-(22), Eqs. (26)-(29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   lumped_nodal_mass(example.particles, example.stencils, grid);

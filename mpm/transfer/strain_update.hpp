@@ -49,7 +49,7 @@ void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vect
   });
 }
 
-TEST_CASE("Strain rate, Eq. (16), density, Eq. (17), stress, Eq. (3): the worked example and a 2D shear") {
+TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density and stress: the worked example and a 2D shear") {
   testing::WorkedExample example;
   const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
   CHECK(strain_rate(example.stencils, 0, nodal_velocity)(0, 0) == doctest::Approx(-1.6));
