@@ -2,3 +2,7 @@
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/io/scene.hpp"
 #include "mpm/io/scene_file.hpp"
+#include "mpm/cli/help.hpp"
+#include "mpm/cli/plot_command.hpp"
+#include "mpm/io/scene_resolved.hpp"
+#include "mpm/io/scene_warnings.hpp"
