@@ -96,7 +96,8 @@ inline bool asks_for_help(const std::vector<std::string>& arguments) {
 TEST_CASE("mpm help: every scene key with its default and unit, and the exit codes") {
   const std::string help = command_help("run");
   for (const auto& key : io::scene_keys()) {
-    CAPTURE(key.key);
+    const std::string name = key.key;
+    CAPTURE(name);
     const auto line_start = help.find("\n  " + std::string(key.key) + " ");
     REQUIRE(line_start != std::string::npos);
     const std::string line = help.substr(line_start + 1, help.find('\n', line_start + 1) - line_start - 1);
