@@ -75,10 +75,14 @@ for picture in observers.png energy.png; do
 done
 grep -q "'exact.csv' using 1:2" "$work/bar/plot.gp" || fail "the plot does not draw the exact velocity"
 # and a 2D run without an exact solution
-expect 0 -- run "$root/scenes/soil_block.toml" --out "$work/block" --set solver.end_time=1.0 --set output.snapshots=[1.0]
+expect 0 -- run "$root/scenes/soil_block.toml" --out "$work/block" --set solver.end_time=1.0 --set output.snapshots=[1.0] \
+  --set 'exact="soil_column"'
+[[ "$(head -2 "$work/block/exact.csv" | tr '\n' ' ')" == "t,top.y,top.sigma_yy 0,9.5,0 " ]] ||
+  fail "2D exact.csv starts with $(head -2 "$work/block/exact.csv" | tr '\n' ' ')"
 expect 0 -- plot "$work/block"
 [[ -s "$work/block/observers.png" && -s "$work/block/energy.png" ]] || fail "mpm plot of a 2D run wrote no PNG"
 grep -q 'timestep="1"' "$work/block/snapshots.pvd" || fail "2D snapshots.pvd lacks t = 1"
+grep -q "'exact.csv' using 1:2" "$work/block/plot.gp" || fail "the 2D plot does not draw the exact settlement"
 # failures
 expect 2 -- plot "$work/nothing"
 grep -q "^error: $work/nothing: no such folder" "$work/err" || fail "plot of a missing folder: $(cat "$work/err")"

@@ -6,3 +6,4 @@
 #include "mpm/cli/plot_command.hpp"
 #include "mpm/io/scene_resolved.hpp"
 #include "mpm/io/scene_warnings.hpp"
+#include "mpm/io/exact_series.hpp"

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/cli/shape_command.hpp"
 #include "mpm/io/scene_keys.hpp"
 
 namespace mpm::cli {
@@ -25,18 +26,23 @@ inline const char* run_usage =
     "  --print-scene      prints the resolved scene (every key, defaults filled in) and exits without running\n"
     "  Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.\n";
 
-inline const char* shape_usage =
-    "usage: mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
-    "                 [--particle-size S] [--tol T]\n"
-    "  Evaluates a shape function on an unbounded uniform grid (nodes at multiples of the cell size) and prints\n"
-    "  CSV: point,node_x[,node_y],N,dN_dx[,dN_dy], one row per node of each point's stencil.\n"
-    "  --dim D            1 or 2 (default 1)\n"
-    "  --kind K           linear | ugimp | lme (required)\n"
-    "  --at X[,Y]         a point, m; repeat for more points (at least one)\n"
-    "  --gamma G          LME locality gamma, beta = gamma / h^2 (default 3)\n"
-    "  --cell-size H      grid spacing h, m (default 1)\n"
-    "  --particle-size S  uGIMP particle length 2 l_p, m (default h / 2)\n"
-    "  --tol T            LME support tolerance, in (0, 1) (default 1e-6)\n";
+/// `mpm shape`'s usage, its defaults taken from ShapeRequest.
+inline std::string shape_usage() {
+  const ShapeRequest defaults;
+  std::ostringstream out;
+  out << "usage: mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
+         "                 [--particle-size S] [--tol T]\n"
+         "  Evaluates a shape function on an unbounded uniform grid (nodes at multiples of the cell size) and prints\n"
+         "  CSV: point,node_x[,node_y],N,dN_dx[,dN_dy], one row per node of each point's stencil.\n"
+      << "  --dim D            1 or 2 (default " << defaults.dimension << ")\n"
+      << "  --kind K           linear | ugimp | lme (required)\n"
+         "  --at X[,Y]         a point, m; repeat for more points (at least one)\n"
+      << "  --gamma G          LME locality gamma, beta = gamma / h^2 (default " << defaults.gamma << ")\n"
+      << "  --cell-size H      grid spacing h, m (default " << defaults.cell_size << ")\n"
+      << "  --particle-size S  uGIMP particle length 2 l_p, m (default h / 2)\n"
+      << "  --tol T            LME support tolerance, in (0, 1) (default " << defaults.tolerance << ")\n";
+  return out.str();
+}
 
 inline const char* plot_usage =
     "usage: mpm plot RUN_DIR\n"
@@ -77,13 +83,13 @@ inline std::string scene_keys_help() {
 /// `mpm --help`
 inline std::string main_help() {
   return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") +
-         run_usage + "\n" + shape_usage + "\n" + plot_usage + "\n" + scene_keys_help() + "\n" + exit_codes;
+         run_usage + "\n" + shape_usage() + "\n" + plot_usage + "\n" + scene_keys_help() + "\n" + exit_codes;
 }
 
 /// The help of one command ("run", "shape", "plot"); the main help for any other.
 inline std::string command_help(const std::string& command) {
   if (command == "run") return std::string(run_usage) + "\n" + scene_keys_help() + "\n" + exit_codes;
-  if (command == "shape") return std::string(shape_usage) + "\n" + exit_codes;
+  if (command == "shape") return shape_usage() + "\n" + exit_codes;
   if (command == "plot") return std::string(plot_usage) + "\n" + exit_codes;
   return main_help();
 }
@@ -106,6 +112,7 @@ TEST_CASE("mpm help: every scene key with its default and unit, and the exit cod
   }
   for (const std::string command : {"run", "shape", "plot", ""})
     CHECK(command_help(command).find("  3  the method failed") != std::string::npos);
+  CHECK(command_help("shape").find("--tol T            LME support tolerance, in (0, 1) (default 1e-06)") != std::string::npos);
   CHECK(asks_for_help({"--dim", "1", "-h"}));
   CHECK(!asks_for_help({"--dim", "1"}));
 }

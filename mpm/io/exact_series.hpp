@@ -7,6 +7,8 @@
 /// The exact solutions take their parameters from the scene and the initial particles, never from
 /// the solver's state during the run.
 #pragma once
+#include <doctest/doctest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -104,5 +106,23 @@ class ExactWriter : public Monitor<Dim> {
   std::unique_ptr<exact::SoilColumn> column_;
   std::ofstream out_;
 };
+
+TEST_CASE("exact.csv: the bar's initial data from the particles, merged where the velocity is equal") {
+  Scene scene;
+  scene.origin = {1.0};  // the bar spans [1, 2]: pieces are measured from its free end
+  scene.spacing = 0.25;
+  Particles<1> particles;  // four particles of 0.25 m; the two next to the free end at -5 m/s, listed out of order
+  for (double x : {1.625, 1.125, 1.875, 1.375})
+    particles.add(Vector<1>::Constant(x), 1.0, 1.0, Vector<1>::Constant(x < 1.5 ? -5.0 : 0.0), Vector<1>::Constant(0.125));
+  const auto pieces = bar_pieces(scene, particles);
+  REQUIRE(pieces.size() == 2);
+  CHECK(pieces[0].from == 0.0);
+  CHECK(pieces[0].to == 0.5);
+  CHECK(pieces[0].velocity == -5.0);
+  CHECK(pieces[1].from == 0.5);
+  CHECK(pieces[1].to == 1.0);
+  CHECK(pieces[1].velocity == 0.0);
+  CHECK(pieces[1].stress == 0.0);
+}
 
 }  // namespace mpm::io
