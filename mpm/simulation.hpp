@@ -6,7 +6,7 @@
 ///
 ///   1. dt by the Courant condition, Eq. (42), shortened to land on the next output time;
 ///   2. the stencils N_Ip, grad N_Ip at x_p^k, computed once and reused by every transfer;
-///   3. one step of the integrator (forward Euler, spec 3.2, or the predictor-corrector, spec 3.1);
+///   3. one step of the integrator (forward Euler, paper/02_mpm_forward_euler.md, or the predictor-corrector, paper/03_predictor_corrector.md);
 ///   4. the health checks: no NaN, no particle off the grid, no unbounded energy growth;
 ///   5. the observer samples and snapshots.
 ///
@@ -30,7 +30,7 @@
 
 namespace mpm {
 
-/// When the body force of a step is evaluated (spec 8.7).
+/// When the body force of a step is evaluated (paper/09_choices.md, 'When gravity is evaluated').
 enum class BodyForceTime { step_end, step_start };
 
 struct RunControl {

@@ -6,7 +6,7 @@
 //   symplectic-Euler-like scheme: it conserves a modified energy, so the true energy oscillates
 //   without drift. Measured: E/E0 within [0.9757, 1.0277] for all three shapes; the test allows
 //   |E/E0 - 1| <= 0.035 and a net change after 10 periods below 2%.
-// - The predictor-corrector updates v_p with the new acceleration only (Eq. 32, spec 3.1.3b), a
+// - The predictor-corrector updates v_p with the new acceleration only (Eq. 32, paper/09_choices.md), a
 //   first-order, dissipative choice: the energy never increases in any step (measured: not once,
 //   to round-off) and decays, fastest in the first period. Measured E/E0 after 10 periods: 0.2578
 //   (linear, uGIMP) and 0.2577 (LME); the test requires monotone decay (to 1e-12 E0 per step) and

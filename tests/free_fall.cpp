@@ -4,10 +4,10 @@
 // no stress and no internal force: every node it touches has a_I = g. With a constant dt
 // (the Courant step is set by the wave speed c = 1000 m/s >> |v|):
 //
-// Forward Euler (spec 3.2): v_I^k = v_p^k, p_I^{k+1}/m_I = v_p^k + dt g, hence
+// Forward Euler (paper/02_mpm_forward_euler.md): v_I^k = v_p^k, p_I^{k+1}/m_I = v_p^k + dt g, hence
 //   v^{k+1} = v^k + dt g,  x^{k+1} = x^k + dt (v^k + dt g)   (semi-implicit Euler), so
 //   x^n = x0 + v0 t + g t^2/2 + g dt t/2,  t = n dt.
-// Predictor-corrector (spec 3.1, gamma = 1/2, a_p^0 = 0): step 0 moves x by dt v0 + dt^2 g; later
+// Predictor-corrector (paper/03_predictor_corrector.md, gamma = 1/2, a_p^0 = 0): step 0 moves x by dt v0 + dt^2 g; later
 //   steps by dt v^k + (3/2) dt^2 g (predictor adds (1-gamma) dt a_p = dt g/2, corrector dt g/2, and
 //   Eq. (33) adds dt^2 g/2), so
 //   x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2   (n >= 1).

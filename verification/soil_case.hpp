@@ -1,4 +1,4 @@
-// One soil-block case of the verification suite (paper section 3.2, spec 5.2): run a scene of
+// One soil-block case of the verification suite (paper section 3.2, paper/08_test_cases.md): run a scene of
 // scenes/soil_block*.toml with overrides in-process and record
 //   - the vertical displacement u_y(t) = y(t) - Y of the observed top particle at every sample,
 //   - every particle (position, reference position, stress) at the scene's snapshot times,

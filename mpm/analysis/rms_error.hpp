@@ -10,7 +10,7 @@
 namespace mpm {
 
 /// Eq. (43): \f$ \mathrm{RMS} = \sqrt{\tfrac1N \sum_{n=1}^N (v_n - \hat v_n)^2} \f$, with N the number
-/// of time samples of the velocity of the observed particle (spec 2.6) and \f$ \hat v \f$ the exact one.
+/// of time samples of the velocity of the observed particle (paper/05_time_step_error_gravity.md, Eq. (43)) and \f$ \hat v \f$ the exact one.
 inline double rms_error(const std::vector<double>& computed, const std::vector<double>& exact) {
   if (computed.size() != exact.size() || computed.empty()) throw std::invalid_argument("rms_error: sizes differ or are zero");
   double sum = 0.0;

@@ -1,5 +1,5 @@
 /// \file
-/// Exact solution of the 1D linear elastic bar (appendix A.1-A.19, spec section 7.1): the oracle of
+/// Exact solution of the 1D linear elastic bar (appendix A.1-A.19, paper/06_exact_bar.md): the oracle of
 /// the Dyka test. It shares no code with the solver.
 ///
 /// Method. The bar obeys \f$ \rho v_t = \sigma_X \f$ and \f$ \sigma_t = E v_X \f$ (A.4-A.5). Two
@@ -13,7 +13,7 @@
 /// stress follow from (A.19). For piecewise-constant initial data \f$ F \f$ is a step function: it is
 /// tabulated once (jump positions and plateau values over one period), so every evaluation is exact
 /// and every jump sits at a known position. At a jump the average of the two one-sided limits is
-/// returned (spec 7.1 item 6).
+/// returned (paper/06_exact_bar.md, 'Boundary relations and the unfolded profile').
 ///
 /// Coordinates are reference (material) coordinates X in metres, as in the small-strain appendix.
 #pragma once
@@ -139,7 +139,7 @@ class ElasticBar {
     return (piece->stress + impedance() * piece->velocity) / (2.0 * impedance());
   }
 
-  /// Spec 7.1 step 2: the left-going profile unfolded over one period \f$ 0 \le y < 4L \f$,
+  /// paper/06_exact_bar.md, 'Boundary relations and the unfolded profile': the left-going profile unfolded over one period \f$ 0 \le y < 4L \f$,
   /// \f[ F(y) = \begin{cases} \mathfrak{R}^{II}_0(y) & 0 \le y \le L
   ///     \\ -\mathfrak{R}^{I}_0(2L - y) & L < y \le 2L \text{ (fixed end: } \mathfrak{R}^I + \mathfrak{R}^{II} = 0)
   ///     \\ -\mathfrak{R}^{II}_0(y - 2L) & 2L < y \le 3L
@@ -154,7 +154,7 @@ class ElasticBar {
   }
 
   /// Every X where the initial data may jump (the bar ends and the piece ends) appears in one period of
-  /// F at its four images \f$ X,\; 2L - X,\; 2L + X,\; 4L - X \f$ (the unfolding of spec 7.1 step 2).
+  /// F at its four images \f$ X,\; 2L - X,\; 2L + X,\; 4L - X \f$ (the unfolding of paper/06_exact_bar.md).
   void tabulate_left_going_profile() {
     const double L = length_;
     std::vector<double> jump_sources{0.0, L};
@@ -181,7 +181,7 @@ class ElasticBar {
       plateau_values_.push_back(unfolded_left_going(0.5 * (jump_positions_[i] + jump_positions_[i + 1])));
   }
 
-  /// Spec 7.1 item 6: at the jump number `index` of the period, the average of the one-sided limits
+  /// paper/06_exact_bar.md: at the jump number `index` of the period, the average of the one-sided limits
   /// \f$ \tfrac12\,[F(y^-) + F(y^+)] \f$ (the plateaus wrap around: F has period 4L).
   double average_at_jump(std::size_t index) const {
     const std::size_t last = jump_positions_.size() - 1;  // jump_positions_[last] = 4L is jump 0 again
@@ -190,7 +190,7 @@ class ElasticBar {
     return 0.5 * (before + after);
   }
 
-  /// Spec 7.1 step 2: \f$ F(y) \f$ for any real y, using the period \f$ F(y + 4L) = F(y) \f$.
+  /// paper/06_exact_bar.md: \f$ F(y) \f$ for any real y, using the period \f$ F(y + 4L) = F(y) \f$.
   double left_going_profile(double y) const {
     double y_in_period = std::fmod(y, period());
     if (y_in_period < 0.0) y_in_period += period();
@@ -208,7 +208,7 @@ class ElasticBar {
 // Tests. Every expected value below is derived by hand in the comments, never by the code under test.
 // ---------------------------------------------------------------------------------------------------
 
-TEST_CASE("exact::ElasticBar: wave speed and impedance of the Dyka bar (spec 5.1.6)") {
+TEST_CASE("exact::ElasticBar: wave speed and impedance of the Dyka bar (paper/06_exact_bar.md)") {
   const ElasticBar bar(0.1333, 200e9, 7833.0, {});
   CHECK(bar.wave_speed() == doctest::Approx(5053.02).epsilon(1e-6));  // sqrt(200e9 / 7833)
   CHECK(bar.impedance() == doctest::Approx(3.958e7).epsilon(1e-3));   // 7833 * 5053.02
@@ -229,16 +229,16 @@ TEST_CASE("exact::ElasticBar: boundary relations, v(L,t) = 0 and sigma(0,t) = 0,
   }
 }
 
-TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6)") {
+TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (paper/06_exact_bar.md)") {
   // L = 0.1333 m, a = L/4, v0 = -5 m/s on [0, a]. Hand derivation: R^I_0 = R^II_0 = v0/2 on [0, a], and
-  // v(0,t) = 2 F(ct). Unfolding F (spec 7.1 step 2): F = v0/2 on [0, a], -v0/2 on [2L - a, 2L + a],
+  // v(0,t) = 2 F(ct). Unfolding F (paper/06_exact_bar.md): F = v0/2 on [0, a], -v0/2 on [2L - a, 2L + a],
   // +v0/2 on [4L - a, 4L + a], ... so v(0,t) = v0 for ct < a, 0 until 2L - a, -v0 until 2L + a, 0 until
   // 4L - a, v0 until 4L + a, 0 until 6L - a, -v0 until 6L + a, 0 until 8L - a (204.5 us > 200 us).
   const double length = 0.1333, quarter = length / 4.0, v0 = -5.0;
   const ElasticBar bar(length, 200e9, 7833.0, {{0.0, quarter, v0, 0.0}});
   const double c = bar.wave_speed();
   const double a_over_c = quarter / c, l_over_c = length / c;
-  // The interval ends of spec 5.1.6, in microseconds, from the formulas above.
+  // The interval ends of paper/06_exact_bar.md ('Values for the Dyka bar'), in microseconds, from the formulas above.
   const std::vector<double> ends{a_over_c,
                                  2.0 * l_over_c - a_over_c,
                                  2.0 * l_over_c + a_over_c,
@@ -247,7 +247,7 @@ TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6
                                  6.0 * l_over_c - a_over_c,
                                  6.0 * l_over_c + a_over_c,
                                  200e-6};
-  // Spec 5.1.6 prints 165.0 for 6L/c + a/c = 158.28 + 6.60 = 164.88 us; rounded, that is 164.9.
+  // An earlier reading printed 165.0 for 6L/c + a/c = 158.28 + 6.60 = 164.88 us; rounded, that is 164.9.
   const std::vector<double> printed_ends_us{6.6, 46.2, 59.4, 98.9, 112.1, 151.7, 164.9, 200.0};
   const std::vector<double> plateau{-5.0, 0.0, 5.0, 0.0, -5.0, 0.0, 5.0, 0.0};
   for (std::size_t i = 0; i < ends.size(); ++i) CHECK(std::abs(ends[i] * 1e6 - printed_ends_us[i]) <= 0.0501);
@@ -261,7 +261,7 @@ TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6
     }
     start = ends[i];
   }
-  // At the jumps themselves: the average of the one-sided limits (spec 7.1 item 6).
+  // At the jumps themselves: the average of the one-sided limits (paper/06_exact_bar.md).
   CHECK(bar.velocity(0.0, a_over_c) == doctest::Approx(-2.5));
   CHECK(bar.velocity(0.0, 2.0 * l_over_c - a_over_c) == doctest::Approx(2.5));
   CHECK(bar.velocity(quarter, 0.0) == doctest::Approx(-2.5));   // the initial discontinuity

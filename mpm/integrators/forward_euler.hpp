@@ -1,5 +1,5 @@
 /// \file
-/// Standard explicit MPM, "forward Euler" (FE), as the authors run it (spec 3.2): update stress
+/// Standard explicit MPM, "forward Euler" (FE), as the authors run it (paper/02_mpm_forward_euler.md): update stress
 /// first (USF), FLIP velocity increment, positions moved with the updated nodal momentum.
 #pragma once
 #include "mpm/grid/boundary.hpp"

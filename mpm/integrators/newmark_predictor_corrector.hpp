@@ -1,6 +1,6 @@
 /// \file
 /// The explicit Newmark predictor-corrector (NPC) of the paper, its Algorithm steps 1-9, as the
-/// authors' code runs it (spec 3.1). Newmark gamma = 1/2 by default; beta is never used.
+/// authors' code runs it (paper/03_predictor_corrector.md). Newmark gamma = 1/2 by default; beta is never used.
 ///
 /// The paper motivates it with Newmark's scheme applied to the particles, Eq. (23) for v_p,
 /// Eq. (24) for x_p with its beta, Eq. (25) for a_p, and then builds the explicit predictor and

@@ -13,7 +13,7 @@ namespace mpm {
 /// How the speeds of Eq. (42) are combined.
 enum class CourantSpeed {
   maximum,  ///< Eq. (42) as printed: C = max{ max_p |v_p|, max_p sqrt(E/rho_p) } (default)
-  sum       ///< the authors' code: C = c + max_p |v_p| (spec 2.6)
+  sum       ///< the authors' code: C = c + max_p |v_p| (paper/09_choices.md, 'The Courant speed')
 };
 
 /// Eq. (42): \f$ \Delta t = \mathrm{CFL}\, h / C_{el} \f$ with

@@ -5,7 +5,7 @@
 /// 2D plane strain (unit thickness, \f$ \varepsilon_{zz} = 0 \f$, as the authors run it):
 /// \f$ \boldsymbol\sigma = \lambda\,\mathrm{tr}(\boldsymbol\varepsilon)\,\mathbf I + 2G\boldsymbol\varepsilon \f$ and
 /// \f$ \sigma_{zz} = \lambda\,\mathrm{tr}(\boldsymbol\varepsilon) \f$, with \f$ G = E/(2(1+\nu)) \f$,
-/// \f$ \lambda = \nu E/((1+\nu)(1-2\nu)) \f$. Small strain, total-strain form, no objective rate (spec 1).
+/// \f$ \lambda = \nu E/((1+\nu)(1-2\nu)) \f$. Small strain, total-strain form, no objective rate (paper/02_mpm_forward_euler.md).
 #pragma once
 #include <doctest/doctest.h>
 

@@ -1,7 +1,7 @@
 /// \file
 /// Shape-function stencils: for every particle p, its nodes I, N_Ip and grad N_Ip.
 ///
-/// Computed once per step at the particle positions x_p^k (spec 1) and reused by every
+/// Computed once per step at the particle positions x_p^k (paper/02_mpm_forward_euler.md) and reused by every
 /// transfer of the step. Storage is flat with a fixed capacity per particle, set once per run by
 /// the shape function, so computing the stencils allocates nothing.
 #pragma once

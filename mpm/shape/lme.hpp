@@ -1,5 +1,5 @@
 /// \file
-/// Local maximum-entropy (LME) shape functions of Arroyo & Ortiz (2006), Eqs. (34)-(41), spec 4.1 and 8.
+/// Local maximum-entropy (LME) shape functions of Arroyo & Ortiz (2006), Eqs. (34)-(41), paper/04_shape_functions.md.
 ///
 /// At a point x with neighbour nodes I, the LME functions are the least biased (most entropic,
 /// Eq. (34)) non-negative partition of unity that reproduces x, biased towards near nodes by the
@@ -13,7 +13,7 @@
 /// \f$ \beta = \gamma / h^2 \f$: gamma -> infinity tends to the linear (Delaunay) interpolant, gamma ~ 1
 /// smooths over a few cells. The solution exists when x is inside the convex hull of its neighbours.
 ///
-/// Numerics (spec 8.3). Everything runs in cell units: offsets \f$ \hat l_I = (x - x_I)/h \f$,
+/// Numerics (paper/09_choices.md, 'Newton for the multiplier'). Everything runs in cell units: offsets \f$ \hat l_I = (x - x_I)/h \f$,
 /// \f$ \hat\beta = \beta h^2 \f$ (= gamma), \f$ \hat\lambda = \lambda h \f$, so r/h and J/h^2 are dimensionless
 /// and the Newton tolerance is relative to h. Exponents are shifted by their maximum before exp.
 /// Newton steps on r = 0 are safeguarded by a backtracking (Armijo) line search on the convex
@@ -40,12 +40,12 @@
 namespace mpm {
 
 struct LmeOptions {
-  double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (spec 2.5: beta = gamma / h^2)
+  double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (paper/04_shape_functions.md: beta = gamma / h^2)
   double support_tolerance = 1e-6;  ///< the prior \f$ e^{-\beta R^2} \f$ at the support radius R (A\&O06; authors: 1e-5)
-  double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (spec 8.3)
+  double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (paper/04_shape_functions.md)
   int max_iterations = 100;         ///< Newton updates of lambda per evaluation before ShapeFailure
-  /// grid_spacing: beta = gamma / h^2 (seed, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
-  /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, spec 8.1). The
+  /// grid_spacing: beta = gamma / h^2 (the paper, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
+  /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, paper/09_choices.md). The
   /// neighbours are those within R = h sqrt(-ln(support_tolerance) / gamma) under both rules (with hbar in
   /// R the radius would feed on itself: hbar ~ 2R/3 in 2D makes R grow unless the patch is capped).
   enum class BetaRule { grid_spacing, mean_neighbour_distance } beta_rule = BetaRule::grid_spacing;
@@ -285,7 +285,7 @@ class LmeShape {
   /// and the full step would throw lambda where every weight but one underflows; the cap lets lambda
   /// at most double, or move by 1, per iteration, and the line search does the rest. If rounding has
   /// left J not positive definite, the step of the authors' damped matrix J + |r| I (dimensionless
-  /// here, spec 8.3) is used; failing that, steepest descent -r.
+  /// here, paper/09_choices.md) is used; failing that, steepest descent -r.
   static Vector<Dim> newton_step(const LmeMoments<Dim>& moments, const Vector<Dim>& lambda) {
     const Vector<Dim>& r = moments.residual;
     Matrix<Dim> J = moments.hessian;
@@ -648,7 +648,7 @@ TEST_CASE("LME options: the hull condition on gamma and the support tolerance, a
   CHECK_THROWS_AS(LmeShape<1>(line, options), std::invalid_argument);
 
   // beta = gamma / hbar^2. In 1D at a cell centre with gamma = 3 the neighbours are at 0.5 h and 1.5 h,
-  // so hbar = h and N is the default's (spec 4.1, example 2), to rounding. (So it is wherever x has
+  // so hbar = h and N is the default's (paper/09_choices.md, 'The beta rule'), to rounding. (So it is wherever x has
   // four neighbours, two on each side: their distances add up to 4 h.)
   int nodes[64];
   double values[64], reference[64];

@@ -19,7 +19,7 @@ Vector<Dim> nodal_acceleration(const GridFields<Dim>& grid, int node) {
   return grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_force[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
 }
 
-/// Which nodal velocity moves the particles in the forward-Euler update (spec 3.2).
+/// Which nodal velocity moves the particles in the forward-Euler update (paper/09_choices.md, 'The position update of forward Euler').
 enum class EulerPositionVelocity {
   updated,  ///< the authors' code: p_I after p_I += dt f_I, i.e. v_I^{k+1} (default)
   start     ///< the literal Eqs. (20)-(21): v_I^k = p_I^k / m_I
@@ -47,7 +47,7 @@ void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFiel
   }
 }
 
-/// Which nodal velocity enters the position update Eq. (33) of the predictor-corrector (spec 3.1.3a).
+/// Which nodal velocity enters the position update Eq. (33) of the predictor-corrector (paper/09_choices.md).
 enum class NewmarkPositionVelocity {
   corrected,  ///< the authors' code: v_I^{k+1} from Eq. (30) (default)
   predicted,  ///< v_I^{pred} of Eq. (29)
@@ -55,7 +55,7 @@ enum class NewmarkPositionVelocity {
 };
 
 /// Eqs. (31)-(33), the particle update of the predictor-corrector. Eq. (32) increments v_p with the
-/// new acceleration only, not the Newmark average of Eq. (23) (spec 3.1.3b): a first-order,
+/// new acceleration only, not the Newmark average of Eq. (23) (paper/09_choices.md): a first-order,
 /// dissipative choice (tests/energy.cpp measures it).
 /// \f[ \mathbf a_p^{k+1} = \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
 ///     \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad

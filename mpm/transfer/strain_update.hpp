@@ -29,7 +29,7 @@ Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<
   return 0.5 * (velocity_gradient + velocity_gradient.transpose());
 }
 
-/// Eq. (17) discretised as the authors do (spec 2.3): \f$ \rho_p^{k+1} = \rho_p^k / (1 + \Delta t\,\mathrm{tr}\,\dot{\boldsymbol\varepsilon}_p) \f$.
+/// Eq. (17) discretised as the authors do (paper/09_choices.md, 'The density update'): \f$ \rho_p^{k+1} = \rho_p^k / (1 + \Delta t\,\mathrm{tr}\,\dot{\boldsymbol\varepsilon}_p) \f$.
 inline double updated_density(double density, double dt, double volumetric_strain_rate) {
   return density / (1.0 + dt * volumetric_strain_rate);
 }
