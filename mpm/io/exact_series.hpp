@@ -1,8 +1,8 @@
 /// \file
 /// exact.csv: the exact solution the scene names (`exact = "dyka_bar"` or `"soil_column"`), at each
 /// observer's reference position and at every sample time, beside observers.csv:
-///   dyka_bar     t, then per observer NAME.v_x, NAME.sigma_xx   (appendix A.1-A.19, mpm/exact/bar.hpp)
-///   soil_column  t, then per observer NAME.y, NAME.sigma_yy     (spec 7.2, mpm/exact/column.hpp)
+///   dyka_bar     t, then per observer NAME.v_x, NAME.sigma_xx   (paper/06_exact_bar.md, mpm/exact/bar.hpp)
+///   soil_column  t, then per observer NAME.y, NAME.sigma_yy     (paper/07_exact_column.md, mpm/exact/column.hpp)
 /// The columns carry observers.csv's names, so `mpm plot` draws each beside its computed series.
 /// The exact solutions take their parameters from the scene and the initial particles, never from
 /// the solver's state during the run.
@@ -86,7 +86,7 @@ class ExactWriter : public Monitor<Dim> {
   void snapshot(int index, double time, const Particles<Dim>& particles) override { next_.snapshot(index, time, particles); }
   void progress(double time, double end_time) override { next_.progress(time, end_time); }
 
-  /// Spec 7.2: the constrained modulus of a laterally confined column, M = E(1-nu)/((1+nu)(1-2nu)).
+  /// paper/07_exact_column.md: the constrained modulus of a laterally confined column, M = E(1-nu)/((1+nu)(1-2nu)).
   static double constrained_modulus(const Scene& scene) {
     const double nu = scene.poisson_ratio;
     return scene.young_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
