@@ -313,13 +313,13 @@ TEST_CASE("Scene keys: the help table lists exactly the keys the parser accepts,
 
 TEST_CASE("Scene keys: the printed scene is a readable scene file, in the table's order, with units") {
   const std::string scene_text =
-      "title = \"bar \\\"one\\\"\\n\\\\two\"\n[grid]\nlength = [2.0]\ncells = [4]\n[material]\nyoung_modulus = 200e9\ndensity = 7833\n"
+      "title = \"bar \\\"one\\\" \\\\two\"\n[grid]\nlength = [2.0]\ncells = [4]\n[material]\nyoung_modulus = 200e9\ndensity = 7833\n"
       "[[body]]\nmin = [0.0]\nmax = [2.0]\n[solver]\nend_time = 1e-4\nlme_tol = 1e-6\n";
   std::ostringstream printed;
   print_resolved_scene(read_scene(parse_scene_text(scene_text, "bar.toml")), printed);
   const std::string text = printed.str();
-  CHECK(text.find("title = \"bar \\\"one\\\"\\n\\\\two\"\ndimension = 1\nexact = \"none\"\n") != std::string::npos);
-  CHECK(read_scene(parse_scene_text(text, "printed.toml")).title == "bar \"one\"\n\\two");
+  CHECK(text.find("title = \"bar \\\"one\\\" \\\\two\"\ndimension = 1\nexact = \"none\"\n") != std::string::npos);
+  CHECK(read_scene(parse_scene_text(text, "printed.toml")).title == "bar \"one\" \\two");
   CHECK(text.find("\n[grid]\norigin = [0.0]") != std::string::npos);
   CHECK(text.find("young_modulus = 2e+11 ") != std::string::npos);
   CHECK(text.find("end_time = 1e-04") != std::string::npos);
