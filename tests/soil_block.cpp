@@ -1,11 +1,12 @@
-// The soil block of scenes/soil_block.toml (paper section 3.2) against the exact column of paper/07_exact_column.md
-// (mpm/exact/column.hpp): the fast subset of the soil verification (verification/soil_suite.cpp).
-// One run is about 2900 steps of 100 particles, a fraction of a second.
-//
-// The tolerances are the suite's (verification/soil_report.hpp), where they are derived:
-//   settlement: 5 % = the finite-strain gap aH/3 = 3.8 % (mpm/exact/column_log_strain.hpp) + ~1 % of grid;
-//   stress: RMS 7.5 % of rho g H, of which h/(4H) = 5 % is the staircase of a cell-wise constant strain;
-//   sigma_xx/sigma_yy: nu/(1-nu) within 1e-3 (exact wherever the walls hold v_x = 0).
+/// \file
+/// The soil block of scenes/soil_block.toml (paper section 3.2) against the exact column of paper/07_exact_column.md
+/// (mpm/exact/column.hpp): the fast subset of the soil verification (verification/soil_suite.cpp).
+/// One run is about 2900 steps of 100 particles, a fraction of a second.
+///
+/// The tolerances are the suite's (verification/soil_report.hpp), where they are derived:
+///   settlement: 5 % = the finite-strain gap aH/3 = 3.8 % (mpm/exact/column_log_strain.hpp) + ~1 % of grid;
+///   stress: RMS 7.5 % of rho g H, of which h/(4H) = 5 % is the staircase of a cell-wise constant strain;
+///   sigma_xx/sigma_yy: nu/(1-nu) within 1e-3 (exact wherever the walls hold v_x = 0).
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -9,7 +9,9 @@
 # claim of the paper that our runs do not support is reported as such, and does not.
 #
 # Each suite writes its data, its figures and a report fragment results/report/NN_name.md, and
-# exits 1 when one of its hard checks fails. Independent suites run in parallel.
+# exits 1 when one of its hard checks fails. Each suite uses every core (never more threads than
+# cores), so they run one after the other; their progress lines ("figures: ...") reach the
+# terminal, everything else goes to their logs in results/report/.
 set -uo pipefail
 build=${1:-build}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,13 +23,15 @@ start=$(date +%s)
 export MPM_BIN=$bin MPM_ROOT=$root MPM_RESULTS=$out
 
 status=0
-bash "$root/verification/dyka_figures.sh" >"$out/report/dyka.log" 2>&1 &
-dyka=$!
-bash "$root/verification/soil_figures.sh" >"$out/report/soil.log" 2>&1 &
-soil=$!
-bash "$root/verification/shape_figures.sh" >"$out/report/shapes.log" 2>&1 || { echo "figures: shape functions (Fig. 4) failed, see $out/report/shapes.log"; status=1; }
-wait $dyka || { echo "figures: Dyka bar suite failed, see $out/report/dyka.log"; status=1; }
-wait $soil || { echo "figures: soil block suite failed, see $out/report/soil.log"; status=1; }
+suite() {  # suite NAME LOG: runs verification/NAME.sh, its log to LOG, its progress lines to the terminal
+  bash "$root/verification/$1.sh" 2>&1 | tee "$2" | grep --line-buffered '^figures:'
+  return "${PIPESTATUS[0]}"
+}
+suite shape_figures "$out/report/shapes.log" || { echo "figures: shape functions (Fig. 4) failed, see $out/report/shapes.log"; status=1; }
+echo "figures: shape functions done ($(( $(date +%s) - start )) s)"
+suite dyka_figures "$out/report/dyka.log" || { echo "figures: Dyka bar suite failed, see $out/report/dyka.log"; status=1; }
+echo "figures: Dyka bar done ($(( $(date +%s) - start )) s)"
+suite soil_figures "$out/report/soil.log" || { echo "figures: soil block suite failed, see $out/report/soil.log"; status=1; }
 
 elapsed=$(( $(date +%s) - start ))
 {

@@ -176,8 +176,9 @@ void write_refinement_table(std::ostream& report, const verification::SoilLookup
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR\n");
+  const unsigned cores = verification::suite_threads(argc, argv);
+  if (argc != 4 || cores == 0) {
+    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR [--threads N]\n");
     return 2;
   }
   const std::string folder = argv[1], report_path = argv[2], scenes = argv[3];
@@ -194,8 +195,12 @@ int main(int argc, char** argv) {
     }
   }
   std::vector<Outcome> outcomes(cases.size());
-  const unsigned cores = verification::run_in_parallel(cases.size(), [&](size_t k) {
-    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides);
+  std::vector<std::string> names;
+  for (const auto& spec : cases) names.push_back(spec.name);
+  // Every case on one thread (see verification/parallel.hpp, run_cases, for why).
+  const std::vector<bool> wide(cases.size(), false);
+  verification::run_cases("soil", names, wide, cores, [&](size_t k, int threads) {
+    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides, threads);
     outcomes[k].settlement = verification::measure_settlement(outcomes[k].result);
   });
   std::map<std::string, const Outcome*> by_name;

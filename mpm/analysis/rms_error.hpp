@@ -18,7 +18,7 @@ inline double rms_error(const std::vector<double>& computed, const std::vector<d
   return std::sqrt(sum / computed.size());
 }
 
-TEST_CASE("RMS error, Eq. (43), by hand") {
+TEST_CASE("Eq. (43): RMS error by hand") {
   CHECK(rms_error({1.0, 2.0, 3.0, 4.0}, {1.0, 2.0, 3.0, 4.0}) == 0.0);
   CHECK(rms_error({1.0, -1.0}, {0.0, 0.0}) == doctest::Approx(1.0));
   CHECK(rms_error({3.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 4.0}) == doctest::Approx(2.5));  // sqrt(25/4)

@@ -17,12 +17,13 @@
 namespace mpm::cli {
 
 inline const char* run_usage =
-    "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--print-scene]\n"
+    "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--print-scene]\n"
     "  Runs a scene and writes observers.csv, energy.csv, exact.csv (when the scene names an exact solution),\n"
     "  snapshot_NNNN.csv/.vtk/.vtp, snapshots.pvd (ParaView time series) and run.json into DIR.\n"
     "  --out DIR          output folder (default runs/<scene file name>)\n"
     "  --set KEY=VALUE    overrides a scene key with a TOML value: --set solver.cfl=0.2,\n"
     "                     --set 'solver.shape=\"lme\"', --set grid.cells=[160], --set 'body[0].max=[1.0]'\n"
+    "  --threads N        cores to run on (default: all; the results equal those on one core to 1e-12)\n"
     "  --print-scene      prints the resolved scene (every key, defaults filled in) and exits without running\n"
     "  Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.\n";
 

@@ -265,7 +265,7 @@ TEST_CASE("exact::SoilColumn: closed-form static solution and wave speed (paper/
   CHECK_THROWS_AS(SoilColumn(10.0, 5e6, 6000.0, 9.81, 20.0, 0), std::invalid_argument);
 }
 
-TEST_CASE("exact::SoilColumn: gravity ramp of Eq. (44)") {
+TEST_CASE("Eq. (44): exact::SoilColumn: its gravity ramp") {
   const double g = 9.81, period = 20.0;
   const SoilColumn column(10.0, 5e6, 6000.0, g, period);
   CHECK(column.gravity_at(0.0) == doctest::Approx(0.0).scale(1e-14));      // sin(-pi/2) + 1 = 0

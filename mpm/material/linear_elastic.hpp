@@ -44,7 +44,7 @@ struct LinearElastic {
   }
 };
 
-TEST_CASE("Hooke's law, Eq. (3): 1D, plane strain, and the constrained-column ratio nu/(1-nu)") {
+TEST_CASE("Eq. (3): Hooke's law: 1D, plane strain, and the constrained-column ratio nu/(1-nu)") {
   const LinearElastic steel{200e9, 0.0, 7833.0};
   CHECK(steel.stress<1>(Matrix<1>::Constant(1e-3))(0, 0) == doctest::Approx(2e8));
 

@@ -363,8 +363,8 @@ TEST_CASE("uGIMP: the support must stay in the grid, sizes are checked, capacity
   Vector<2> gradients[16];
   CHECK(gimp.evaluate(0, Vector<2>(0.125, 0.125), nodes, values, gradients) == 4);  // touches the edge: fine
   CHECK(gimp.evaluate(0, Vector<2>(0.5, 1.0), nodes, values, gradients) == 9);       // on a node: 3 x 3
-  CHECK(gimp.diagnostics().neighbours_max == 9);
-  CHECK(gimp.diagnostics().evaluations == 2);
+  CHECK(gimp.diagnostics().neighbours_max() == 9);
+  CHECK(gimp.diagnostics().evaluations() == 2);
 
   // The particle's support crossing the grid edge, and the particle leaving the grid.
   CHECK_THROWS_WITH_AS(gimp.evaluate(0, Vector<2>(0.12, 1.0), nodes, values, gradients),

@@ -6,6 +6,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include "mpm/core/parallel.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/particles/stencils.hpp"
@@ -32,7 +33,7 @@ enum class EulerPositionVelocity {
 template <int Dim>
 void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double dt,
                                    EulerPositionVelocity position_velocity, Particles<Dim>& particles) {
-  for (int p = 0; p < particles.size(); ++p) {
+  parallel_for(particles.size(), [&](int p) {
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
     for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
       const int node = stencils.node[k];
@@ -44,7 +45,7 @@ void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFiel
     }
     particles.velocity[p] += dt * acceleration;
     particles.position[p] += dt * velocity;
-  }
+  });
 }
 
 /// Which nodal velocity enters the position update Eq. (33) of the predictor-corrector (paper/09_choices.md).
@@ -64,7 +65,7 @@ enum class NewmarkPositionVelocity {
 template <int Dim>
 void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double newmark_gamma, double dt,
                              NewmarkPositionVelocity position_velocity, Particles<Dim>& particles) {
-  for (int p = 0; p < particles.size(); ++p) {
+  parallel_for(particles.size(), [&](int p) {
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
     for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
       const int node = stencils.node[k];
@@ -79,10 +80,10 @@ void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim
     particles.acceleration[p] = acceleration;
     particles.velocity[p] += dt * acceleration;
     particles.position[p] += dt * velocity + 0.5 * dt * dt * acceleration;
-  }
+  });
 }
 
-TEST_CASE("G2P on the worked example: Eqs. (19)-(22) and (31)-(33) by hand") {
+TEST_CASE("Eq. (18), Eqs. (19)-(22), Eqs. (31)-(33): G2P on the worked example by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   grid.nodal_mass = {1.5, 2.5, 2.0};
