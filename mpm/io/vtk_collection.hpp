@@ -2,10 +2,9 @@
 /// Snapshots as a ParaView time series: each snapshot as a VTK XML PolyData file (snapshot_NNNN.vtp)
 /// and one collection, snapshots.pvd, listing every file with its physical time. ParaView reads a
 /// .pvd's DataSets only in the XML formats (its collection reader picks the reader by the extension
-/// .vtp, .vtu, ...), which is why the legacy .vtk snapshots are not listed in it.
-///
-///   <VTKFile type="Collection" ...><Collection>
-///     <DataSet timestep="0.0001" group="" part="0" file="snapshot_0001.vtp"/> ...
+/// .vtp, .vtu, ...), which is why the legacy .vtk snapshots are not listed in it. The collection is
+/// a VTKFile of type "Collection" with one DataSet element per snapshot, whose attributes are the
+/// physical time (`timestep="0.0001"`) and the file (`file="snapshot_0001.vtp"`).
 #pragma once
 #include <fstream>
 #include <iomanip>
