@@ -5,6 +5,12 @@
 ///       Runs a scene on N cores (default: all; the results equal those on one core to 1e-12); writes observers.csv, energy.csv, snapshots and run.json to DIR
 ///       (default `runs/<scene name>`). Exit codes: 0 done, 2 bad scene or option (nothing written),
 ///       3 the method failed during the run (one line on stderr; what was written is kept).
+///   mpm run SCENE.toml --print-scene [--set KEY=VALUE]...
+///       Prints the resolved scene (every key, defaults filled in) and exits 0 without running.
+///   mpm plot RUN_DIR
+///       Draws the run's observers (beside exact.csv when the scene names an exact solution) and
+///       energy balance into RUN_DIR/observers.png and energy.png (mpm/cli/plot_command.hpp).
+///   mpm --help, mpm run --help, mpm shape --help, mpm plot --help (mpm/cli/help.hpp)
 ///   mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
 ///             [--particle-size S] [--tol T]
 ///       Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of
@@ -20,16 +26,23 @@
 #include <string>
 #include <vector>
 
+#include "mpm/cli/help.hpp"
+#include "mpm/cli/plot_command.hpp"
 #include "mpm/cli/shape_command.hpp"
+#include "mpm/io/exact_series.hpp"
 #include "mpm/io/run_writer.hpp"
+#include "mpm/io/scene_resolved.hpp"
+#include "mpm/io/scene_warnings.hpp"
 #include "mpm/run.hpp"
 
 namespace {
 
 const char* usage =
-    "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N]\n"
+    "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--print-scene]\n"
     "       mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
-    "                 [--particle-size S] [--tol T]\n";
+    "                 [--particle-size S] [--tol T]\n"
+    "       mpm plot RUN_DIR\n"
+    "       mpm --help | mpm COMMAND --help\n";
 
 template <int Dim>
 int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
@@ -44,7 +57,8 @@ int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
   mpm::RunSummary summary;
   try {
     mpm::io::RunWriter<Dim> writer(folder, scene, setup.observed);
-    summary = mpm::run_setup<Dim>(scene, setup, writer, &summary);
+    mpm::io::ExactWriter<Dim> exact_then_writer(folder, scene, setup.particles, setup.observed, writer);
+    summary = mpm::run_setup<Dim>(scene, setup, exact_then_writer, &summary);
   } catch (const mpm::SimulationFailure& failure) {
     mpm::io::write_run_json(folder + "/run.json", scene, summary, std::string("failed: ") + failure.what(), setup.particles.size());
     std::cerr << failure.message() << "\n";
@@ -60,6 +74,7 @@ int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
 int run_command(const std::vector<std::string>& arguments) {
   std::string scene_path, folder;
   std::vector<std::string> overrides;
+  bool print_scene = false;
   int threads = 0;
   for (size_t k = 0; k < arguments.size(); ++k) {
     const std::string& argument = arguments[k];
@@ -79,6 +94,8 @@ int run_command(const std::vector<std::string>& arguments) {
       threads = std::stoi(value);
     } else if (argument == "--set") {
       overrides.push_back(arguments[++k]);
+    } else if (argument == "--print-scene") {
+      print_scene = true;
     } else if (argument.rfind("--set=", 0) == 0) {
       overrides.push_back(argument.substr(6));
     } else if (argument.rfind("--", 0) == 0 || !scene_path.empty()) {
@@ -95,6 +112,11 @@ int run_command(const std::vector<std::string>& arguments) {
   if (folder.empty()) folder = "runs/" + std::filesystem::path(scene_path).stem().string();
   try {
     const mpm::io::Scene scene = mpm::load_scene(scene_path, overrides);
+    for (const auto& warning : mpm::io::scene_warnings(scene_path, overrides, scene)) std::cerr << warning << "\n";
+    if (print_scene) {
+      mpm::io::print_resolved_scene(scene, std::cout);
+      return 0;
+    }
     return scene.dimension == 1 ? run_scene<1>(scene, folder, threads) : run_scene<2>(scene, folder, threads);
   } catch (const mpm::SceneError& error) {
     std::cerr << error.message() << "\n";
@@ -106,11 +128,16 @@ int run_command(const std::vector<std::string>& arguments) {
 
 int main(int argc, char** argv) {
   const std::vector<std::string> arguments(argv + 1, argv + argc);
-  if (arguments.empty() || arguments[0] == "help" || arguments[0] == "--help" || arguments[0] == "-h") {
-    std::cout << usage;
-    return arguments.empty() ? 2 : 0;
+  if (arguments.empty()) {
+    std::cerr << usage;
+    return 2;
+  }
+  if (arguments[0] == "help" || mpm::cli::asks_for_help(arguments)) {
+    std::cout << mpm::cli::command_help(arguments.size() > 1 && arguments[0] == "help" ? arguments[1] : arguments[0]);
+    return 0;
   }
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
+  if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);
   if (arguments[0] == "run") return run_command(rest);
   if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
   std::cerr << "error: " << arguments[0] << ": unknown command\n" << usage;

@@ -3,7 +3,9 @@
 ///   observers.csv        t, then per observer NAME.x, NAME.v_x, NAME.sigma_xx (2D adds y components)
 ///   energy.csv           t,kinetic,strain,total,momentum_x (2D adds momentum_y)
 ///   snapshot_NNNN.csv    every particle: id, position, velocity, stress, density
-///   snapshot_NNNN.vtk    the same as legacy VTK polydata, for ParaView
+///   snapshot_NNNN.vtk    the same as legacy VTK polydata
+///   snapshot_NNNN.vtp    the same as VTK XML polydata, listed with its time in
+///   snapshots.pvd        the collection ParaView opens as a time series (mpm/io/vtk_collection.hpp)
 /// and shows progress on stderr when stderr is a terminal.
 #pragma once
 #include <unistd.h>
@@ -16,6 +18,8 @@
 #include <vector>
 
 #include "mpm/io/scene.hpp"
+#include "mpm/io/scene_resolved.hpp"
+#include "mpm/io/vtk_collection.hpp"
 #include "mpm/simulation.hpp"
 
 namespace mpm::io {
@@ -25,7 +29,7 @@ class RunWriter : public Monitor<Dim> {
  public:
   RunWriter(const std::string& folder, const Scene& scene, std::vector<int> observed)
       : folder_(folder), scene_(scene), observed_(std::move(observed)),
-        observers_(folder + "/observers.csv"), energy_(folder + "/energy.csv"),
+        observers_(folder + "/observers.csv"), energy_(folder + "/energy.csv"), collection_(folder + "/snapshots.pvd"),
         show_progress_(isatty(fileno(stderr))) {
     observers_ << std::setprecision(12) << "t";
     for (const auto& observer : scene.observers) {
@@ -58,6 +62,8 @@ class RunWriter : public Monitor<Dim> {
     std::snprintf(stem, sizeof stem, "/snapshot_%04d", index);
     write_csv(folder_ + stem + ".csv", particles);
     write_vtk(folder_ + stem + ".vtk", time, particles);
+    write_vtp(folder_ + stem + ".vtp", particles);
+    collection_.add(time, std::string(stem + 1) + ".vtp");
   }
 
   void progress(double time, double end_time) override {
@@ -120,17 +126,18 @@ class RunWriter : public Monitor<Dim> {
   const Scene& scene_;
   std::vector<int> observed_;
   std::ofstream observers_, energy_;
+  PvdCollection collection_;
   bool show_progress_;
   std::chrono::steady_clock::time_point last_progress_{};
 };
 
-/// run.json: the resolved scene, the step statistics, the speed and, for LME, Newton statistics.
+/// run.json: the resolved scene (every key, defaults filled in), the step statistics, the speed and, for LME, Newton statistics.
 inline void write_run_json(const std::string& path, const Scene& scene, const RunSummary& summary,
                            const std::string& status, int particle_count) {
   std::ofstream out(path);
   out << std::setprecision(12) << "{\n"
       << "  \"status\": \"" << status << "\",\n"
-      << "  \"scene\": " << scene.resolved_json << ",\n"
+      << "  \"scene\": " << resolved_json(scene) << ",\n"
       << "  \"particles\": " << particle_count << ",\n"
       << "  \"steps\": " << summary.steps << ",\n"
       << "  \"final_time\": " << summary.final_time << ",\n"

@@ -6,7 +6,9 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,15 +63,18 @@ struct Scene {
   std::vector<ObserverSettings> observers;
   // [constants], [initial_field], [body_force] (io/scene_formulas.hpp)
   SceneFormulas formulas;
+  /// exact solution written beside the observers (exact.csv): "none", "dyka_bar" or "soil_column"
+  std::string exact = "none";
   /// the resolved scene (file plus overrides) as JSON, for run.json
   std::string resolved_json;
 };
 
 namespace detail {
 
-inline std::vector<int> to_integers(SceneReader& reader, const std::string& key, int size, std::vector<int> fallback,
-                                    int smallest) {
-  std::vector<double> fallback_numbers(fallback.begin(), fallback.end());
+inline std::vector<int> to_integers(SceneReader& reader, const std::string& key, int size,
+                                    std::optional<std::vector<int>> fallback, int smallest) {
+  std::optional<std::vector<double>> fallback_numbers;  // none: the key is required
+  if (fallback) fallback_numbers = std::vector<double>(fallback->begin(), fallback->end());
   const auto numbers = reader.numbers(key, size, fallback_numbers);
   std::vector<int> values;
   for (double number : numbers) {
@@ -128,7 +133,7 @@ inline Scene read_scene(const SceneFile& file) {
     SceneReader grid(file, detail::table_or_empty(file, root, "grid", true), "grid");
     scene.origin = grid.numbers("origin", dim, std::vector<double>(dim, 0.0));
     scene.length = grid.numbers("length", dim);
-    scene.cells = detail::to_integers(grid, "cells", dim, {}, 1);
+    scene.cells = detail::to_integers(grid, "cells", dim, std::nullopt, 1);
     scene.margin_min = detail::to_integers(grid, "margin_min", dim, std::vector<int>(dim, 0), 0);
     scene.margin_max = detail::to_integers(grid, "margin_max", dim, std::vector<int>(dim, 0), 0);
     for (int axis = 0; axis < dim; ++axis)
@@ -242,6 +247,33 @@ inline Scene read_scene(const SceneFile& file) {
     output.reject_unknown_keys();
   }
   scene.formulas = read_scene_formulas(file, root, dim, scene.young_modulus, scene.poisson_ratio, scene.density);
+  scene.exact = root.text("exact", {"none", "dyka_bar", "soil_column"}, std::string("none"));
+  auto has_fixed = [&](int axis, bool upper, int component) {
+    for (const auto& fixed : scene.fixed)
+      if (fixed.axis == axis && fixed.upper == upper &&
+          std::find(fixed.components.begin(), fixed.components.end(), component) != fixed.components.end())
+        return true;
+    return false;
+  };
+  // The exact solutions hold for one body filling the box [origin, origin + length] (the bar, the column).
+  auto fills_box = [&] {
+    if (scene.bodies.size() != 1) return false;
+    for (int axis = 0; axis < dim; ++axis)
+      if (std::abs(scene.bodies[0].min[axis] - scene.origin[axis]) > 1e-9 * scene.spacing ||
+          std::abs(scene.bodies[0].max[axis] - scene.origin[axis] - scene.length[axis]) > 1e-9 * scene.spacing)
+        return false;
+    return true;
+  };
+  if (scene.exact == "dyka_bar" && !(dim == 1 && fills_box() && has_fixed(0, true, 0) && scene.gravity[0] == 0.0))
+    root.fail("exact", "'dyka_bar' is the 1D bar free at xmin and fixed at xmax without gravity: needs dimension = 1, "
+                       "one [[body]] filling [origin, origin + length], a [[fixed]] face = \"xmax\" holding \"x\", "
+                       "and no gravity");
+  if (scene.exact == "soil_column" &&
+      !(dim == 2 && fills_box() && has_fixed(1, false, 1) && scene.gravity[0] == 0.0 && scene.gravity[1] < 0.0 &&
+        (scene.poisson_ratio == 0.0 || (has_fixed(0, false, 0) && has_fixed(0, true, 0)))))
+    root.fail("exact", "'soil_column' is the 2D column on a roller base under gravity: needs dimension = 2, one [[body]] "
+                       "filling [origin, origin + length], a [[fixed]] face = \"ymin\" holding \"y\", "
+                       "gravity.acceleration = [0, -g], and rollers on xmin and xmax unless poisson_ratio = 0");
   root.reject_unknown_keys();
   std::ostringstream json;
   json << toml::json_formatter{file.table};

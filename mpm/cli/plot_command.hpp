@@ -1,0 +1,164 @@
+/// \file
+/// `mpm plot RUN_DIR`: draws a run with gnuplot (PNG), into the run's folder:
+///   observers.png  one panel per observed quantity (x, v_x, sigma_xx, ...), every observer, and the
+///                  exact solution (exact.csv, dashed black) wherever it has the same column
+///   energy.png     kinetic, strain and total energy; momentum
+/// The gnuplot script is kept as RUN_DIR/plot.gp, to be edited and rerun by hand.
+/// Exit codes: 0 done; 2 no such folder or a CSV missing or unreadable; 3 gnuplot failed.
+#pragma once
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mpm::cli {
+
+/// The column names of a CSV file's header line; empty if the file cannot be read or has no header.
+inline std::vector<std::string> csv_header(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::string> names;
+  if (!in || !std::getline(in, line)) return names;
+  std::stringstream stream(line);
+  for (std::string name; std::getline(stream, name, ',');) names.push_back(name);
+  return names;
+}
+
+/// "A.v_x" -> "v_x"; "t" -> "".
+inline std::string quantity_of(const std::string& column) {
+  const auto dot = column.find('.');
+  return dot == std::string::npos ? "" : column.substr(dot + 1);
+}
+
+inline std::string quantity_label(const std::string& quantity) {
+  if (quantity.rfind("v_", 0) == 0) return "velocity " + quantity + " (m/s)";
+  if (quantity.rfind("sigma_", 0) == 0) return "stress " + quantity + " (Pa, tension > 0)";
+  return "position " + quantity + " (m)";
+}
+
+/// The gnuplot script drawing observers.png (if any observer) and energy.png from the headers of
+/// observers.csv, exact.csv (empty: none) and energy.csv; columns are addressed by number.
+inline std::string plot_script(const std::vector<std::string>& observers, const std::vector<std::string>& exact,
+                               const std::vector<std::string>& energy) {
+  std::ostringstream gp;
+  gp << "# written by `mpm plot`; run again with: gnuplot plot.gp (in this folder)\n"
+        "set datafile separator ','\nset datafile missing 'nan'\nset grid lc rgb '#dddddd'\n"
+        "set key outside right top\nset lmargin 14\nset xlabel 't (s)'\n";
+  std::vector<std::string> quantities;  // in order of first appearance
+  for (const auto& column : observers) {
+    const std::string quantity = quantity_of(column);
+    if (!quantity.empty() && std::find(quantities.begin(), quantities.end(), quantity) == quantities.end())
+      quantities.push_back(quantity);
+  }
+  if (!quantities.empty()) {
+    gp << "set terminal pngcairo noenhanced size 1000," << 260 * quantities.size() << " font ',10'\n"
+       << "set output 'observers.png'\nset multiplot layout " << quantities.size() << ",1\n";
+    for (const auto& quantity : quantities) {
+      gp << "set ylabel '" << quantity_label(quantity) << "'\nplot ";
+      std::string separator;
+      for (size_t k = 0; k < observers.size(); ++k) {
+        if (quantity_of(observers[k]) != quantity) continue;
+        gp << separator << "'observers.csv' using 1:" << k + 1 << " with lines lw 1.5 title '" << observers[k] << "'";
+        separator = ", ";
+        for (size_t j = 0; j < exact.size(); ++j)
+          if (exact[j] == observers[k])
+            gp << ", 'exact.csv' using 1:" << j + 1 << " with lines dt 2 lw 2 lc rgb 'black' title '" << exact[j] << " exact'";
+      }
+      gp << "\n";
+    }
+    gp << "unset multiplot\nunset output\n";
+  }
+  gp << "set terminal pngcairo noenhanced size 1000,520 font ',10'\nset output 'energy.png'\nset multiplot layout 2,1\n"
+        "set ylabel 'energy (J; 1D per m^2, 2D per m)'\nplot ";
+  std::string separator;
+  for (size_t k = 1; k < energy.size(); ++k)
+    if (energy[k] == "kinetic" || energy[k] == "strain" || energy[k] == "total") {
+      gp << separator << "'energy.csv' using 1:" << k + 1 << " with lines lw 1.5 title '" << energy[k] << "'";
+      separator = ", ";
+    }
+  gp << "\nset ylabel 'momentum'\nplot ";
+  separator.clear();
+  for (size_t k = 1; k < energy.size(); ++k)
+    if (energy[k].rfind("momentum", 0) == 0) {
+      gp << separator << "'energy.csv' using 1:" << k + 1 << " with lines lw 1.5 title '" << energy[k] << "'";
+      separator = ", ";
+    }
+  gp << "\nunset multiplot\nunset output\n";
+  return gp.str();
+}
+
+/// Draws the run in `arguments[0]`; returns the exit code.
+inline int plot_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+  namespace fs = std::filesystem;
+  if (arguments.size() != 1 || arguments[0].rfind("-", 0) == 0) {
+    err << "error: plot: give exactly one run folder: mpm plot RUN_DIR\n";
+    return 2;
+  }
+  const std::string folder = arguments[0];
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) {
+    err << "error: " << folder << ": no such folder (give the folder of an `mpm run`, e.g. runs/dyka_bar)\n";
+    return 2;
+  }
+  const auto observers = csv_header(folder + "/observers.csv");
+  const auto energy = csv_header(folder + "/energy.csv");
+  for (const auto& [name, header] : {std::pair{"observers.csv", observers}, std::pair{"energy.csv", energy}})
+    if (header.empty() || header[0] != "t") {
+      err << "error: " << folder << "/" << name << ": missing or without its header line (is " << folder
+          << " the folder of an `mpm run`?)\n";
+      return 2;
+    }
+  const auto exact = csv_header(folder + "/exact.csv");  // optional
+  {
+    std::ofstream script(folder + "/plot.gp");
+    script << plot_script(observers, exact, energy);
+    if (!script.flush()) {
+      err << "failure: " << folder << "/plot.gp: cannot be written\n";
+      return 3;
+    }
+  }
+  const std::vector<std::string> pictures = observers.size() > 1 ? std::vector<std::string>{"observers.png", "energy.png"}
+                                                                  : std::vector<std::string>{"energy.png"};
+  for (const auto& picture : pictures) fs::remove(folder + "/" + picture, error);
+  std::string quoted = "'";  // the folder in single quotes for the shell
+  for (char character : folder) quoted += character == '\'' ? std::string("'\\''") : std::string(1, character);
+  quoted += "'";
+  const int status = std::system(("cd " + quoted + " && gnuplot plot.gp 2>plot.log").c_str());
+  if (status != 0) {
+    err << "failure: gnuplot failed (status " << status << "; is gnuplot installed? make deps): see " << folder
+        << "/plot.log and " << folder << "/plot.gp\n";
+    return 3;
+  }
+  for (const auto& picture : pictures)
+    if (fs::file_size(folder + "/" + picture, error) == 0 || error) {
+      err << "failure: gnuplot wrote no " << folder << "/" << picture << ": see " << folder << "/plot.log\n";
+      return 3;
+    }
+  for (const auto& picture : pictures) out << "wrote " << folder << "/" << picture << "\n";
+  return 0;
+}
+
+TEST_CASE("mpm plot: the script draws each observer's column beside the exact one of the same name") {
+  const std::string script = plot_script({"t", "A.x", "A.v_x", "A.sigma_xx"}, {"t", "A.v_x", "A.sigma_xx"},
+                                         {"t", "kinetic", "strain", "total", "momentum_x"});
+  CHECK(script.find("set multiplot layout 3,1") != std::string::npos);
+  CHECK(script.find("'observers.csv' using 1:3 with lines lw 1.5 title 'A.v_x', 'exact.csv' using 1:2 ") != std::string::npos);
+  CHECK(script.find("'observers.csv' using 1:4 with lines lw 1.5 title 'A.sigma_xx', 'exact.csv' using 1:3 ") != std::string::npos);
+  CHECK(script.find("'observers.csv' using 1:2 with lines lw 1.5 title 'A.x'\n") != std::string::npos);  // no exact x
+  CHECK(script.find("'energy.csv' using 1:4 with lines lw 1.5 title 'total'") != std::string::npos);
+  CHECK(script.find("'energy.csv' using 1:5 with lines lw 1.5 title 'momentum_x'") != std::string::npos);
+  CHECK(plot_script({"t"}, {}, {"t", "kinetic"}).find("observers.png") == std::string::npos);
+  std::ostringstream out, err;
+  CHECK(plot_command({}, out, err) == 2);
+  CHECK(plot_command({"/nonexistent/run"}, out, err) == 2);
+  CHECK(err.str().find("error: /nonexistent/run: no such folder") != std::string::npos);
+}
+
+}  // namespace mpm::cli

@@ -1,0 +1,97 @@
+/// \file
+/// Every key a scene may hold, in one table: its default, its unit and what it means.
+///
+/// `mpm --help` and `mpm run --help` print this table, `mpm run --print-scene` prints a scene in its
+/// order, and the doctest of mpm/io/scene_resolved.hpp checks it against the parser (mpm/io/scene.hpp):
+/// every key the parser accepts is listed here and every key listed here is accepted; a key without a
+/// default here is one the parser requires; every default here is the parser's. So the help cannot
+/// drift from the code: a key added to the parser and not here fails `make test`.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace mpm::io {
+
+struct SceneKey {
+  /// "solver.cfl"; "body[].min" for a key of every table of an array of tables ([[body]])
+  const char* key;
+  /// the default as a TOML value ("0.5", "\"linear\"", "[]"); nullptr: the key is required
+  const char* fallback;
+  /// the default is repeated on every axis: "0" means [0] in 1D and [0, 0] in 2D
+  bool per_axis;
+  const char* unit;
+  const char* meaning;
+};
+
+/// The scene's keys, in the order a scene file writes them.
+inline const std::vector<SceneKey>& scene_keys() {
+  static const std::vector<SceneKey> keys = {
+      {"title", "\"untitled\"", false, "-", "name of the run (printed, written into run.json)"},
+      {"dimension", "1", false, "-", "1 or 2 (2D is plane strain)"},
+      {"exact", "\"none\"", false, "-",
+       "exact solution written beside the observers into exact.csv and drawn by `mpm plot`: "
+       "none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
+       "soil_column (2D column on a roller base under gravity along -y; mpm/exact/column.hpp)"},
+      {"grid.origin", "0.0", true, "m", "lower corner of the box [origin, origin + length] the body's grid spans"},
+      {"grid.length", nullptr, false, "m", "size of the box on each axis"},
+      {"grid.cells", nullptr, false, "cells", "cells on each axis; cells must be square (equal length/cells)"},
+      {"grid.margin_min", "0", true, "cells", "extra cells below origin on each axis (room to move, supports)"},
+      {"grid.margin_max", "0", true, "cells", "extra cells above origin + length on each axis"},
+      {"material.young_modulus", nullptr, false, "Pa", "Young's modulus E of the linear elastic material, Eq. (3)"},
+      {"material.poisson_ratio", "0.0", false, "-", "Poisson's ratio nu, in [0, 0.5)"},
+      {"material.density", nullptr, false, "kg/m^3", "initial density rho"},
+      {"body[].min", nullptr, false, "m", "lower corner of a box of whole cells filled with particles"},
+      {"body[].max", nullptr, false, "m", "upper corner of the box"},
+      {"body[].particles_per_cell", "1", true, "-", "particles per cell on each axis"},
+      {"body[].velocity", "0.0", true, "m/s", "initial velocity of the body's particles"},
+      {"body[].placement", "\"uniform\"", false, "-", "uniform (cell split evenly) | gauss (2x2 Gauss points)"},
+      {"initial_velocity[].min", nullptr, false, "m", "lower corner of a box; particles in it start with `velocity`"},
+      {"initial_velocity[].max", nullptr, false, "m", "upper corner of the box"},
+      {"initial_velocity[].velocity", nullptr, false, "m/s", "their initial velocity (later boxes win)"},
+      {"fixed[].face", nullptr, false, "-", "xmin | xmax | ymin | ymax of the box: a rigid wall there and beyond"},
+      {"fixed[].components", nullptr, false, "-", "velocity components held at zero, e.g. [\"x\"]"},
+      {"gravity.acceleration", "0.0", true, "m/s^2", "body force per unit mass"},
+      {"gravity.ramp_period", "0.0", false, "s", "T of the ramp of Eq. (44), full gravity from T/2 on (0: no ramp)"},
+      {"gravity.evaluate_at", "\"step_end\"", false, "-", "time of a step at which the ramp is read: step_end | step_start"},
+      {"solver.shape", "\"linear\"", false, "-", "shape function: linear | ugimp | lme (Eqs. 34-41)"},
+      {"solver.integrator", "\"fe\"", false, "-", "fe (forward Euler) | npc (Newmark predictor-corrector)"},
+      {"solver.cfl", "0.5", false, "-", "Courant number of Eq. (42)"},
+      {"solver.courant", "\"max\"", false, "-", "max (Eq. 42 as printed) | sum (the authors' c + |v|)"},
+      {"solver.end_time", nullptr, false, "s", "time at which the run ends (the last step lands on it)"},
+      {"solver.lme_gamma", "3.0", false, "-", "LME locality gamma, beta = gamma / h^2 (Eq. 36)"},
+      {"solver.lme_tol", "1e-6", false, "-", "LME support tolerance, in (0, 1): R = h sqrt(-ln(tol) / gamma)"},
+      {"solver.lme_newton_tol", "1e-10", false, "-", "relative tolerance of the LME Newton iteration"},
+      {"solver.lme_max_iterations", "100", false, "-", "most LME Newton iterations before the run fails"},
+      {"solver.lme_beta", "\"grid_spacing\"", false, "-", "grid_spacing | mean_neighbour_distance (the authors' h)"},
+      {"solver.newmark_gamma", "0.5", false, "-", "Newmark gamma of the predictor-corrector, in [0, 1]"},
+      {"solver.fe_position_velocity", "\"updated\"", false, "-", "updated | start (literal Eqs. 19-22)"},
+      {"solver.npc_position_velocity", "\"corrected\"", false, "-", "corrected | predicted | projected (literal Eq. 33)"},
+      {"solver.energy_growth_limit", "10.0", false, "-",
+       "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off"},
+      {"observer[].name", nullptr, false, "-", "column name in observers.csv (letters, digits, _)"},
+      {"observer[].position", nullptr, false, "m", "the particle nearest this point at t = 0 is observed"},
+      {"output.every", "1", false, "steps", "observers and energy sampled every n steps and at the end"},
+      {"output.snapshots", "[]", false, "s", "times at which every particle is written (CSV, VTK, .pvd)"},
+  };
+  return keys;
+}
+
+/// The table of `key` ("body[].min" -> "body"); empty for a top-level key.
+inline std::string key_section(const std::string& key) {
+  const auto dot = key.find('.');
+  if (dot == std::string::npos) return "";
+  std::string section = key.substr(0, dot);
+  if (section.size() > 2 && section.compare(section.size() - 2, 2, "[]") == 0) section.resize(section.size() - 2);
+  return section;
+}
+
+/// The name of `key` inside its table ("body[].min" -> "min").
+inline std::string key_name(const std::string& key) {
+  const auto dot = key.find('.');
+  return dot == std::string::npos ? key : key.substr(dot + 1);
+}
+
+/// True if the key belongs to an array of tables ([[body]]).
+inline bool key_in_array(const std::string& key) { return key.find("[]") != std::string::npos; }
+
+}  // namespace mpm::io
