@@ -1,4 +1,5 @@
-// Compiles the doctests of scene reading and of the `mpm shape` command into the test program.
+// Compiles the doctests of scene reading, of the run budget and of the `mpm shape` command into the test program.
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/io/scene.hpp"
 #include "mpm/io/scene_file.hpp"
+#include "mpm/io/scene_budget.hpp"

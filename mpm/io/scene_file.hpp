@@ -420,4 +420,54 @@ TEST_CASE("Scene file: overrides land in nested tables and arrays of tables; err
   }
 }
 
+TEST_CASE("Scene file: hostile input is refused with its key: nesting, key paths, non-finite numbers, integer ranges") {
+  auto message_of = [](auto action) -> std::string {
+    try {
+      action();
+    } catch (const SceneError& error) {
+      return error.message();
+    }
+    return "no error";
+  };
+  // 200 000 dotted levels would overflow the TOML parser's stack: refused before it runs
+  std::string deep = "x = 1\n";
+  for (int k = 0; k < 200000; ++k) deep += "a.";
+  deep += "b = 1\n";
+  CHECK(message_of([&] { parse_scene_text(deep, "d.toml"); }) == "error: d.toml:2: (syntax): dotted keys nest deeper than 64 levels");
+  CHECK(message_of([&] { parse_scene_text("x = " + std::string(1000, '['), "d.toml"); }) ==
+        "error: d.toml:1: (syntax): brackets nest deeper than 64 levels");
+  // dots and brackets inside strings and comments do not count; 64 levels are allowed
+  std::string fine = "s = \"" + std::string(100, '.') + "[[[\" # " + std::string(100, '.') + "\n";
+  for (int k = 0; k < 63; ++k) fine += "a.";
+  CHECK(message_of([&] { parse_scene_text(fine + "b = 1\n", "f.toml"); }) == "no error");
+
+  CHECK(is_key_path("solver.cfl"));
+  CHECK(is_key_path("body[0].max"));
+  CHECK(is_key_path("a-b_c.d9"));
+  for (const char* bad : {"", ".", "a..b", ".a", "a.", "body[x].max", "body[0]", "body[].max", "body[-1].max", "body[1234567].max",
+                          "a b", "a[0][1].b", "\"q\".a"})
+    CHECK_MESSAGE(!is_key_path(bad), bad);
+
+  SceneFile scene = parse_scene_text("n = 1\nbig = 4294967297\nv = [1.0, nan]\nw = inf\n[t]\nk = 1\n", "h.toml");
+  SceneReader root(scene, scene.table, "");
+  CHECK(message_of([&] { root.integer("big"); }).rfind("error: h.toml:2: big: must be an integer in [-2147483648, 2147483647], got 4294967297", 0) == 0);
+  CHECK(message_of([&] { root.integer("n", 1, 2, 3); }) == "error: h.toml:1: n: must be an integer in [2, 3], got 1");
+  CHECK(message_of([&] { root.numbers("v", 2); }) == "error: h.toml:3: v: must hold finite numbers only, got nan");
+  CHECK(message_of([&] { root.number("w"); }) == "error: h.toml:4: w: must be a finite number, got inf");
+  CHECK(message_of([&] { root.integers("v", 2, std::nullopt, 0, 10); }) == "error: h.toml:3: v: must hold finite numbers only, got nan");
+  apply_override(scene, "c=[3e9]", 1);
+  CHECK(message_of([&] { root.integers("c", 1, std::nullopt, 1, 100); }) ==
+        "error: --set(1):1: c: entries must be whole numbers in [1, 100], got 3e+09");
+
+  // overrides: keys are checked, and keys inside tables a --set created are located at that --set
+  CHECK(message_of([&] { apply_override(scene, ".=1", 2); }).rfind("error: --set(2):1: .: not a key", 0) == 0);
+  CHECK(message_of([&] { apply_override(scene, "t[x].k=1", 2); }).rfind("error: --set(2):1: t[x].k: not a key", 0) == 0);
+  CHECK(message_of([&] { apply_override(scene, "t.k=1\nz=2", 2); }).rfind("error: --set(2):1: t.k: give one value only", 0) == 0);
+  CHECK(message_of([&] { apply_override(scene, "t.k=" + std::string(100, '['), 2); }).rfind("error: --set(2):1: t.k: the value is not TOML", 0) == 0);
+  apply_override(scene, "made.deeper.key=1", 3);
+  SceneReader made(scene, *scene.table["made"].as_table(), "made");
+  CHECK(message_of([&] { made.number("other"); }) == "error: --set(3):1: made.other: missing; a number is required");
+  CHECK(message_of([&] { made.reject_unknown_keys(); }).rfind("error: --set(3):1: made.deeper: unknown key", 0) == 0);
+}
+
 }  // namespace mpm::io
