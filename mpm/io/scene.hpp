@@ -200,7 +200,7 @@ inline Scene read_scene(const SceneFile& file) {
     scene.lme_tol = solver.positive("lme_tol", 1e-6);
     if (scene.lme_tol >= 1.0) solver.fail("lme_tol", "must be in (0, 1)");
     scene.lme_newton_tol = solver.positive("lme_newton_tol", 1e-10);
-    scene.lme_max_iterations = solver.integer("lme_max_iterations", 100, 1, 1'000'000);
+    scene.lme_max_iterations = solver.integer("lme_max_iterations", 100, 1, 1000);  // Newton converges in < 10
     // The LME support radius R = h sqrt(-ln(tol)/gamma) must reach the corners of a particle's cell
     // (its convex hull), R >= h sqrt(dimension): gamma <= -ln(tol)/dimension. The key blamed is the
     // one the user changed: lme_tol when it is given and lme_gamma is not overridden, else lme_gamma.

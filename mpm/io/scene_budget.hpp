@@ -180,16 +180,18 @@ inline void check_budget(const SceneFile& file, const Scene& scene, const Budget
     }
     grid.fail("cells", what.str());
   }
-  if (!std::isfinite(cost.steps) || (cost.steps > budget.max_steps && !budget.force)) {
+  // Beyond 2^50 steps t + dt == t may hold in double precision and time would stop: never run.
+  const bool endless = !(cost.steps <= std::pow(2.0, 50));
+  if (endless || (cost.steps > budget.max_steps && !budget.force)) {
     SceneReader solver(file, *file.table["solver"].as_table(), "solver");
     std::ostringstream what;
     what << std::setprecision(3) << "end_time / dt = " << scene.control.end_time << " s / " << cost.time_step << " s = " << cost.steps
          << " time steps (dt of Eq. (42) at t = 0: cfl h / wave or particle speed)";
-    if (std::isfinite(cost.steps))
+    if (endless)
+      what << "; no run can take that many steps (time would stop advancing in double precision)";
+    else
       what << ", more than the limit of " << budget.max_steps
            << "; shorten end_time or coarsen the grid, or raise the limit (--max-steps N) or lift it (--force)";
-    else
-      what << "; no run can take that many steps";
     solver.fail("end_time", what.str());
   }
 }
@@ -244,6 +246,7 @@ TEST_CASE("Scene budget: sizes are estimated without overflow and the key that m
   CHECK(message_of(bar, {}, few_steps).rfind("error: b.toml:15: solver.end_time: end_time / dt = 1 s / 0.005 s = 200 time steps", 0) == 0);
   few_steps.force = true;
   CHECK(message_of(bar, {}, few_steps) == "no error");
+  CHECK(message_of(bar, {"solver.end_time=1e20"}, few_steps).find("no run can take that many steps") != std::string::npos);
 }
 
 }  // namespace mpm::io
