@@ -235,7 +235,7 @@ TEST_CASE("Scene budget: sizes are estimated without overflow and the key that m
   small.max_bytes = 1e6;
   CHECK(message_of(bar, {}, small) == "no error");
   CHECK(message_of(bar, {"grid.cells=[100000]"}, small).rfind("error: --set(1):1: grid.cells: the scene needs 2e+05 particles", 0) == 0);
-  CHECK(message_of(bar, {"grid.margin_max=[100000]"}, small).rfind("error: b.toml:5: grid.margin_max: the scene needs", 0) == 0);
+  CHECK(message_of(bar, {"grid.margin_max=[100000]"}, small).rfind("error: --set(1):1: grid.margin_max: the scene needs", 0) == 0);
   CHECK(message_of(bar, {"body[0].particles_per_cell=[100000]"}, small).rfind("error: --set(1):1: body[0].particles_per_cell:", 0) == 0);
   // 10^8 cells on each of two axes: 10^16 particles, far beyond any int, reported, not wrapped
   const std::string plane = "dimension = 2\n[grid]\nlength = [1.0, 1.0]\ncells = [100000000, 100000000]\n[material]\n"
@@ -243,7 +243,7 @@ TEST_CASE("Scene budget: sizes are estimated without overflow and the key that m
   CHECK(message_of(plane, {}, Budget{}).rfind("error: b.toml:4: grid.cells: the scene needs 1e+16 particles, 1e+16 nodes", 0) == 0);
   Budget few_steps;
   few_steps.max_steps = 100;
-  CHECK(message_of(bar, {}, few_steps).rfind("error: b.toml:15: solver.end_time: end_time / dt = 1 s / 0.005 s = 200 time steps", 0) == 0);
+  CHECK(message_of(bar, {}, few_steps).rfind("error: b.toml:14: solver.end_time: end_time / dt = 1 s / 0.005 s = 200 time steps", 0) == 0);
   few_steps.force = true;
   CHECK(message_of(bar, {}, few_steps) == "no error");
   CHECK(message_of(bar, {"solver.end_time=1e20"}, few_steps).find("no run can take that many steps") != std::string::npos);
