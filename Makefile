@@ -35,7 +35,7 @@ bench: build
 	@bash benchmarks/run.sh $(BUILD_DIR)
 
 docs: deps
-	@doxygen paper/Doxyfile > /dev/null && echo "docs: wrote $(BUILD_DIR)/docs/html/index.html"
+	@bash paper/make_docs.sh $(BUILD_DIR)
 
 clean:
 	@rm -rf $(BUILD_DIR) $(SANITIZE_DIR) runs results

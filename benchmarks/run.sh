@@ -1,48 +1,119 @@
 #!/usr/bin/env bash
-# `make bench`: speed of each shape function x integrator, measured in one run so that the ratios
-# are comparable (the machine is shared and noisy: compare ratios, not absolute numbers).
-# Writes results/bench/speed.csv: scene, cells, shape, integrator, particles, steps, wall_seconds,
-# particle_steps_per_second, speed relative to linear + the same integrator.
+# `make bench`: how fast the solver is and how its cost grows, measured in one run so that the
+# ratios are comparable (the machine may be shared and noisy: compare ratios, not absolute numbers).
+#
+# Writes results/bench/:
+#   speed.csv     the targets of issue 9 (Dyka bar at 640 cells; soil block), particle-steps/s, one thread,
+#                 and each shape's cost relative to linear with the same integrator
+#   scaling.csv   time per particle-step against particles: Dyka bar 40..20480 cells (1D) and a soil
+#                 block from 100 to 1e6 particles (2D), per shape and integrator, on 1 and on all cores;
+#                 with the share of each phase of the step (the solver's own timers, run.json) and the
+#                 resident memory per particle
+#   scaling.png, scaling.pdf   the chart of scaling.csv;  summary.md  the numbers that matter, in words
+# The time per particle-step is the sum of the step's phases (run.json phase_seconds, output
+# excluded) over steps x particles: set-up and writing files are not the solver's speed.
+#   benchmarks/run.sh BUILD_DIR [--targets]    (--targets: part 1 only, a minute or so)
 set -euo pipefail
 build=${1:-build}
+only_targets=${2:-}
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=$root/$build/bin/mpm
 out=$root/results/bench
-mkdir -p "$out"
-csv=$out/speed.csv
-echo "scene,cells,shape,integrator,particles,steps,wall_seconds,particle_steps_per_second,relative_to_linear" >"$csv"
+runs=$out/runs
+rm -rf "$runs"
+mkdir -p "$out" "$runs"
+cores=$(nproc)
+start=$(date +%s)
 field() { grep -o "\"$1\": [-0-9.e+]*" "$2" | head -1 | awk '{print $2}'; }
+phases="stencils p2g stress forces grid g2p checks output"
 
-bench() {  # bench SCENE LABEL CELLS UGIMP_MARGIN OVERRIDES...   (UGIMP_MARGIN: rigid cells behind walls, uGIMP only)
-  local scene=$1 label=$2 cells=$3 ugimp_margin=$4; shift 4
-  for integrator in fe npc; do
-    local linear_speed=""
-    for shape in linear ugimp lme; do
-      local dir=$out/runs/${label}_${cells}_${shape}_${integrator}
-      local extra=(); [[ $shape == ugimp ]] && extra=(--set "grid.margin_max=$ugimp_margin")
-      [[ $shape == ugimp && $label == soil_block ]] && extra+=(--set "grid.margin_min=[1,1]")
-      "$mpm" run "$scene" --out "$dir" --set "solver.shape=\"$shape\"" --set "solver.integrator=\"$integrator\"" "$@" "${extra[@]}" >/dev/null
-      local speed; speed=$(field particle_steps_per_second "$dir/run.json")
-      [[ $shape == linear ]] && linear_speed=$speed
-      echo "$label,$cells,$shape,$integrator,$(field particles "$dir/run.json"),$(field steps "$dir/run.json"),$(field wall_seconds "$dir/run.json"),$speed,$(awk -v a="$speed" -v b="$linear_speed" 'BEGIN{printf "%.3f", a/b}')" >>"$csv"
-    done
+# run NAME SCENE THREADS OVERRIDES...: one run under /usr/bin/time; prints the CSV fields
+#   particles,steps,threads,seconds_per_particle_step,particle_steps_per_second,max_resident_kib,<phase shares>
+run() {
+  local name=$1 scene=$2 threads=$3; shift 3
+  local dir=$runs/$name
+  /usr/bin/time -f "%M" -o "$dir.rss" "$mpm" run "$scene" --out "$dir" --threads "$threads" --set output.snapshots=[] \
+    --set output.every=1000000 "$@" >/dev/null
+  local json=$dir/run.json particles steps busy=0 share=""
+  particles=$(field particles "$json"); steps=$(field steps "$json")
+  for phase in $phases; do
+    local seconds; seconds=$(grep -o "\"$phase\": [-0-9.e+]*" "$json" | awk '{print $2}')
+    [[ $phase == output ]] || busy=$(awk -v a="$busy" -v b="$seconds" 'BEGIN{printf "%.9g", a + b}')
+    share+=",$seconds"
   done
+  local shares; shares=$(echo "$share" | awk -F, -v t="$busy" '{for (i = 2; i <= NF; ++i) printf ",%.4f", $i / t}')
+  awk -v p="$particles" -v s="$steps" -v b="$busy" -v th="$threads" -v rss="$(tail -1 "$dir.rss")" -v sh="$shares" \
+    'BEGIN{printf "%d,%d,%d,%.4e,%.4e,%d%s\n", p, s, th, b / (p * s), p * s / b, rss, sh}'
 }
 
-bench "$root/scenes/dyka_bar.toml" dyka_bar 40 [1] --set grid.cells=[40]
-bench "$root/scenes/dyka_bar.toml" dyka_bar 640 [1] --set grid.cells=[640]
-# 2D: the soil block at 1 m cells (400 particles, about 5800 steps to 20 s); for uGIMP also a rigid
-# row below the base (margin_min stays [0, 0] for the others, whose supports need no room there).
-bench "$root/scenes/soil_block.toml" soil_block 10x10 [1,0] --set grid.cells=[10,10] --set output.snapshots=[] --set output.every=100
-column -s, -t "$csv"
-echo "bench: wrote $csv"
-# Memory: the largest resident set of the biggest 1D run (5120 cells, 20 us), per shape function.
-memory=$out/memory.csv
-echo "shape,max_resident_kib" >"$memory"
-for shape in linear ugimp lme; do
-  kib=$(/usr/bin/time -f "%M" "$mpm" run "$root/scenes/dyka_bar.toml" --out "$out/runs/memory_$shape" \
-    --set grid.cells=[5120] --set grid.margin_max=[1] --set "solver.shape=\"$shape\"" --set solver.end_time=2.0e-5 --set output.snapshots=[] 2>&1 >/dev/null | tail -1)
-  echo "$shape,$kib" >>"$memory"
+# ---- 1. The targets: one thread, Dyka bar at 640 cells (200 us) and the soil block at 1 m cells ----
+speed=$out/speed.csv
+echo "scene,shape,integrator,particles,steps,threads,seconds_per_particle_step,particle_steps_per_second,max_resident_kib,$(echo $phases | tr ' ' ','),relative_to_linear" >"$speed"
+for integrator in fe npc; do
+  for scene in dyka_bar soil_block; do
+    linear=""
+    for shape in linear ugimp lme; do
+      extra=()
+      if [[ $scene == dyka_bar ]]; then
+        extra=(--set grid.cells=[640]); [[ $shape == ugimp ]] && extra+=(--set grid.margin_max=[1])
+      else
+        extra=(--set grid.cells=[10,10]); [[ $shape == ugimp ]] && extra+=(--set "grid.margin_min=[1,1]" --set "grid.margin_max=[1,0]")
+      fi
+      row=$(run "target_${scene}_${shape}_$integrator" "$root/scenes/$scene.toml" 1 --set "solver.shape=\"$shape\"" \
+        --set "solver.integrator=\"$integrator\"" "${extra[@]}")
+      cost=$(echo "$row" | cut -d, -f4)
+      [[ $shape == linear ]] && linear=$cost
+      echo "$scene,$shape,$integrator,$row,$(awk -v a="$cost" -v b="$linear" 'BEGIN{printf "%.3f", a / b}')" >>"$speed"
+    done
+  done
 done
-column -s, -t "$memory"
-echo "bench: wrote $memory"
+echo "bench: targets done in $(( $(date +%s) - start )) s"
+if [[ $only_targets == --targets ]]; then column -s, -t "$speed" | cut -c1-200; exit 0; fi
+
+# ---- 2. How cost grows: particle-steps per run about budget (at least 10 steps) ----
+scaling=$out/scaling.csv
+echo "dimension,shape,integrator,cells,particles,steps,threads,seconds_per_particle_step,particle_steps_per_second,max_resident_kib,$(echo $phases | tr ' ' ','),resident_bytes_per_particle" >"$scaling"
+budget=2000000
+thread_counts=(1); [[ $cores -gt 1 ]] && thread_counts+=("$cores")
+scale() {  # scale DIM CELLS SHAPE INTEGRATOR THREADS
+  local dim=$1 cells=$2 shape=$3 integrator=$4 threads=$5 particles end extra=()
+  if [[ $dim == 1 ]]; then
+    particles=$cells
+    # dt = 0.5 h / c = 1.319e-5 / cells s
+    end=$(awk -v n="$cells" -v b="$budget" 'BEGIN{s = b / n; if (s < 10) s = 10; printf "%.6e", s * 1.3190e-5 / n}')
+    extra=(--set "grid.cells=[$cells]" --set "solver.end_time=$end"); [[ $shape == ugimp ]] && extra+=(--set grid.margin_max=[1])
+    scene=$root/scenes/dyka_bar.toml
+  else
+    particles=$((4 * cells * cells))
+    # dt = 0.1 h / c = 0.03464 / cells s (c = 28.87 m/s)
+    end=$(awk -v n="$cells" -v p="$particles" -v b="$budget" 'BEGIN{s = b / p; if (s < 10) s = 10; printf "%.6e", s * 0.034641 / n}')
+    extra=(--set "grid.cells=[$cells,$cells]" --set "solver.end_time=$end")
+    [[ $shape == ugimp ]] && extra+=(--set "grid.margin_min=[1,1]" --set "grid.margin_max=[1,0]")
+    scene=$root/scenes/soil_block.toml
+  fi
+  local row
+  row=$(run "scale_${dim}d_${cells}_${shape}_${integrator}_$threads" "$scene" "$threads" --set "solver.shape=\"$shape\"" \
+    --set "solver.integrator=\"$integrator\"" "${extra[@]}")
+  echo "$dim,$shape,$integrator,$cells,$row,$(echo "$row" | awk -F, '{printf "%.0f", $6 * 1024 / $1}')" >>"$scaling"
+}
+methods=("linear fe" "linear npc" "ugimp fe" "ugimp npc" "lme fe" "lme npc")
+for cells in 40 160 640 2560 10240 20480; do
+  for method in "${methods[@]}"; do
+    for threads in "${thread_counts[@]}"; do scale 1 "$cells" $method "$threads"; done
+  done
+done
+echo "bench: 1D scaling done in $(( $(date +%s) - start )) s"
+for cells in 5 16 50 158 500; do  # 100, 1024, 1e4, 99856 and 1e6 particles
+  for method in "${methods[@]}"; do
+    [[ $cells -ge 500 && $method != "linear fe" && $method != "lme npc" ]] && continue  # the largest: the two ends
+    for threads in "${thread_counts[@]}"; do scale 2 "$cells" $method "$threads"; done
+  done
+done
+echo "bench: 2D scaling done in $(( $(date +%s) - start )) s"
+
+# ---- 3. The chart and the summary ----
+gnuplot -e "csv='$scaling'; out='$out/scaling'; cores=$cores" "$root/benchmarks/scaling.gp"
+bash "$root/benchmarks/summary.sh" "$out" "$cores" >"$out/summary.md"
+column -s, -t "$speed" | cut -c1-200
+cat "$out/summary.md"
+echo "bench: wrote $speed, $scaling, $out/scaling.png, $out/scaling.pdf, $out/summary.md in $(( $(date +%s) - start )) s"

@@ -6,12 +6,15 @@
 ///
 ///   1. dt by the Courant condition, Eq. (42), shortened to land on the next output time;
 ///   2. the stencils N_Ip, grad N_Ip at x_p^k, computed once and reused by every transfer;
-///   3. one step of the integrator (forward Euler, spec 3.2, or the predictor-corrector, spec 3.1);
-///   4. the health checks: no NaN, no particle off the grid, no unbounded energy growth;
+///   3. one step of the integrator (forward Euler, paper/02_mpm_forward_euler.md, or the predictor-corrector, paper/03_predictor_corrector.md);
+///   4. one pass over the particles (ParticleSurvey): the balances, the speeds of the next dt, and the
+///      health checks: no NaN, no particle off the grid, no unbounded energy growth;
 ///   5. the observer samples and snapshots.
 ///
-/// The loop knows no files: a Monitor (io/run_writer.hpp) receives the samples.
+/// The loop knows no files: a Monitor (io/run_writer.hpp) receives the samples. Every pass over the
+/// particles runs on RunControl::threads cores (mpm/core/parallel.hpp); PhaseTimers times each phase.
 #pragma once
+#include <array>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,6 +23,9 @@
 #include <vector>
 
 #include "mpm/analysis/energy.hpp"
+#include "mpm/analysis/particle_survey.hpp"
+#include "mpm/core/parallel.hpp"
+#include "mpm/core/phase_timers.hpp"
 #include "mpm/core/errors.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/integrators/time_step.hpp"
@@ -30,7 +36,7 @@
 
 namespace mpm {
 
-/// When the body force of a step is evaluated (spec 8.7).
+/// When the body force of a step is evaluated (paper/09_choices.md, 'When gravity is evaluated').
 enum class BodyForceTime { step_end, step_start };
 
 struct RunControl {
@@ -43,6 +49,7 @@ struct RunControl {
   /// The run stops (exit code 3) when the kinetic plus strain energy exceeds this factor times
   /// the initial energy plus the work done by the body force: the signature of an instability.
   double energy_growth_limit = 10.0;
+  int threads = 0;  ///< cores the particle loops run on; 0: all (results equal to 1e-12 relative)
 };
 
 struct RunSummary {
@@ -54,6 +61,8 @@ struct RunSummary {
   /// largest |sum_I m_I - sum_p m_p| / sum_p m_p over the steps: Eq. (13) with the partition of unity
   double largest_mass_error = 0.0;
   ShapeDiagnostics shape;
+  int threads = 1;                                ///< cores the particle loops ran on
+  std::array<double, phase_count> phase_seconds{};  ///< wall seconds per Phase, summed over the steps
 };
 
 /// Receives what a run produces; implemented by the writers of io/ and by tests.
@@ -79,48 +88,58 @@ class Simulation {
 
   RunSummary run(Monitor<Dim>& monitor) {
     wall_start_ = std::chrono::steady_clock::now();
+    use_threads(control_.threads);
     shape_.initialise(particles_);
     stencils_.resize(particles_.size(), shape_.capacity());
-    initial_energy_ = balances(particles_).total();
+    grid_fields_.prepare_threads(threads_for(particles_.size()));
+    ParticleSurvey<Dim> survey = survey_particles(particles_, model_.grid);
+    initial_energy_ = survey.balances.total();
 
     RunSummary& summary = summary_;
     summary = RunSummary{};
+    summary.threads = threads_for(particles_.size());
     summary.smallest_time_step = std::numeric_limits<double>::infinity();
     double time = 0.0;
     long step = 0;
     size_t next_snapshot = 0;
-    monitor.sample(step, time, particles_, balances(particles_));
+    monitor.sample(step, time, particles_, survey.balances);
     write_due_snapshots(time, next_snapshot, monitor);
+    PhaseTimers& timers = timers_;
+    timers.restart();
 
     while (time < control_.end_time) {
       // 1. Time step, Eq. (42), landing exactly on output times and on the end time.
-      double dt = courant_time_step(particles_, model_.material.young_modulus, model_.grid.spacing(), control_.cfl,
-                                    control_.courant);
+      double dt = courant_time_step(survey.fastest_speed(), survey.wave_speed(model_.material.young_modulus),
+                                    model_.grid.spacing(), control_.cfl, control_.courant);
       const double target = next_stop(time, next_snapshot);
       const bool lands = time + dt * (1.0 + 1e-9) >= target;
       if (lands) dt = target - time;
       // 2. Stencils at the current positions x_p^k.
       locate_particles(step, time);
+      timers.lap(Phase::stencils);
       // 3. One step of the integrator.
       const double body_force_time = control_.body_force_time == BodyForceTime::step_end ? time + dt : time;
       const Vector<Dim> body_force = model_.gravity.at(body_force_time);
-      integrator_.step(model_, stencils_, body_force, dt, particles_, grid_fields_);
+      integrator_.step(model_, stencils_, body_force, dt, particles_, grid_fields_, timers);
       time = lands ? target : time + dt;
       ++step;
       summary.steps = step;
       summary.final_time = time;
       summary.smallest_time_step = std::min(summary.smallest_time_step, dt);
       summary.largest_time_step = std::max(summary.largest_time_step, dt);
-      // 4. Health.
-      const Balances<Dim> now = balances(particles_);
+      // 4. Health, from one pass over the particles that also gives the balances and the next dt's speeds.
+      survey = survey_particles(particles_, model_.grid);
+      const Balances<Dim>& now = survey.balances;
       summary.largest_mass_error = std::max(summary.largest_mass_error, nodal_mass_error(now.mass));
       external_work_ += dt * body_force.dot(now.momentum);
-      check_health(step, time, now);
+      check_health(step, time, survey);
+      timers.lap(Phase::checks);
       // 5. Output.
       const bool last = time >= control_.end_time;
       if (step % control_.sample_every == 0 || last) monitor.sample(step, time, particles_, now);
       write_due_snapshots(time, next_snapshot, monitor);
       monitor.progress(time, control_.end_time);
+      timers.lap(Phase::output);
     }
 
     finish_summary();
@@ -140,6 +159,7 @@ class Simulation {
     summary_.particle_steps_per_second =
         summary_.wall_seconds > 0.0 ? double(summary_.steps) * particles_.size() / summary_.wall_seconds : 0.0;
     summary_.shape = shape_.diagnostics();
+    summary_.phase_seconds = timers_.seconds;
   }
 
   /// The next time the loop must land on: the next snapshot time or the end time.
@@ -172,14 +192,16 @@ class Simulation {
     }
   }
 
-  void check_health(long step, double time, const Balances<Dim>& now) const {
-    for (int p = 0; p < particles_.size(); ++p) {
+  /// Names the first unhealthy particle, if the survey found one, then checks the energy.
+  void check_health(long step, double time, const ParticleSurvey<Dim>& survey) const {
+    for (int p = 0; survey.unhealthy > 0 && p < particles_.size(); ++p) {
       const bool finite = particles_.position[p].allFinite() && particles_.velocity[p].allFinite() &&
                           particles_.stress[p].allFinite() && std::isfinite(particles_.density[p]);
       if (!finite) throw SimulationFailure(step, time, particles_.id[p], position_text(p), "NaN or infinity in the particle state");
       if (!model_.grid.contains(particles_.position[p]))
         throw SimulationFailure(step, time, particles_.id[p], position_text(p), "particle left the grid");
     }
+    const Balances<Dim>& now = survey.balances;
     const double bound = initial_energy_ + std::max(external_work_, 0.0);
     if (control_.energy_growth_limit > 0.0 && bound > 0.0 && now.total() > control_.energy_growth_limit * bound) {
       std::ostringstream cause;
@@ -206,6 +228,7 @@ class Simulation {
   GridFields<Dim> grid_fields_;
   Stencils<Dim> stencils_;
   RunSummary summary_;
+  PhaseTimers timers_;
   std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   double initial_energy_ = 0.0;
   double external_work_ = 0.0;  ///< \f$ \int \sum_p m_p \mathbf b \cdot \mathbf v_p \, dt \f$

@@ -1,7 +1,8 @@
-// The Dyka bar of scenes/dyka_bar.toml against its exact solution (appendix A, mpm/exact/bar.hpp).
-//
-// The error measure is Eq. (43): the RMS over every time sample (every step, t = 0 included) of
-// v_A - v_exact(X_A, t), with X_A the reference position of particle A (spec 5.1.2).
+/// \file
+/// The Dyka bar of scenes/dyka_bar.toml against its exact solution (appendix A, mpm/exact/bar.hpp).
+///
+/// The error measure is Eq. (43): the RMS over every time sample (every step, t = 0 included) of
+/// v_A - v_exact(X_A, t), with X_A the reference position of particle A (paper/05_time_step_error_gravity.md, Eq. (43)).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -31,14 +32,14 @@ inline double dyka_rms(const std::vector<std::string>& overrides) {
 
 }  // namespace mpm::testing
 
-TEST_CASE("Dyka bar, linear + forward Euler: the RMS of v_A falls from 40 to 80 to 160 cells") {
+TEST_CASE("Eq. (43): Dyka bar, linear + forward Euler: the RMS of v_A falls from 40 to 80 to 160 cells") {
   const double rms40 = mpm::testing::dyka_rms({"grid.cells=[40]"});
   const double rms80 = mpm::testing::dyka_rms({"grid.cells=[80]"});
   const double rms160 = mpm::testing::dyka_rms({"grid.cells=[160]"});
   MESSAGE("RMS/v0 at 40, 80, 160 cells: ", rms40 / 5, ", ", rms80 / 5, ", ", rms160 / 5);
   CHECK(rms80 < rms40);
   CHECK(rms160 < rms80);
-  // An independent implementation of the same algorithm (spec 5.1.6) found 0.1718 and 0.1212 v0.
+  // An independent implementation of the same algorithm (paper/08_test_cases.md) found 0.1718 and 0.1212 v0.
   CHECK(rms40 / 5.0 == doctest::Approx(0.1718).epsilon(0.05));
   CHECK(rms160 / 5.0 == doctest::Approx(0.1212).epsilon(0.05));
 }

@@ -1,6 +1,7 @@
-// A fast subset of the verification suite (issue 4, item 10), so that CI guards the claims and
-// bounds that `make figures` reports. Each bound below is the measured value of the full suite
-// (results/report.md) with a margin, or a bound of the theory.
+/// \file
+/// A fast subset of the verification suite (issue 4, item 10), so that CI guards the claims and
+/// bounds that `make figures` reports. Each bound below is the measured value of the full suite
+/// (results/report.md) with a margin, or a bound of the theory.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -37,7 +38,7 @@ TEST_CASE("Dyka subset: every method converges from 20 to 80 cells, conserves ma
   }
 }
 
-TEST_CASE("Dyka subset: the stability limits of linear shape functions (measured 2.00 for FE, 1.42 for NPC)") {
+TEST_CASE("Eq. (42): Dyka subset: the stability limits of linear shape functions (measured 2.00 for FE, 1.42 for NPC)") {
   CHECK_FALSE(dyka("linear", "fe", 40, 1.9).failed);
   const auto unstable_fe = dyka("linear", "fe", 40, 2.1);
   CHECK(unstable_fe.failed);

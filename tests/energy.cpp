@@ -1,16 +1,17 @@
-// Total energy (kinetic + strain) of the Dyka bar over 10 periods (10 x 4L/c = 1.055 ms, about
-// 3200 steps at 40 cells and CFL 0.5), for each shape function and integrator.
-//
-// What we measured and why it is the bound:
-// - Forward Euler in this form (FLIP increment, positions with the updated nodal momentum) is a
-//   symplectic-Euler-like scheme: it conserves a modified energy, so the true energy oscillates
-//   without drift. Measured: E/E0 within [0.9757, 1.0277] for all three shapes; the test allows
-//   |E/E0 - 1| <= 0.035 and a net change after 10 periods below 2%.
-// - The predictor-corrector updates v_p with the new acceleration only (Eq. 32, spec 3.1.3b), a
-//   first-order, dissipative choice: the energy never increases in any step (measured: not once,
-//   to round-off) and decays, fastest in the first period. Measured E/E0 after 10 periods: 0.2578
-//   (linear, uGIMP) and 0.2577 (LME); the test requires monotone decay (to 1e-12 E0 per step) and
-//   E/E0 in [0.20, 0.32] at the end. The loss falls with dt: at CFL 0.1 it is 0.53 (not tested).
+/// \file
+/// Total energy (kinetic + strain) of the Dyka bar over 10 periods (10 x 4L/c = 1.055 ms, about
+/// 3200 steps at 40 cells and CFL 0.5), for each shape function and integrator.
+///
+/// What we measured and why it is the bound:
+/// - Forward Euler in this form (FLIP increment, positions with the updated nodal momentum) is a
+///   symplectic-Euler-like scheme: it conserves a modified energy, so the true energy oscillates
+///   without drift. Measured: E/E0 within [0.9757, 1.0277] for all three shapes; the test allows
+///   |E/E0 - 1| <= 0.035 and a net change after 10 periods below 2%.
+/// - The predictor-corrector updates v_p with the new acceleration only (Eq. 32, paper/09_choices.md), a
+///   first-order, dissipative choice: the energy never increases in any step (measured: not once,
+///   to round-off) and decays, fastest in the first period. Measured E/E0 after 10 periods: 0.2578
+///   (linear, uGIMP) and 0.2577 (LME); the test requires monotone decay (to 1e-12 E0 per step) and
+///   E/E0 in [0.20, 0.32] at the end. The loss falls with dt: at CFL 0.1 it is 0.53 (not tested).
 #include <doctest/doctest.h>
 
 #include "tests/support.hpp"

@@ -1,17 +1,18 @@
-// One particle falling freely: the integrators against the exact discrete result.
-//
-// A single particle with a uniform velocity field has zero strain rate (sum_I grad N_I = 0), so
-// no stress and no internal force: every node it touches has a_I = g. With a constant dt
-// (the Courant step is set by the wave speed c = 1000 m/s >> |v|):
-//
-// Forward Euler (spec 3.2): v_I^k = v_p^k, p_I^{k+1}/m_I = v_p^k + dt g, hence
-//   v^{k+1} = v^k + dt g,  x^{k+1} = x^k + dt (v^k + dt g)   (semi-implicit Euler), so
-//   x^n = x0 + v0 t + g t^2/2 + g dt t/2,  t = n dt.
-// Predictor-corrector (spec 3.1, gamma = 1/2, a_p^0 = 0): step 0 moves x by dt v0 + dt^2 g; later
-//   steps by dt v^k + (3/2) dt^2 g (predictor adds (1-gamma) dt a_p = dt g/2, corrector dt g/2, and
-//   Eq. (33) adds dt^2 g/2), so
-//   x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2   (n >= 1).
-// Both: v^n = v0 + g t. The continuum limit x0 + v0 t + g t^2/2 is met to O(dt).
+/// \file
+/// One particle falling freely: the integrators against the exact discrete result.
+///
+/// A single particle with a uniform velocity field has zero strain rate (sum_I grad N_I = 0), so
+/// no stress and no internal force: every node it touches has a_I = g. With a constant dt
+/// (the Courant step is set by the wave speed c = 1000 m/s >> |v|):
+///
+/// Forward Euler (paper/02_mpm_forward_euler.md): v_I^k = v_p^k, p_I^{k+1}/m_I = v_p^k + dt g, hence
+///   v^{k+1} = v^k + dt g,  x^{k+1} = x^k + dt (v^k + dt g)   (semi-implicit Euler), so
+///   x^n = x0 + v0 t + g t^2/2 + g dt t/2,  t = n dt.
+/// Predictor-corrector (paper/03_predictor_corrector.md, gamma = 1/2, a_p^0 = 0): step 0 moves x by dt v0 + dt^2 g; later
+///   steps by dt v^k + (3/2) dt^2 g (predictor adds (1-gamma) dt a_p = dt g/2, corrector dt g/2, and
+///   Eq. (33) adds dt^2 g/2), so
+///   x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2   (n >= 1).
+/// Both: v^n = v0 + g t. The continuum limit x0 + v0 t + g t^2/2 is met to O(dt).
 #include <doctest/doctest.h>
 
 #include "tests/support.hpp"
@@ -58,10 +59,10 @@ void check_fall(const std::string& integrator, Expected expected_offset) {
 
 }  // namespace
 
-TEST_CASE("Free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
+TEST_CASE("Eqs. (19)-(22): free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
   check_fall("fe", [](double g, double dt, double t) { return 0.5 * g * dt * t; });
 }
 
-TEST_CASE("Free fall, predictor-corrector: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2 to 1e-11 m") {
+TEST_CASE("Eqs. (26)-(33): free fall, predictor-corrector: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2 to 1e-11 m") {
   check_fall("npc", [](double g, double dt, double t) { return g * dt * t - 0.5 * g * dt * dt; });
 }

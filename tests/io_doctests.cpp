@@ -1,4 +1,5 @@
-// Compiles the doctests of scene reading, of the run budget and of the `mpm shape` command into the test program.
+/// \file
+/// Compiles the doctests of scene reading, of the run budget and of the `mpm shape` command into the test program.
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/io/scene.hpp"
 #include "mpm/io/scene_file.hpp"

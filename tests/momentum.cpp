@@ -1,8 +1,9 @@
-// A free bar (no supports, no gravity) keeps its total momentum to round-off.
-//
-// Why it must: the velocity increment of every integrator is sum_I N_Ip f_I / m_I, so the change of
-// total momentum is sum_p m_p sum_I N_Ip f_I / m_I dt = sum_I f_I dt (m_I = sum_p N_Ip m_p), and
-// sum_I f_I^int = -sum_p V_p sigma_p sum_I grad N_Ip = 0 by the partition of unity.
+/// \file
+/// A free bar (no supports, no gravity) keeps its total momentum to round-off.
+///
+/// Why it must: the velocity increment of every integrator is sum_I N_Ip f_I / m_I, so the change of
+/// total momentum is sum_p m_p sum_I N_Ip f_I / m_I dt = sum_I f_I dt (m_I = sum_p N_Ip m_p), and
+/// sum_I f_I^int = -sum_p V_p sigma_p sum_I grad N_Ip = 0 by the partition of unity.
 #include <doctest/doctest.h>
 
 #include "tests/support.hpp"
@@ -54,12 +55,12 @@ void check_momentum(const std::string& shape, const std::string& integrator) {
 
 }  // namespace
 
-TEST_CASE("Free bar, linear shape functions: momentum constant to round-off, FE and NPC") {
+TEST_CASE("Eq. (2), Eq. (12): free bar, linear shape functions: momentum constant to round-off, FE and NPC") {
   check_momentum("linear", "fe");
   check_momentum("linear", "npc");
 }
 
-TEST_CASE("Free bar, uGIMP and LME: momentum constant to round-off, FE and NPC") {
+TEST_CASE("Eq. (2), Eq. (12): free bar, uGIMP and LME: momentum constant to round-off, FE and NPC") {
   check_momentum("ugimp", "fe");
   check_momentum("ugimp", "npc");
   check_momentum("lme", "fe");

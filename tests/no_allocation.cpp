@@ -1,7 +1,8 @@
-// Nothing is allocated inside the time step (issue 2, item 4): every array is sized before the
-// first step. This test replaces the global operator new with a counting one and checks that no
-// allocation happens between the first and the last sample of a run, for every shape function
-// and integrator, in 1D and 2D.
+/// \file
+/// Nothing is allocated inside the time step (issue 2, item 4): every array is sized before the
+/// first step. This test replaces the global operator new with a counting one and checks that no
+/// allocation happens between the first and the last sample of a run, for every shape function
+/// and integrator, in 1D and 2D.
 #include <doctest/doctest.h>
 
 #include <atomic>

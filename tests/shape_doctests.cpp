@@ -1,4 +1,5 @@
-// Compiles the doctests of the shape functions (shape/) into the test program.
+/// \file
+/// Compiles the doctests of the shape functions (shape/) into the test program.
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/lme.hpp"
 #include "mpm/shape/ugimp.hpp"

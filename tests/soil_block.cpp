@@ -1,11 +1,12 @@
-// The soil block of scenes/soil_block.toml (paper section 3.2) against the exact column of spec 7.2
-// (mpm/exact/column.hpp): the fast subset of the soil verification (verification/soil_suite.cpp).
-// One run is about 2900 steps of 100 particles, a fraction of a second.
-//
-// The tolerances are the suite's (verification/soil_report.hpp), where they are derived:
-//   settlement: 5 % = the finite-strain gap aH/3 = 3.8 % (mpm/exact/column_log_strain.hpp) + ~1 % of grid;
-//   stress: RMS 7.5 % of rho g H, of which h/(4H) = 5 % is the staircase of a cell-wise constant strain;
-//   sigma_xx/sigma_yy: nu/(1-nu) within 1e-3 (exact wherever the walls hold v_x = 0).
+/// \file
+/// The soil block of scenes/soil_block.toml (paper section 3.2) against the exact column of paper/07_exact_column.md
+/// (mpm/exact/column.hpp): the fast subset of the soil verification (verification/soil_suite.cpp).
+/// One run is about 2900 steps of 100 particles, a fraction of a second.
+///
+/// The tolerances are the suite's (verification/soil_report.hpp), where they are derived:
+///   settlement: 5 % = the finite-strain gap aH/3 = 3.8 % (mpm/exact/column_log_strain.hpp) + ~1 % of grid;
+///   stress: RMS 7.5 % of rho g H, of which h/(4H) = 5 % is the staircase of a cell-wise constant strain;
+///   sigma_xx/sigma_yy: nu/(1-nu) within 1e-3 (exact wherever the walls hold v_x = 0).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -29,7 +30,7 @@ TEST_CASE("Soil block, LME gamma = 3, NPC, 2 m cells: settlement, stress and mas
   CHECK(result.reference_height == 9.5);  // the top row of a 2 x 2 split of 2 m cells
   const auto settlement = verification::measure_settlement(result);
   MESSAGE("u(20 s) = ", settlement.final_displacement, " m, exact ", settlement.exact_final, " m");
-  // spec 7.2: after the ramp u oscillates by about +-2.3 mm about the static -(rho g/E)(H Y - Y^2/2) = -0.58713 m.
+  // paper/07_exact_column.md: after the ramp u oscillates by about +-2.3 mm about the static -(rho g/E)(H Y - Y^2/2) = -0.58713 m.
   CHECK(std::abs(settlement.exact_final + 0.58713) <= 0.0025);
   CHECK(std::abs(settlement.final_error) <= verification::settlement_tolerance * std::abs(settlement.exact_final));
   // The stress at t = 20 s: the whole profile, and the bottom row (Y = 0.5 m, exact -558 kPa) against

@@ -1,4 +1,5 @@
-// What the whole-method tests share: running a scene in-process and recording one particle.
+/// \file
+/// What the whole-method tests share: running a scene in-process and recording one particle.
 #pragma once
 #include <string>
 #include <vector>

@@ -51,11 +51,13 @@ inline std::vector<std::string> shape_settings(const std::string& shape) {
   return settings;
 }
 
-inline DykaResult run_dyka(const std::string& scene_path, const std::string& name, const std::vector<std::string>& overrides) {
+inline DykaResult run_dyka(const std::string& scene_path, const std::string& name, const std::vector<std::string>& overrides,
+                           int threads = 1) {
   DykaResult result;
   result.name = name;
   result.overrides = overrides;
-  const mpm::io::Scene scene = mpm::load_scene(scene_path, overrides);
+  mpm::io::Scene scene = mpm::load_scene(scene_path, overrides);
+  scene.control.threads = threads;
   const mpm::Setup<1> setup = mpm::build_setup<1>(scene);
   result.cells = scene.cells[0];
   VelocityRecorder recorder(setup.observed.at(0));
@@ -71,7 +73,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   result.steps = summary.steps;
   result.mass_error = summary.largest_mass_error;
   result.newton_mean = summary.shape.newton_iterations_mean();
-  result.newton_max = summary.shape.newton_iterations_max;
+  result.newton_max = summary.shape.newton_iterations_max();
   result.neighbours_mean = summary.shape.neighbours_mean();
   // The exact solution of the discrete initial data: v0 on the union of the domains
   // [X_p - l_p, X_p + l_p] of the particles that start with it (L/4 when the cells divide by 4).

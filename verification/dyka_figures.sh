@@ -8,6 +8,7 @@ scene=$MPM_ROOT/scenes/dyka_bar.toml
 status=0
 "$MPM_BIN/dyka_suite" "$data" "$MPM_RESULTS/report/20_dyka.md" "$scene" || status=1
 bash "$MPM_ROOT/verification/dyka_stability.sh" "$MPM_BIN/mpm" "$scene" "$data" || status=1
+echo "figures: dyka: stability map done"
 
 g() { gnuplot -e "dir='$plots'; data='$data'; $1" "$plots/$2" || status=1; }
 g "out='$figures/dyka_fig6'; orders='$data/dyka_orders.csv'" dyka_fig6.gp
@@ -35,7 +36,7 @@ g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability
   echo
   echo "![dyka_work_precision](figures/dyka_work_precision.png)"
   echo
-  echo "RMS of v_A against the wall time of each run of the mesh sweep (points left to right: 10 to 5120 cells), measured with two runs at a time on 2 cores."
+  echo "RMS of v_A against the wall time of each run of the mesh sweep (points left to right: 10 to 5120 cells), measured with one run per core at a time."
   echo
   echo "### Where methods fail: the largest stable CFL (\`dyka_stability\`)"
   echo

@@ -13,7 +13,7 @@ trap 'rm -rf "$work"' EXIT
 bisect() {
   local name=$1; shift
   local stable=0.05 unstable=4.0 diagnosis="" code
-  run() { local cfl=$1; shift; "$mpm" run "$scene" --out "$work/$name" --set output.snapshots=[] --set output.every=1000 --set "solver.cfl=$cfl" "$@" >/dev/null 2>"$work/$name.err"; }
+  run() { local cfl=$1; shift; "$mpm" run "$scene" --threads 1 --out "$work/$name" --set output.snapshots=[] --set output.every=1000 --set "solver.cfl=$cfl" "$@" >/dev/null 2>"$work/$name.err"; }
   run "$stable" "$@"; code=$?
   [[ $code -eq 0 ]] || { echo "$name,nan,$stable,$(tr ',\n' ';' <"$work/$name.err")"; return; }
   run "$unstable" "$@"; code=$?

@@ -5,7 +5,7 @@
 //
 //   build/bin/dyka_suite DATA_DIR REPORT SCENE
 //
-// Cases: the mesh sweep of Fig. 6 (10 to 5120 cells, spec 5.1.3) for linear, uGIMP and LME
+// Cases: the mesh sweep of Fig. 6 (10 to 5120 cells, paper/08_test_cases.md) for linear, uGIMP and LME
 // gamma 3 with forward Euler and the predictor-corrector (also Figs. 7, 9, 10 and the work-
 // precision chart); the gamma sweep of Fig. 8 (40 cells).
 #include <gsl/gsl_fit.h>
@@ -27,7 +27,7 @@ const std::vector<int> sweep_cells{10, 20, 40, 80, 160, 320, 640, 1280, 2560, 51
 const std::vector<std::string> shapes{"linear", "ugimp", "lme"}, integrators{"fe", "npc"};
 const std::vector<double> gammas{0.8, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0};
 constexpr double speed_v0 = 5.0;              // |v0|, m/s
-constexpr double largest_displacement = 3.298e-5;  // a |v0| / c, m (spec 5.1.3)
+constexpr double largest_displacement = 3.298e-5;  // a |v0| / c, m (paper/08_test_cases.md)
 
 struct CaseSpec {
   std::string name;
@@ -49,7 +49,7 @@ std::vector<CaseSpec> all_cases() {
     for (const auto& shape : shapes)
       for (const auto& integrator : integrators)
         // room beyond the free end: 4 cells, and 1% of the bar more on fine meshes, where grid
-        // crossing can set the end particle adrift (spec 5.1.2)
+        // crossing can set the end particle adrift (paper/09_choices.md, 'Grid margins')
       {
         std::vector<std::string> overrides = verification::shape_settings(shape);
         overrides.insert(overrides.end(), {"grid.cells=[" + std::to_string(cells) + "]", "grid.margin_min=[" + std::to_string(4 + cells / 100) + "]",
@@ -78,7 +78,7 @@ std::vector<CaseSpec> all_cases() {
   return cases;
 }
 
-/// Grid-crossing ratio of spec 5.1.4: delta = u_max / d_face, d_face = h / (2 ppc), ppc = 1.
+/// Grid-crossing ratio of paper/08_test_cases.md: delta = u_max / d_face, d_face = h / (2 ppc), ppc = 1.
 double crossing_ratio(int cells) { return largest_displacement / (0.5 * 0.1333 / cells); }
 std::string band_of(int cells) {
   const double delta = crossing_ratio(cells);
@@ -116,15 +116,20 @@ std::string fixed(double value, int digits = 4) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: dyka_suite DATA_DIR REPORT SCENE\n");
+  const unsigned cores = verification::suite_threads(argc, argv);
+  if (argc != 4 || cores == 0) {
+    std::fprintf(stderr, "usage: dyka_suite DATA_DIR REPORT SCENE [--threads N]\n");
     return 2;
   }
   const std::string folder = argv[1], report_path = argv[2], scene = argv[3];
   const auto cases = all_cases();
   std::vector<verification::DykaResult> results(cases.size());
-  verification::run_in_parallel(cases.size(), [&](size_t k) {
-    results[k] = verification::run_dyka(scene, cases[k].name, cases[k].overrides);
+  std::vector<std::string> names;
+  for (const auto& spec : cases) names.push_back(spec.name);
+  // Every case on one thread (see verification/parallel.hpp, run_cases, for why).
+  const std::vector<bool> wide(cases.size(), false);
+  verification::run_cases("dyka", names, wide, cores, [&](size_t k, int threads) {
+    results[k] = verification::run_dyka(scene, cases[k].name, cases[k].overrides, threads);
     verification::write_series(results[k], folder + "/" + cases[k].name + ".csv");
   });
   std::map<std::string, const verification::DykaResult*> by_name;
@@ -245,7 +250,7 @@ int main(int argc, char** argv) {
                "largest |v_A|/v0: FE " + fixed(fe.largest_speed / speed_v0) + ", NPC " + fixed(npc.largest_speed / speed_v0) +
                    "; RMS/v0: FE " + fixed(fe.rms / speed_v0) + ", NPC " + fixed(npc.rms / speed_v0),
                npc.largest_speed < fe.largest_speed && npc.rms < fe.rms, false});
-    add(list, {"spec 5.1.6: NPC stays within 1.0-1.09 v0, FE overshoots to 1.3-1.6 v0",
+    add(list, {"paper/08_test_cases.md: NPC stays within 1.0-1.09 v0, FE overshoots to 1.3-1.6 v0",
                "NPC " + fixed(npc.largest_speed / speed_v0) + " v0, FE " + fixed(fe.largest_speed / speed_v0) + " v0",
                npc.largest_speed / speed_v0 <= 1.09 && fe.largest_speed / speed_v0 >= 1.3, false});
     sections.push_back({"Fig. 7: predictor-corrector against forward Euler (`dyka_fig7`)", list});
@@ -271,7 +276,7 @@ int main(int argc, char** argv) {
       const double linear = result(sweep_name("linear", integrator, 40)).rms;
       const double ugimp = result(sweep_name("ugimp", integrator, 40)).rms, lme = result(sweep_name("lme", integrator, 40)).rms;
       const double spread = (std::max({linear, ugimp, lme}) - std::min({linear, ugimp, lme})) / std::min({linear, ugimp, lme});
-      add(list, {"Without grid crossing the three shape functions give nearly the same v_A (spec 5.1.6: within about 1%; " + integrator + ", 40 cells)",
+      add(list, {"Without grid crossing the three shape functions give nearly the same v_A (paper/08_test_cases.md: within about 1%; " + integrator + ", 40 cells)",
                  "RMS/v0 linear " + fixed(linear / speed_v0) + ", uGIMP " + fixed(ugimp / speed_v0) + ", LME " + fixed(lme / speed_v0) +
                      ": spread " + fixed(100.0 * spread, 3) + "%",
                  spread <= 0.05, false});
@@ -298,7 +303,7 @@ int main(int argc, char** argv) {
     for (const auto& run : results)
       if (run.name.find("_lme_") != std::string::npos || run.name.find("gamma") != std::string::npos)
         mean += run.newton_mean, ++count, largest = std::max(largest, run.newton_max);
-    add(list, {"Warm-started Newton iterations for lambda stay few (spec 8.3: 2-6)",
+    add(list, {"Warm-started Newton iterations for lambda stay few (paper/09_choices.md: 2-6)",
                "mean " + fixed(mean / count, 3) + " iterations per particle-step over the LME runs, largest " + std::to_string(largest),
                mean / count <= 6.0, false});
     sections.push_back({"LME Newton iterations", list});
@@ -318,7 +323,7 @@ int main(int argc, char** argv) {
     for (const auto& claim : list) report << "| " << claim.claim << " | " << claim.measured << " | " << verdict(claim) << " |\n";
     report << "\n";
   }
-  report << "Fitted orders of convergence (GSL least squares on log RMS against log cells, per band of spec 5.1.4):\n\n"
+  report << "Fitted orders of convergence (GSL least squares on log RMS against log cells, per band of paper/08_test_cases.md):\n\n"
          << "| shape | integrator | negligible (10-160) | transition (320-1280) | crossing (2560-5120) |\n|---|---|---|---|---|\n";
   for (const auto& shape : shapes)
     for (const auto& integrator : integrators)

@@ -1,4 +1,4 @@
-// One soil-block case of the verification suite (paper section 3.2, spec 5.2): run a scene of
+// One soil-block case of the verification suite (paper section 3.2, paper/08_test_cases.md): run a scene of
 // scenes/soil_block*.toml with overrides in-process and record
 //   - the vertical displacement u_y(t) = y(t) - Y of the observed top particle at every sample,
 //   - every particle (position, reference position, stress) at the scene's snapshot times,
@@ -80,11 +80,12 @@ struct SoilRecorder : mpm::Monitor<2> {
 /// (NaN, a particle off the grid, unbounded energy growth) is caught and recorded, with what was
 /// recorded up to it; a SceneError propagates (a wrong case list is a bug of the suite).
 inline SoilResult run_soil_case(const std::string& scene_path, const std::string& name,
-                                const std::vector<std::string>& overrides) {
+                                const std::vector<std::string>& overrides, int threads = 1) {
   SoilResult result;
   result.name = name;
   result.overrides = overrides;
   result.scene = mpm::load_scene(scene_path, overrides);
+  result.scene.control.threads = threads;
   const mpm::Setup<2> setup = mpm::build_setup<2>(result.scene);
   const int observed = setup.observed.at(0);
   result.reference_x = setup.particles.reference_position[observed][0];

@@ -64,7 +64,7 @@ inline void write_particle_stress(const SoilResult& result, const SoilSnapshot& 
 }
 
 /// Fig. 12, the profiles: the exact sigma_yy(Y, t) against the current height Y + u_exact(Y, t)
-/// (small strain, spec 7.2), and the static finite-strain column (stress, Y + u(Y)), 201 points.
+/// (small strain, paper/07_exact_column.md), and the static finite-strain column (stress, Y + u(Y)), 201 points.
 inline void write_stress_profile(const mpm::io::Scene& scene, double time, const std::string& path) {
   const auto column = exact_column(scene);
   const auto log_strain = log_strain_column(scene);

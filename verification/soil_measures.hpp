@@ -1,4 +1,4 @@
-// A soil-block run against the exact column (spec 7.2, mpm/exact/column.hpp) and its finite-strain
+// A soil-block run against the exact column (paper/07_exact_column.md, mpm/exact/column.hpp) and its finite-strain
 // static counterpart (mpm/exact/column_log_strain.hpp): the numbers the suite's figures, checks and
 // report are made of. The exact solutions take their parameters from the scene, never from the solver.
 #pragma once
@@ -14,7 +14,7 @@
 
 namespace verification {
 
-/// Spec 7.2: the constrained modulus of a laterally confined column (plane strain, lateral rollers),
+/// paper/07_exact_column.md: the constrained modulus of a laterally confined column (plane strain, lateral rollers),
 /// \f$ M = E(1-\nu)/((1+\nu)(1-2\nu)) \f$; M = E for nu = 0, with or without lateral rollers.
 inline double constrained_modulus(const mpm::io::Scene& scene) {
   const double nu = scene.poisson_ratio;
@@ -32,26 +32,26 @@ inline mpm::exact::SoilColumnLogStrain log_strain_column(const mpm::io::Scene& s
                                          std::abs(scene.gravity[1]));
 }
 
-/// \f$ T_1 = 4H/c \f$, \f$ c = \sqrt{M/\rho} \f$: the period of the column's first mode (spec 7.2).
+/// \f$ T_1 = 4H/c \f$, \f$ c = \sqrt{M/\rho} \f$: the period of the column's first mode (paper/07_exact_column.md).
 inline double first_period(const mpm::io::Scene& scene) {
   return 4.0 * scene.length[1] / std::sqrt(constrained_modulus(scene) / scene.density);
 }
 
 struct SettlementMeasures {
-  std::vector<double> exact;        ///< u_exact(Y, t_n) at every sample (spec 7.2, small strain)
+  std::vector<double> exact;        ///< u_exact(Y, t_n) at every sample (paper/07_exact_column.md, small strain)
   double final_displacement = 0.0;  ///< u(t_end) of the observed particle
   double exact_final = 0.0;         ///< u_exact(Y, t_end)
   double final_error = 0.0;         ///< u(t_end) - u_exact(Y, t_end)
   double rms_error = 0.0;           ///< Eq. (43) over every sample of u
   /// time average of u over the last four T1 of the run, all after the ramp: it removes the free
-  /// oscillation about the static state (spec 5.2.2: +-2.3 mm) and leaves the static settlement
+  /// oscillation about the static state (paper/07_exact_column.md: +-2.3 mm) and leaves the static settlement
   double mean_settlement = std::numeric_limits<double>::quiet_NaN();
   double swing = std::numeric_limits<double>::quiet_NaN();        ///< max - min of u over that window
   double exact_swing = std::numeric_limits<double>::quiet_NaN();  ///< the same for u_exact
   /// after the ramp (constant gravity) the mechanical energy E = kinetic + strain + gravity potential is
   /// conserved: (max - min of E over t >= T/2) / (mean kinetic + strain energy there)
   double energy_drift = std::numeric_limits<double>::quiet_NaN();
-  double static_small_strain = 0.0;  ///< static u(Y), spec 7.2
+  double static_small_strain = 0.0;  ///< static u(Y), paper/07_exact_column.md
   double static_log_strain = 0.0;    ///< static u(Y) at finite (logarithmic) strain
 };
 

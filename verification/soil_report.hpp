@@ -1,4 +1,4 @@
-// The soil block's report fragment (Markdown): for each figure the paper's claims (spec 6) and the
+// The soil block's report fragment (Markdown): for each figure the paper's claims (paper/08_test_cases.md) and the
 // bounds of the theory, the numbers we measured, and whether each holds. Hard claims (theory bounds)
 // decide the suite's exit status; the paper's claims are reported, with numbers, never tuned away.
 #pragma once

@@ -1,4 +1,4 @@
-// The soil-block part of `make figures` (paper section 3.2, Figs. 11-13; spec 5.2 and 7.2): runs every
+// The soil-block part of `make figures` (paper section 3.2, Figs. 11-13; paper/08_test_cases.md, paper/07_exact_column.md): runs every
 // case in parallel on the machine's cores, writes the data of each figure as CSV into DATA_DIR
 // (files soil_*.csv), and the report fragment REPORT (Markdown) with each claim, the numbers we
 // measured and whether it holds. Exits 1 when a hard check (a bound of the theory) fails.
@@ -102,11 +102,11 @@ void write_introduction(std::ostream& report, const Outcome& paper, size_t runs,
          << "A 10 m x 10 m elastic block in plane strain (E = 5 MPa, rho = 6000 kg/m^3, nu = 0), 2 m cells with 2 x 2 particles "
             "at the quarter points, on a frictionless base between frictionless walls (`scenes/soil_block.toml`; free sides: "
             "`scenes/soil_block_free_sides.toml`), under gravity ramped by Eq. (44) over 10 s (T = 20 s) and evaluated at the end "
-            "of each step, to t = 20 s with CFL 0.1 on sqrt(E/rho) (Eq. 42). The exact solution is the 1D column of spec 7.2 "
+            "of each step, to t = 20 s with CFL 0.1 on sqrt(E/rho) (Eq. 42). The exact solution is the 1D column of paper/07_exact_column.md "
             "(`mpm/exact/column.hpp`), evaluated at each particle's reference height Y, with the ramp g(t) of Eq. (44) "
             "continuous in time; the solver's gravity at the end of each step shifts the load by dt/2 = 3.5 ms (u changes "
             "in the fifth digit when it is evaluated at the start instead).\n\n"
-         << "Choices where the paper is silent: nu = 0 and lateral rollers (spec 5.2.1, 8.9); particles at the quarter points "
+         << "Choices where the paper is silent: nu = 0 and lateral rollers (paper/09_choices.md); particles at the quarter points "
             "(the top row at Y = 9.5 m, where the authors' LME and Q4 runs used the Gauss point 9.577 m); the observed particle "
             "is the top-row particle at (4.5, 9.5) m (4.5 and 5.5 are equally near W/2; we take the first); no grid margins "
             "for linear and LME, whose walls and base are then the edges of the grid, where LME interpolates; one rigid margin "
@@ -176,8 +176,9 @@ void write_refinement_table(std::ostream& report, const verification::SoilLookup
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR\n");
+  const unsigned cores = verification::suite_threads(argc, argv);
+  if (argc != 4 || cores == 0) {
+    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR [--threads N]\n");
     return 2;
   }
   const std::string folder = argv[1], report_path = argv[2], scenes = argv[3];
@@ -194,8 +195,12 @@ int main(int argc, char** argv) {
     }
   }
   std::vector<Outcome> outcomes(cases.size());
-  const unsigned cores = verification::run_in_parallel(cases.size(), [&](size_t k) {
-    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides);
+  std::vector<std::string> names;
+  for (const auto& spec : cases) names.push_back(spec.name);
+  // Every case on one thread (see verification/parallel.hpp, run_cases, for why).
+  const std::vector<bool> wide(cases.size(), false);
+  verification::run_cases("soil", names, wide, cores, [&](size_t k, int threads) {
+    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides, threads);
     outcomes[k].settlement = verification::measure_settlement(outcomes[k].result);
   });
   std::map<std::string, const Outcome*> by_name;

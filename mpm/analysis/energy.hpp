@@ -16,15 +16,19 @@ struct Balances {
   double total() const { return kinetic + strain; }
 };
 
+/// Adds particle p's share to the balances.
+template <int Dim>
+void add_to_balances(const Particles<Dim>& particles, int p, Balances<Dim>& sum) {
+  sum.kinetic += 0.5 * particles.mass[p] * particles.velocity[p].squaredNorm();
+  sum.strain += 0.5 * particles.volume(p) * (particles.stress[p].array() * particles.strain[p].array()).sum();
+  sum.momentum += particles.mass[p] * particles.velocity[p];
+  sum.mass += particles.mass[p];
+}
+
 template <int Dim>
 Balances<Dim> balances(const Particles<Dim>& particles) {
   Balances<Dim> sum;
-  for (int p = 0; p < particles.size(); ++p) {
-    sum.kinetic += 0.5 * particles.mass[p] * particles.velocity[p].squaredNorm();
-    sum.strain += 0.5 * particles.volume(p) * (particles.stress[p].array() * particles.strain[p].array()).sum();
-    sum.momentum += particles.mass[p] * particles.velocity[p];
-    sum.mass += particles.mass[p];
-  }
+  for (int p = 0; p < particles.size(); ++p) add_to_balances(particles, p, sum);
   return sum;
 }
 

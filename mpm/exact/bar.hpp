@@ -1,5 +1,5 @@
 /// \file
-/// Exact solution of the 1D linear elastic bar (appendix A.1-A.19, spec section 7.1): the oracle of
+/// Exact solution of the 1D linear elastic bar (appendix A.1-A.19, paper/06_exact_bar.md): the oracle of
 /// the Dyka test. It shares no code with the solver.
 ///
 /// Method. The bar obeys \f$ \rho v_t = \sigma_X \f$ and \f$ \sigma_t = E v_X \f$ (A.4-A.5). Two
@@ -13,7 +13,7 @@
 /// stress follow from (A.19). For piecewise-constant initial data \f$ F \f$ is a step function: it is
 /// tabulated once (jump positions and plateau values over one period), so every evaluation is exact
 /// and every jump sits at a known position. At a jump the average of the two one-sided limits is
-/// returned (spec 7.1 item 6).
+/// returned (paper/06_exact_bar.md, 'Boundary relations and the unfolded profile').
 ///
 /// Coordinates are reference (material) coordinates X in metres, as in the small-strain appendix.
 #pragma once
@@ -139,7 +139,7 @@ class ElasticBar {
     return (piece->stress + impedance() * piece->velocity) / (2.0 * impedance());
   }
 
-  /// Spec 7.1 step 2: the left-going profile unfolded over one period \f$ 0 \le y < 4L \f$,
+  /// paper/06_exact_bar.md, 'Boundary relations and the unfolded profile': the left-going profile unfolded over one period \f$ 0 \le y < 4L \f$,
   /// \f[ F(y) = \begin{cases} \mathfrak{R}^{II}_0(y) & 0 \le y \le L
   ///     \\ -\mathfrak{R}^{I}_0(2L - y) & L < y \le 2L \text{ (fixed end: } \mathfrak{R}^I + \mathfrak{R}^{II} = 0)
   ///     \\ -\mathfrak{R}^{II}_0(y - 2L) & 2L < y \le 3L
@@ -154,7 +154,7 @@ class ElasticBar {
   }
 
   /// Every X where the initial data may jump (the bar ends and the piece ends) appears in one period of
-  /// F at its four images \f$ X,\; 2L - X,\; 2L + X,\; 4L - X \f$ (the unfolding of spec 7.1 step 2).
+  /// F at its four images \f$ X,\; 2L - X,\; 2L + X,\; 4L - X \f$ (the unfolding of paper/06_exact_bar.md).
   void tabulate_left_going_profile() {
     const double L = length_;
     std::vector<double> jump_sources{0.0, L};
@@ -181,7 +181,7 @@ class ElasticBar {
       plateau_values_.push_back(unfolded_left_going(0.5 * (jump_positions_[i] + jump_positions_[i + 1])));
   }
 
-  /// Spec 7.1 item 6: at the jump number `index` of the period, the average of the one-sided limits
+  /// paper/06_exact_bar.md: at the jump number `index` of the period, the average of the one-sided limits
   /// \f$ \tfrac12\,[F(y^-) + F(y^+)] \f$ (the plateaus wrap around: F has period 4L).
   double average_at_jump(std::size_t index) const {
     const std::size_t last = jump_positions_.size() - 1;  // jump_positions_[last] = 4L is jump 0 again
@@ -190,7 +190,7 @@ class ElasticBar {
     return 0.5 * (before + after);
   }
 
-  /// Spec 7.1 step 2: \f$ F(y) \f$ for any real y, using the period \f$ F(y + 4L) = F(y) \f$.
+  /// paper/06_exact_bar.md: \f$ F(y) \f$ for any real y, using the period \f$ F(y + 4L) = F(y) \f$.
   double left_going_profile(double y) const {
     double y_in_period = std::fmod(y, period());
     if (y_in_period < 0.0) y_in_period += period();
@@ -208,14 +208,14 @@ class ElasticBar {
 // Tests. Every expected value below is derived by hand in the comments, never by the code under test.
 // ---------------------------------------------------------------------------------------------------
 
-TEST_CASE("exact::ElasticBar: wave speed and impedance of the Dyka bar (spec 5.1.6)") {
+TEST_CASE("Eq. (A.6), Eq. (A.19): exact::ElasticBar: wave speed and impedance of the Dyka bar (paper/06_exact_bar.md)") {
   const ElasticBar bar(0.1333, 200e9, 7833.0, {});
   CHECK(bar.wave_speed() == doctest::Approx(5053.02).epsilon(1e-6));  // sqrt(200e9 / 7833)
   CHECK(bar.impedance() == doctest::Approx(3.958e7).epsilon(1e-3));   // 7833 * 5053.02
   CHECK(bar.impedance() == doctest::Approx(7833.0 * bar.wave_speed()).epsilon(1e-14));
 }
 
-TEST_CASE("exact::ElasticBar: boundary relations, v(L,t) = 0 and sigma(0,t) = 0, for any data and time") {
+TEST_CASE("Eq. (A.19): exact::ElasticBar: boundary relations, v(L,t) = 0 and sigma(0,t) = 0, for any data and time") {
   // Deliberately messy data: velocity and stress, gaps, adjacent pieces, a piece touching each end.
   const double length = 2.0;
   const ElasticBar bar(length, 3.0, 2.0,
@@ -229,16 +229,16 @@ TEST_CASE("exact::ElasticBar: boundary relations, v(L,t) = 0 and sigma(0,t) = 0,
   }
 }
 
-TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6)") {
+TEST_CASE("Eqs. (A.16)-(A.19): exact::ElasticBar: the Dyka bar, velocity of the free end (paper/06_exact_bar.md)") {
   // L = 0.1333 m, a = L/4, v0 = -5 m/s on [0, a]. Hand derivation: R^I_0 = R^II_0 = v0/2 on [0, a], and
-  // v(0,t) = 2 F(ct). Unfolding F (spec 7.1 step 2): F = v0/2 on [0, a], -v0/2 on [2L - a, 2L + a],
+  // v(0,t) = 2 F(ct). Unfolding F (paper/06_exact_bar.md): F = v0/2 on [0, a], -v0/2 on [2L - a, 2L + a],
   // +v0/2 on [4L - a, 4L + a], ... so v(0,t) = v0 for ct < a, 0 until 2L - a, -v0 until 2L + a, 0 until
   // 4L - a, v0 until 4L + a, 0 until 6L - a, -v0 until 6L + a, 0 until 8L - a (204.5 us > 200 us).
   const double length = 0.1333, quarter = length / 4.0, v0 = -5.0;
   const ElasticBar bar(length, 200e9, 7833.0, {{0.0, quarter, v0, 0.0}});
   const double c = bar.wave_speed();
   const double a_over_c = quarter / c, l_over_c = length / c;
-  // The interval ends of spec 5.1.6, in microseconds, from the formulas above.
+  // The interval ends of paper/06_exact_bar.md ('Values for the Dyka bar'), in microseconds, from the formulas above.
   const std::vector<double> ends{a_over_c,
                                  2.0 * l_over_c - a_over_c,
                                  2.0 * l_over_c + a_over_c,
@@ -247,7 +247,7 @@ TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6
                                  6.0 * l_over_c - a_over_c,
                                  6.0 * l_over_c + a_over_c,
                                  200e-6};
-  // Spec 5.1.6 prints 165.0 for 6L/c + a/c = 158.28 + 6.60 = 164.88 us; rounded, that is 164.9.
+  // An earlier reading printed 165.0 for 6L/c + a/c = 158.28 + 6.60 = 164.88 us; rounded, that is 164.9.
   const std::vector<double> printed_ends_us{6.6, 46.2, 59.4, 98.9, 112.1, 151.7, 164.9, 200.0};
   const std::vector<double> plateau{-5.0, 0.0, 5.0, 0.0, -5.0, 0.0, 5.0, 0.0};
   for (std::size_t i = 0; i < ends.size(); ++i) CHECK(std::abs(ends[i] * 1e6 - printed_ends_us[i]) <= 0.0501);
@@ -261,7 +261,7 @@ TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6
     }
     start = ends[i];
   }
-  // At the jumps themselves: the average of the one-sided limits (spec 7.1 item 6).
+  // At the jumps themselves: the average of the one-sided limits (paper/06_exact_bar.md).
   CHECK(bar.velocity(0.0, a_over_c) == doctest::Approx(-2.5));
   CHECK(bar.velocity(0.0, 2.0 * l_over_c - a_over_c) == doctest::Approx(2.5));
   CHECK(bar.velocity(quarter, 0.0) == doctest::Approx(-2.5));   // the initial discontinuity
@@ -269,7 +269,7 @@ TEST_CASE("exact::ElasticBar: the Dyka bar, velocity of the free end (spec 5.1.6
   CHECK(bar.velocity(2.0 * quarter, 0.0) == 0.0);
 }
 
-TEST_CASE("exact::ElasticBar: Dyka tension plateau Z|v0|/2, its doubling at the fixed end, sigma = -Z v behind a right-going front") {
+TEST_CASE("Eq. (A.5), Eq. (A.19): exact::ElasticBar: Dyka tension plateau Z|v0|/2, its doubling at the fixed end, sigma = -Z v behind a right-going front") {
   // Hand derivation: R^I_0 = v0/2 on [0, a] plus its free-end image gives a right-going pulse of
   // R^I = v0/2 occupying X - ct in (-a, a); R^II = 0 in the interior for a < ct < L - a. There
   // v = R^I = v0/2 = -2.5 m/s and sigma = -Z R^I = -Z v0/2 = +98.95 MPa (tension). At the fixed end,
@@ -303,7 +303,7 @@ TEST_CASE("exact::ElasticBar: Dyka tension plateau Z|v0|/2, its doubling at the 
   }
 }
 
-TEST_CASE("exact::ElasticBar: a bar hitting the wall as a whole gives the square wave") {
+TEST_CASE("Eqs. (A.16)-(A.19): exact::ElasticBar: a bar hitting the wall as a whole gives the square wave") {
   // Uniform v0 = +1 m/s towards the fixed end, sigma0 = 0: R^I_0 = R^II_0 = v0/2 on [0, L], hence
   // F = +v0/2 on (0, L), -v0/2 on (L, 3L), +v0/2 on (3L, 4L), v = F(ct - X) + F(ct + X),
   // sigma = Z [F(ct + X) - F(ct - X)]. Phase by phase (c t measured in L):
@@ -339,7 +339,7 @@ TEST_CASE("exact::ElasticBar: a bar hitting the wall as a whole gives the square
   CHECK(bar.velocity(0.0, length / c) == doctest::Approx(0.0));  // at the switch: average of v0 and -v0
 }
 
-TEST_CASE("exact::ElasticBar: a stress pulse splits into two halves, sigma = -Z v right-going and +Z v left-going") {
+TEST_CASE("Eqs. (A.17)-(A.19): exact::ElasticBar: a stress pulse splits into two halves, sigma = -Z v right-going and +Z v left-going") {
   // sigma0 = s on [0.4L, 0.6L], v0 = 0: R^I_0 = -s/(2Z), R^II_0 = s/(2Z). At ct = 0.25 L the halves are
   // centred at 0.75L (right-going: sigma = s/2, v = -s/(2Z)) and 0.25L (left-going: sigma = s/2, v = +s/(2Z)).
   // A compressive pulse (s < 0) pushes the material outwards on both sides.
@@ -354,6 +354,130 @@ TEST_CASE("exact::ElasticBar: a stress pulse splits into two halves, sigma = -Z 
   CHECK(bar.velocity(0.5, time) == 0.0);
   CHECK(bar.right_going(0.75, time) == doctest::Approx(-pulse / (2.0 * impedance)));
   CHECK(bar.left_going(0.75, time) == 0.0);
+}
+
+/// Midpoint sum of f over [from, to] with n intervals (a plain quadrature for the balance-law tests).
+template <class Function>
+double midpoint_integral(Function f, double from, double to, int n) {
+  const double width = (to - from) / n;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) sum += f(from + (i + 0.5) * width);
+  return sum * width;
+}
+
+TEST_CASE("Eq. (A.17), Eq. (A.18): the invariants of the initial data, by hand") {
+  // E = 4 Pa, rho = 1 kg/m^3: c = 2 m/s, Z = 2. On [0.3, 0.5]: v0 = 1.5, sigma0 = 2, hence
+  // R^I_0 = (-2 + 2 * 1.5) / 4 = 0.25 and R^II_0 = (2 + 2 * 1.5) / 4 = 1.25; elsewhere both are 0.
+  const ElasticBar bar(1.0, 4.0, 1.0, {{0.3, 0.5, 1.5, 2.0}});
+  CHECK(bar.wave_speed() == doctest::Approx(2.0).epsilon(1e-15));
+  CHECK(bar.impedance() == doctest::Approx(2.0).epsilon(1e-15));
+  CHECK(bar.right_going(0.4, 0.0) == doctest::Approx(0.25).epsilon(1e-15));
+  CHECK(bar.left_going(0.4, 0.0) == doctest::Approx(1.25).epsilon(1e-15));
+  CHECK(bar.right_going(0.1, 0.0) == 0.0);
+  CHECK(bar.left_going(0.7, 0.0) == 0.0);
+  // (A.19) inverts them: v = 0.25 + 1.25 = 1.5 and sigma = 2 (1.25 - 0.25) = 2, the data.
+  CHECK(bar.velocity(0.4, 0.0) == doctest::Approx(1.5).epsilon(1e-15));
+  CHECK(bar.stress(0.4, 0.0) == doctest::Approx(2.0).epsilon(1e-15));
+}
+
+TEST_CASE("Eq. (A.5), Eq. (A.1): jumps across a wave front, [sigma] = -Z [v] right-going and +Z [v] left-going") {
+  // A front moving with speed s carries jumps that satisfy the balance laws in integral form:
+  // (A.1) rho v_t = sigma_X gives -s rho [v] = [sigma], (A.5) sigma_t = E v_X gives -s [sigma] = E [v].
+  // Both hold with s = +c and [sigma] = -Z [v] (right-going), or s = -c and [sigma] = +Z [v] (left-going).
+  // Data of the test above (c = 2, Z = 2, R^I_0 = 0.25, R^II_0 = 1.25 on [0.3, 0.5]); at t = 0.075 s,
+  // ct = 0.15 m, before any wave reaches an end, by hand:
+  //   X in (0.15, 0.35): the left-going half,  v = 1.25, sigma = Z * 1.25 = 2.5;
+  //   X in (0.35, 0.45): at rest, unstressed;
+  //   X in (0.45, 0.65): the right-going half, v = 0.25, sigma = -Z * 0.25 = -0.5; at rest elsewhere.
+  const ElasticBar bar(1.0, 4.0, 1.0, {{0.3, 0.5, 1.5, 2.0}});
+  const double time = 0.075, impedance = 2.0, c = 2.0;
+  struct Plateau { double position, velocity, stress; };
+  for (const Plateau& plateau : std::vector<Plateau>{{0.05, 0.0, 0.0}, {0.25, 1.25, 2.5}, {0.40, 0.0, 0.0},
+                                                     {0.55, 0.25, -0.5}, {0.80, 0.0, 0.0}}) {
+    INFO("X = " << plateau.position);
+    CHECK(bar.velocity(plateau.position, time) == doctest::Approx(plateau.velocity).epsilon(1e-14).scale(1.0));
+    CHECK(bar.stress(plateau.position, time) == doctest::Approx(plateau.stress).epsilon(1e-14).scale(1.0));
+  }
+  struct Front { double position, direction, velocity_jump; };  // direction +1: right-going
+  const std::vector<Front> fronts{{0.15, -1.0, 1.25}, {0.35, -1.0, -1.25}, {0.45, 1.0, 0.25}, {0.65, 1.0, -0.25}};
+  const double side = 1e-6;
+  for (const Front& front : fronts) {
+    INFO("front at X = " << front.position);
+    const double jump_velocity = bar.velocity(front.position + side, time) - bar.velocity(front.position - side, time);
+    const double jump_stress = bar.stress(front.position + side, time) - bar.stress(front.position - side, time);
+    CHECK(jump_velocity == doctest::Approx(front.velocity_jump).epsilon(1e-14));
+    CHECK(jump_stress == doctest::Approx(-front.direction * impedance * front.velocity_jump).epsilon(1e-14));
+    // The two balance laws across a front of speed s = direction * c, rho = 1, E = 4:
+    CHECK(-front.direction * c * 1.0 * jump_velocity == doctest::Approx(jump_stress).epsilon(1e-14));
+    CHECK(-front.direction * c * jump_stress == doctest::Approx(4.0 * jump_velocity).epsilon(1e-14));
+    // and the front has moved by ct = 0.15 m from its initial position 0.3 or 0.5 m (A.6).
+    const double start = front.position - front.direction * c * time;
+    CHECK((std::abs(start - 0.3) < 1e-12 || std::abs(start - 0.5) < 1e-12));
+  }
+}
+
+TEST_CASE("Eq. (A.1), Eq. (A.4): momentum balance rho v_t = sigma_X in integral form over segments, through reflections") {
+  // Integrated over a segment [a, b] and a time interval [t1, t2], (A.1) reads
+  //   rho (int_a^b v(X, t2) dX - int_a^b v(X, t1) dX) = int_t1^t2 (sigma(b, t) - sigma(a, t)) dt,
+  // which holds for the piecewise-constant exact solution too; the integrands jump, so the midpoint
+  // sums agree to about (number of jumps) * (value scale) * (interval / n).
+  const double young = 4.0, density = 1.0;
+  const ElasticBar bar(1.0, young, density, {{0.1, 0.3, 1.0, 0.5}, {0.5, 0.8, -0.5, -1.0}, {0.9, 1.0, 0.3, 0.0}});
+  const int n = 200000;
+  struct Window { double a, b, t1, t2; };
+  for (const Window& w : std::vector<Window>{{0.2, 0.7, 0.05, 0.35}, {0.0, 1.0, 0.0, 2.3}, {0.45, 0.55, 0.6, 1.9}}) {
+    INFO("segment [" << w.a << ", " << w.b << "], times [" << w.t1 << ", " << w.t2 << "]");
+    const double momentum_change =
+        density * (midpoint_integral([&](double x) { return bar.velocity(x, w.t2); }, w.a, w.b, n) -
+                   midpoint_integral([&](double x) { return bar.velocity(x, w.t1); }, w.a, w.b, n));
+    const double impulse =
+        midpoint_integral([&](double t) { return bar.stress(w.b, t) - bar.stress(w.a, t); }, w.t1, w.t2, n);
+    CHECK(std::abs(momentum_change - impulse) <= 1e-4);
+  }
+  // The check can fail: with the sign of the stress reversed the balance is off by twice the impulse.
+  const double wrong = midpoint_integral([&](double t) { return bar.stress(0.2, t) - bar.stress(0.7, t); }, 0.05, 0.35, n);
+  const double right = midpoint_integral([&](double t) { return bar.stress(0.7, t) - bar.stress(0.2, t); }, 0.05, 0.35, n);
+  CHECK(std::abs(wrong - right) > 0.1);
+}
+
+TEST_CASE("Eqs. (A.2)-(A.3), Eq. (A.5): sigma_t = E v_X in integral form over segments, through reflections") {
+  // (A.2) sigma = E eps and (A.3) eps_t = v_X give (A.5) sigma_t = E v_X; over [a, b] x [t1, t2]:
+  //   int_a^b sigma(X, t2) dX - int_a^b sigma(X, t1) dX = E int_t1^t2 (v(b, t) - v(a, t)) dt.
+  const double young = 4.0, density = 1.0;
+  const ElasticBar bar(1.0, young, density, {{0.1, 0.3, 1.0, 0.5}, {0.5, 0.8, -0.5, -1.0}, {0.9, 1.0, 0.3, 0.0}});
+  const int n = 200000;
+  struct Window { double a, b, t1, t2; };
+  for (const Window& w : std::vector<Window>{{0.2, 0.7, 0.05, 0.35}, {0.0, 1.0, 0.0, 2.3}, {0.45, 0.55, 0.6, 1.9}}) {
+    INFO("segment [" << w.a << ", " << w.b << "], times [" << w.t1 << ", " << w.t2 << "]");
+    const double stress_change = midpoint_integral([&](double x) { return bar.stress(x, w.t2); }, w.a, w.b, n) -
+                                 midpoint_integral([&](double x) { return bar.stress(x, w.t1); }, w.a, w.b, n);
+    const double stretching =
+        young * midpoint_integral([&](double t) { return bar.velocity(w.b, t) - bar.velocity(w.a, t); }, w.t1, w.t2, n);
+    CHECK(std::abs(stress_change - stretching) <= 2e-4);
+  }
+}
+
+TEST_CASE("Eq. (A.16): each invariant keeps its value along its characteristic, X -+ c s in time s") {
+  // R^I(X + c s, t + s) = R^I(X, t) and R^II(X - c s, t + s) = R^II(X, t) while the characteristic
+  // stays inside the bar; messy data, many points and times, jumps included (averages travel too).
+  const ElasticBar bar(2.0, 3.0, 2.0, {{0.0, 0.3, 1.5, -2.0}, {0.5, 0.9, -0.7, 4.0}, {1.7, 2.0, -1.0, -3.0}});
+  const double c = bar.wave_speed();
+  int checked = 0;
+  for (int i = 0; i <= 40; ++i) {
+    const double position = 2.0 * i / 40.0, time = 0.37 * i;
+    for (double shift : {0.05, 0.2, 0.6}) {
+      const double s = shift / c;
+      if (position + shift <= 2.0) {
+        CHECK(bar.right_going(position + shift, time + s) == doctest::Approx(bar.right_going(position, time)).epsilon(1e-12).scale(1.0));
+        ++checked;
+      }
+      if (position - shift >= 0.0) {
+        CHECK(bar.left_going(position - shift, time + s) == doctest::Approx(bar.left_going(position, time)).epsilon(1e-12).scale(1.0));
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked > 200);
 }
 
 TEST_CASE("exact::ElasticBar: energy of the exact solution is conserved") {

@@ -1,6 +1,6 @@
 /// \file
 /// Exact solution of the 1D soil column under self-weight with the gravity ramp of Eq. (44)
-/// (spec sections 7.2 and 5.2.2): the oracle of the soil-block test. It shares no code with the solver.
+/// (paper/07_exact_column.md): the oracle of the soil-block test. It shares no code with the solver.
 ///
 /// Method. The column \f$ 0 \le y \le H \f$ (base fixed, top free, displacement u positive upward)
 /// obeys \f$ \rho u_{tt} = M u_{yy} - \rho g(t) \f$ from rest. Its modes are \f$ \sin(k_n y) \f$ with
@@ -43,7 +43,7 @@ class SoilColumn {
     if (modes_ < 1) throw std::invalid_argument("SoilColumn: at least one mode is needed");
   }
 
-  /// Spec 7.2: \f$ c = \sqrt{M/\rho} \f$, the speed of compression waves in the column.
+  /// paper/07_exact_column.md: \f$ c = \sqrt{M/\rho} \f$, the speed of compression waves in the column.
   double wave_speed() const { return std::sqrt(constrained_modulus_ / density_); }
 
   /// Eq. (44): \f$ g(t) = \tfrac12 g \left(\sin(2\pi t/T - \pi/2) + 1\right) \f$ for \f$ 0 \le t \le T/2 \f$,
@@ -54,17 +54,17 @@ class SoilColumn {
     return 0.5 * gravity_ * (std::sin(2.0 * pi * time / ramp_period_ - 0.5 * pi) + 1.0);
   }
 
-  /// Spec 7.2, static solution: \f$ u(y) = -\frac{\rho g}{M}\left(H y - \frac{y^2}{2}\right) \f$ (upward positive).
+  /// paper/07_exact_column.md, static solution: \f$ u(y) = -\frac{\rho g}{M}\left(H y - \frac{y^2}{2}\right) \f$ (upward positive).
   double static_displacement(double y) const {
     const double height_coordinate = checked_height(y);
     return -(density_ * gravity_ / constrained_modulus_) *
            (height_ * height_coordinate - 0.5 * height_coordinate * height_coordinate);
   }
 
-  /// Spec 7.2, static solution: \f$ \sigma_{yy}(y) = -\rho g (H - y) \f$ (tension positive).
+  /// paper/07_exact_column.md, static solution: \f$ \sigma_{yy}(y) = -\rho g (H - y) \f$ (tension positive).
   double static_stress(double y) const { return -density_ * gravity_ * (height_ - checked_height(y)); }
 
-  /// Spec 7.2: \f$ u(y,t) = \sum_n q_n(t) \sin(k_n y) \f$, summed in mode-acceleration form
+  /// paper/07_exact_column.md: \f$ u(y,t) = \sum_n q_n(t) \sin(k_n y) \f$, summed in mode-acceleration form
   /// \f[ u(y,t) = \frac{g(t)}{g}\, u_{\mathrm{static}}(y)
   ///     - \sum_{n=1}^{N} \frac{2}{H k_n} \left( Y_n(t) - \frac{g(t)}{\omega_n^2} \right) \sin(k_n y), \f]
   /// which is the same series, because \f$ -\sum_n \frac{2 g}{H k_n \omega_n^2} \sin(k_n y) = u_{\mathrm{static}}(y) \f$.
@@ -80,7 +80,7 @@ class SoilColumn {
     return (load / gravity_) * static_displacement(height_coordinate) + dynamic_part;
   }
 
-  /// Spec 7.2: \f$ \sigma_{yy}(y,t) = M \sum_n q_n(t)\, k_n \cos(k_n y) \f$, in mode-acceleration form
+  /// paper/07_exact_column.md: \f$ \sigma_{yy}(y,t) = M \sum_n q_n(t)\, k_n \cos(k_n y) \f$, in mode-acceleration form
   /// \f[ \sigma_{yy}(y,t) = \frac{g(t)}{g}\, \sigma_{\mathrm{static}}(y)
   ///     - \frac{2M}{H} \sum_{n=1}^{N} \left( Y_n(t) - \frac{g(t)}{\omega_n^2} \right) \cos(k_n y). \f]
   double stress(double y, double time) const {
@@ -95,14 +95,14 @@ class SoilColumn {
     return (load / gravity_) * static_stress(height_coordinate) + dynamic_part;
   }
 
-  /// Spec 7.2: the wavenumber of mode n (n = 1, 2, ...), \f$ k_n = \frac{(2n-1)\pi}{2H} \f$,
+  /// paper/07_exact_column.md: the wavenumber of mode n (n = 1, 2, ...), \f$ k_n = \frac{(2n-1)\pi}{2H} \f$,
   /// so that \f$ \sin(k_n y) \f$ vanishes at the base and has zero slope (zero stress) at the top.
   double wavenumber(int n) const { return (2.0 * n - 1.0) * pi / (2.0 * height_); }
 
-  /// Spec 7.2: \f$ \omega_n = c\, k_n \f$.
+  /// paper/07_exact_column.md: \f$ \omega_n = c\, k_n \f$.
   double angular_frequency(int n) const { return wave_speed() * wavenumber(n); }
 
-  /// Spec 7.2: the modal response \f$ Y_n(t) \f$, solution of \f$ \ddot Y + \omega_n^2 Y = g(t) \f$,
+  /// paper/07_exact_column.md: the modal response \f$ Y_n(t) \f$, solution of \f$ \ddot Y + \omega_n^2 Y = g(t) \f$,
   /// \f$ Y(0) = \dot Y(0) = 0 \f$. With \f$ \Omega = 2\pi/T \f$ and \f$ g(t) = \tfrac12 g (1 - \cos\Omega t) \f$:
   /// \f[ Y(t) = \frac{g}{2}\left[\frac{1 - \cos\omega t}{\omega^2} - \frac{\cos\Omega t - \cos\omega t}{\omega^2 - \Omega^2}\right],
   ///     \quad t \le T/2, \f]
@@ -119,7 +119,7 @@ class SoilColumn {
                                      ramp_response_rate(omega, ramp_end));
   }
 
-  /// Spec 7.2: \f$ \dot Y_n(t) \f$, the time derivative of modal_response:
+  /// paper/07_exact_column.md: \f$ \dot Y_n(t) \f$, the time derivative of modal_response:
   /// \f$ \dot Y = \frac{g}{2}\left[\frac{\sin\omega t}{\omega} + \frac{\Omega\sin\Omega t - \omega\sin\omega t}{\omega^2 - \Omega^2}\right] \f$
   /// for \f$ t \le T/2 \f$, the derivative of the free vibration after it, \f$ g \sin(\omega t)/\omega \f$ for \f$ T \le 0 \f$.
   double modal_response_rate(int n, double time) const {
@@ -134,7 +134,7 @@ class SoilColumn {
     return -omega * (start_value - static_value) * std::sin(omega * after) + start_rate * std::cos(omega * after);
   }
 
-  /// Spec 7.2, static check: the static solution as the modal series,
+  /// paper/07_exact_column.md, static check: the static solution as the modal series,
   /// \f$ \sum_{n=1}^{N} -\frac{2 g}{H c^2 k_n^3} \sin(k_n y) \;\to\; -\frac{g}{c^2}\left(H y - \frac{y^2}{2}\right) \f$.
   double modal_static_displacement(double y) const {
     const double height_coordinate = checked_height(y), c = wave_speed();
@@ -147,7 +147,7 @@ class SoilColumn {
     return sum;
   }
 
-  /// Spec 7.2, the plain truncated series \f$ u = \sum_{n=1}^{N} q_n(t)\sin(k_n y) \f$,
+  /// paper/07_exact_column.md, the plain truncated series \f$ u = \sum_{n=1}^{N} q_n(t)\sin(k_n y) \f$,
   /// \f$ q_n = -\frac{2}{H k_n} Y_n(t) \f$, with N = terms (no mode acceleration).
   double modal_sum_displacement(double y, double time, int terms) const {
     const double height_coordinate = checked_height(y);
@@ -157,7 +157,7 @@ class SoilColumn {
     return sum;
   }
 
-  /// Spec 7.2, the plain truncated series \f$ \sigma_{yy} = M \sum_{n=1}^{N} q_n(t)\, k_n \cos(k_n y) \f$, N = terms.
+  /// paper/07_exact_column.md, the plain truncated series \f$ \sigma_{yy} = M \sum_{n=1}^{N} q_n(t)\, k_n \cos(k_n y) \f$, N = terms.
   double modal_sum_stress(double y, double time, int terms) const {
     const double height_coordinate = checked_height(y);
     double sum = 0.0;
@@ -184,7 +184,7 @@ class SoilColumn {
     return std::min(std::max(y, 0.0), height_);
   }
 
-  /// Spec 7.2: \f$ q_n(t) = -\frac{2}{H k_n} Y_n(t) \f$, the projection of the uniform load on mode n.
+  /// paper/07_exact_column.md: \f$ q_n(t) = -\frac{2}{H k_n} Y_n(t) \f$, the projection of the uniform load on mode n.
   double modal_amplitude(int n, double time) const {
     return -(2.0 / (height_ * wavenumber(n))) * modal_response(n, time);
   }
@@ -221,17 +221,17 @@ class SoilColumn {
            std::sin(0.5 * sum * time) * std::cos(0.5 * difference * time) / sum;
   }
 
-  /// Spec 7.2, during the ramp: \f$ Y(t) = \frac{g}{2}\left[\frac{1 - \cos\omega t}{\omega^2} - h(t)\right] \f$.
+  /// paper/07_exact_column.md, during the ramp: \f$ Y(t) = \frac{g}{2}\left[\frac{1 - \cos\omega t}{\omega^2} - h(t)\right] \f$.
   double ramp_response(double omega, double time) const {
     return 0.5 * gravity_ * (one_minus_cos_over_square(omega, time) - resonant_quotient(omega, time));
   }
 
-  /// Spec 7.2, during the ramp: \f$ \dot Y(t) = \frac{g}{2}\left[\frac{\sin\omega t}{\omega} - \dot h(t)\right] \f$.
+  /// paper/07_exact_column.md, during the ramp: \f$ \dot Y(t) = \frac{g}{2}\left[\frac{\sin\omega t}{\omega} - \dot h(t)\right] \f$.
   double ramp_response_rate(double omega, double time) const {
     return 0.5 * gravity_ * (std::sin(omega * time) / omega - resonant_quotient_rate(omega, time));
   }
 
-  /// Spec 7.2, after the ramp (constant g): oscillation about \f$ g/\omega^2 \f$ started from the end-of-ramp state,
+  /// paper/07_exact_column.md, after the ramp (constant g): oscillation about \f$ g/\omega^2 \f$ started from the end-of-ramp state,
   /// \f$ Y = \frac{g}{\omega^2} + \left(Y_e - \frac{g}{\omega^2}\right)\cos\omega s + \frac{\dot Y_e}{\omega}\sin\omega s \f$,
   /// \f$ s = t - T/2 \f$.
   double free_vibration_after_ramp(double omega, double after, double start_value, double start_rate) const {
@@ -242,12 +242,12 @@ class SoilColumn {
 };
 
 // ---------------------------------------------------------------------------------------------------
-// Tests. Every expected value below is derived by hand in the comments or printed in the spec,
-// never produced by the code under test. Soil block of spec 5.2: E = M = 5 MPa (nu = 0), rho = 6000,
+// Tests. Every expected value below is derived by hand in the comments or printed in paper/07_exact_column.md,
+// never produced by the code under test. Soil block of paper/08_test_cases.md: E = M = 5 MPa (nu = 0), rho = 6000,
 // H = 10 m, g = 9.81, T = 20 s.
 // ---------------------------------------------------------------------------------------------------
 
-TEST_CASE("exact::SoilColumn: closed-form static solution and wave speed (spec 7.2)") {
+TEST_CASE("exact::SoilColumn: closed-form static solution and wave speed (paper/07_exact_column.md)") {
   const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0);
   // c = sqrt(5e6 / 6000) = 28.8675 m/s, T1 = 4H/c = 1.3856 s.
   CHECK(column.wave_speed() == doctest::Approx(28.8675).epsilon(1e-5));
@@ -255,7 +255,7 @@ TEST_CASE("exact::SoilColumn: closed-form static solution and wave speed (spec 7
   // rho g H^2 / (2M) = 6000 * 9.81 * 100 / 1e7 = 0.5886 m.
   CHECK(column.static_displacement(10.0) == doctest::Approx(-0.58860).epsilon(1e-12));
   CHECK(column.static_displacement(0.0) == 0.0);
-  CHECK(column.static_displacement(9.57735) == doctest::Approx(-0.58755).epsilon(1e-5));  // spec 7.2
+  CHECK(column.static_displacement(9.57735) == doctest::Approx(-0.58755).epsilon(1e-5));  // paper/07_exact_column.md
   // rho g H = 588.6 kPa at the base, 0 at the top, half-way: rho g H / 2.
   CHECK(column.static_stress(0.0) == doctest::Approx(-588600.0).epsilon(1e-12));
   CHECK(column.static_stress(10.0) == 0.0);
@@ -265,7 +265,7 @@ TEST_CASE("exact::SoilColumn: closed-form static solution and wave speed (spec 7
   CHECK_THROWS_AS(SoilColumn(10.0, 5e6, 6000.0, 9.81, 20.0, 0), std::invalid_argument);
 }
 
-TEST_CASE("exact::SoilColumn: gravity ramp of Eq. (44)") {
+TEST_CASE("Eq. (44): exact::SoilColumn: its gravity ramp") {
   const double g = 9.81, period = 20.0;
   const SoilColumn column(10.0, 5e6, 6000.0, g, period);
   CHECK(column.gravity_at(0.0) == doctest::Approx(0.0).scale(1e-14));      // sin(-pi/2) + 1 = 0
@@ -289,7 +289,7 @@ TEST_CASE("exact::SoilColumn: gravity ramp of Eq. (44)") {
   CHECK(constant.gravity_at(3.0) == g);
 }
 
-TEST_CASE("exact::SoilColumn: the modal series of the static solution is the closed form (spec 7.2 static check)") {
+TEST_CASE("exact::SoilColumn: the modal series of the static solution is the closed form (paper/07_exact_column.md)") {
   // sum_n -2g/(H c^2 k_n^3) sin(k_n y) = -(g/c^2)(H y - y^2/2); terms ~ n^-3, so 2000 terms reach 1e-6 relative.
   const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0, 2000);
   for (double y : {0.5, 1.0, 2.0, 3.7, 5.0, 7.5, 9.0, 9.57735, 10.0}) {
@@ -321,7 +321,7 @@ TEST_CASE("exact::SoilColumn: after the ramp the solution oscillates about the s
   }
 }
 
-TEST_CASE("exact::SoilColumn: values of the table in spec 7.2") {
+TEST_CASE("exact::SoilColumn: values of the table in paper/07_exact_column.md") {
   const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0);
   struct Row { double time, top_displacement; };
   const std::vector<Row> top{{2.5, -0.0857}, {5.0, -0.2932}, {7.5, -0.5022}, {10.0, -0.5904},
@@ -330,7 +330,7 @@ TEST_CASE("exact::SoilColumn: values of the table in spec 7.2") {
     INFO("t = " << row.time);
     CHECK(std::abs(column.displacement(10.0, row.time) - row.top_displacement) <= 0.5e-4 + 1e-9);
   }
-  // Base stress (kPa) as printed in spec 7.2. Those digits are reproduced by the PLAIN series cut at 400 terms
+  // Base stress (kPa) as printed by an earlier reading (paper/07_exact_column.md). Those digits are reproduced by the PLAIN series cut at 400 terms
   // (checked below). That series converges like 1/n^2 at the base, its tail adds about
   // rho g(t) H (8/pi^2)/(4N): 0.3 kPa at t = 10 s, so the converged values lie 0.05-0.3 kPa below the
   // printed ones. The oracle returns the converged value; the tolerance 0.35 kPa covers that.
@@ -358,7 +358,7 @@ TEST_CASE("exact::SoilColumn: mode-accelerated sum equals the plain modal series
   }
 }
 
-TEST_CASE("exact::SoilColumn: after the ramp u_top stays in [-0.5909, -0.5863] m (spec 7.2)") {
+TEST_CASE("exact::SoilColumn: after the ramp u_top stays in [-0.5909, -0.5863] m (paper/07_exact_column.md)") {
   const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0);
   double lowest = 0.0, highest = -1.0;
   for (int i = 0; i <= 2000; ++i) {
@@ -368,7 +368,7 @@ TEST_CASE("exact::SoilColumn: after the ramp u_top stays in [-0.5909, -0.5863] m
   }
   CHECK(lowest >= -0.5909);
   CHECK(highest <= -0.5863);
-  CHECK(lowest < -0.5900);   // and it does oscillate, by about +-2.3 mm (spec 5.2.2)
+  CHECK(lowest < -0.5900);   // and it does oscillate, by about +-2.3 mm (paper/07_exact_column.md)
   CHECK(highest > -0.5870);
 }
 

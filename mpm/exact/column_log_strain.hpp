@@ -1,6 +1,6 @@
 /// \file
 /// Static settlement of the soil column as the solver models it at finite strain: the reference
-/// against which the MPM block converges, beside the small-strain solution of spec 7.2
+/// against which the MPM block converges, beside the small-strain solution of paper/07_exact_column.md
 /// (column.hpp), which is the paper's. It shares no code with the solver.
 ///
 /// Why a second reference. The solver is updated Lagrangian: it accumulates the strain from the
@@ -15,7 +15,7 @@
 /// determinate), but the stretch is \f$ \lambda(Y) = e^{\sigma/M} = e^{-a (H - Y)} \f$ with
 /// \f$ a = \rho_0 g / M \f$, and the displacement
 /// \f[ u(Y) = \int_0^Y (\lambda - 1)\, dY' = \frac{e^{-a(H - Y)} - e^{-aH}}{a} - Y. \f]
-/// Expanded in a it is \f$ -a(HY - Y^2/2) + O(a^2) \f$, the small-strain static solution of spec 7.2;
+/// Expanded in a it is \f$ -a(HY - Y^2/2) + O(a^2) \f$, the small-strain static solution of paper/07_exact_column.md;
 /// at the top the two differ by about \f$ aH/3 \f$ relative: 3.8 % for the soil block (aH = 0.118).
 #pragma once
 #include <doctest/doctest.h>

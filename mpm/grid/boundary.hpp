@@ -1,7 +1,7 @@
 /// \file
 /// Essential boundary conditions: velocity components held at zero on the nodes of a grid face.
 ///
-/// As in the authors' code (spec 3.1.2): the prescribed component is overwritten on the nodal
+/// As in the authors' code (paper/02_mpm_forward_euler.md, 'Essential boundary conditions'): the prescribed component is overwritten on the nodal
 /// velocity (or momentum), and after the forces are assembled the same component of the nodal
 /// force is stored as the reaction and set to zero, so that a_I = 0 and the node stays fixed.
 #pragma once

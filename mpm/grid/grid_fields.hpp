@@ -15,6 +15,10 @@ struct GridFields {
   std::vector<Vector<Dim>> nodal_velocity;     ///< v_I (FE: p_I/m_I; NPC: predictor, then corrected)
   std::vector<Vector<Dim>> nodal_force;        ///< f_I = f_I^int + f_I^ext, Eqs. (14)-(15)
   std::vector<Vector<Dim>> reaction;           ///< force taken by the fixed degrees of freedom
+  /// Zeroed copies of a scalar and a vector nodal field, one per thread beyond the first: the
+  /// threads of a particle-to-grid scatter add into them (scatter_to_nodes, mpm/core/parallel.hpp).
+  std::vector<std::vector<double>> scalar_copies;
+  std::vector<std::vector<Vector<Dim>>> vector_copies;
 
   explicit GridFields(int node_count = 0)
       : nodal_mass(node_count, 0.0),
@@ -24,6 +28,12 @@ struct GridFields {
         reaction(node_count, Vector<Dim>::Zero()) {}
 
   int size() const { return static_cast<int>(nodal_mass.size()); }
+
+  /// Allocates the copies for `threads` threads (once per run, before the first step).
+  void prepare_threads(int threads) {
+    scalar_copies.assign(threads - 1, std::vector<double>(size(), 0.0));
+    vector_copies.assign(threads - 1, std::vector<Vector<Dim>>(size(), Vector<Dim>::Zero()));
+  }
 
   void reset() {
     for (int node = 0; node < size(); ++node) {

@@ -1,11 +1,12 @@
 /// \file
 /// The explicit Newmark predictor-corrector (NPC) of the paper, its Algorithm steps 1-9, as the
-/// authors' code runs it (spec 3.1). Newmark gamma = 1/2 by default; beta is never used.
+/// authors' code runs it (paper/03_predictor_corrector.md). Newmark gamma = 1/2 by default; beta is never used.
 ///
 /// The paper motivates it with Newmark's scheme applied to the particles, Eq. (23) for v_p,
 /// Eq. (24) for x_p with its beta, Eq. (25) for a_p, and then builds the explicit predictor and
 /// corrector on the grid instead: Eqs. (26)-(30), with the particle update of Eqs. (31)-(33).
 #pragma once
+#include "mpm/core/phase_timers.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
 #include "mpm/model.hpp"
@@ -16,33 +17,61 @@
 
 namespace mpm {
 
+/// The explicit Newmark predictor-corrector (NPC) of the paper, Eqs. (26)-(33): one step() per time step,
+/// chosen once per run as the Integrator of mpm::Simulation. Its steps are listed with step().
 struct NewmarkPredictorCorrector {
   static constexpr const char* name = "npc";
   double newmark_gamma = 0.5;
   NewmarkPositionVelocity position_velocity = NewmarkPositionVelocity::corrected;
 
-  /// One step from t_k to t_k + dt. The stencils hold N_Ip, grad N_Ip at x_p^k; body_force is b.
+  /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
+  /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force is \f$ \mathbf b \f$. The steps of the
+  /// algorithm, as in the code:
+  /// 1. Lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13) (\ref lumped_nodal_mass).
+  /// 2. Velocity predictor by projection, Eqs. (26)-(29):
+  ///    \f$ \mathbf v_I^{pred} = \sum_p N_{Ip} m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) / m_I \f$
+  ///    (\ref nodal_velocity_predictor).
+  /// 3. Essential boundary conditions overwrite the predictor (\ref impose_fixed_velocity).
+  /// 4. Strain rate with the predicted velocity, Eq. (16), and strain increment
+  ///    \f$ \Delta t\, \dot{\boldsymbol\varepsilon}_p \f$ (\ref update_strain_density_stress).
+  /// 5. Density, Eq. (17), and stress, Eq. (3), in the same call.
+  /// 6. New nodal forces \f$ \mathbf f_I^{k+1} \f$, Eqs. (14)-(15) (\ref add_internal_force, \ref add_body_force);
+  ///    the fixed components become reactions (\ref store_reactions).
+  /// 7. Corrector, Eq. (30): \f$ \mathbf v_I^{k+1} = \mathbf v_I^{pred} + \gamma\,\Delta t\, \mathbf f_I^{k+1} / m_I \f$
+  ///    (\ref newmark_corrector).
+  /// 8. Particle update, Eqs. (31)-(33): \f$ \mathbf a_p^{k+1} = \sum_I N_{Ip} \mathbf f_I / m_I \f$,
+  ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t\, \mathbf a_p^{k+1} \f$,
+  ///    \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I^{k+1} + \tfrac12 \Delta t^2 \mathbf a_p^{k+1} \f$
+  ///    (\ref newmark_particle_update).
+  /// 9. The nodal fields are reset at the start of the next step (GridFields::reset).
   template <int Dim>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const Vector<Dim>& body_force, double dt,
-            Particles<Dim>& particles, GridFields<Dim>& grid) const {
+            Particles<Dim>& particles, GridFields<Dim>& grid, PhaseTimers& timers) const {
     grid.reset();
+    timers.lap(Phase::grid);
     // Step 1. Lumped nodal mass, Eq. (13).
     lumped_nodal_mass(particles, stencils, grid);
     // Step 2. Velocity predictor by projection, Eqs. (26)-(29).
     nodal_velocity_predictor(particles, stencils, newmark_gamma, dt, grid);
+    timers.lap(Phase::p2g);
     // Step 3. Essential boundary conditions overwrite the predictor.
     impose_fixed_velocity(model.fixed, grid.nodal_velocity);
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    timers.lap(Phase::grid);
     // Steps 4-5. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
     update_strain_density_stress(stencils, grid.nodal_velocity, model.material, dt, particles);
+    timers.lap(Phase::stress);
     // Step 6. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_internal_force(particles, stencils, grid);
     add_body_force(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
+    timers.lap(Phase::forces);
     // Step 7. Corrector, Eq. (30): v_I += gamma dt f_I / m_I.
     newmark_corrector(newmark_gamma, dt, grid);
+    timers.lap(Phase::grid);
     // Step 8. Particle update, Eqs. (31)-(33).
     newmark_particle_update(stencils, grid, newmark_gamma, dt, position_velocity, particles);
+    timers.lap(Phase::g2p);
     // Step 9. The nodal fields are reset at the start of the next step.
   }
 };

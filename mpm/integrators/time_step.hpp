@@ -13,11 +13,21 @@ namespace mpm {
 /// How the speeds of Eq. (42) are combined.
 enum class CourantSpeed {
   maximum,  ///< Eq. (42) as printed: C = max{ max_p |v_p|, max_p sqrt(E/rho_p) } (default)
-  sum       ///< the authors' code: C = c + max_p |v_p| (spec 2.6)
+  sum       ///< the authors' code: C = c + max_p |v_p| (paper/09_choices.md, 'The Courant speed')
 };
 
 /// Eq. (42): \f$ \Delta t = \mathrm{CFL}\, h / C_{el} \f$ with
 /// \f$ C_{el} = \max\{\max_p |\mathbf v_p|,\ \max_p \sqrt{E/\rho_p}\} \f$ (or their sum).
+/// Given the two speeds: fastest_particle = \f$ \max_p |\mathbf v_p| \f$, wave_speed = \f$ \max_p \sqrt{E/\rho_p} \f$.
+inline double courant_time_step(double fastest_particle, double wave_speed, double cell_size, double cfl,
+                                CourantSpeed rule = CourantSpeed::maximum) {
+  const double speed = rule == CourantSpeed::maximum ? std::max(fastest_particle, wave_speed)
+                                                     : wave_speed + fastest_particle;
+  return cfl * cell_size / speed;
+}
+
+/// From the particles. (The time-step loop takes the two speeds from its survey pass instead:
+/// mpm/analysis/particle_survey.hpp.)
 template <int Dim>
 double courant_time_step(const Particles<Dim>& particles, double young_modulus, double cell_size, double cfl,
                          CourantSpeed rule = CourantSpeed::maximum) {
@@ -26,12 +36,10 @@ double courant_time_step(const Particles<Dim>& particles, double young_modulus, 
     fastest_particle = std::max(fastest_particle, particles.velocity[p].norm());
     wave_speed = std::max(wave_speed, std::sqrt(young_modulus / particles.density[p]));
   }
-  const double speed = rule == CourantSpeed::maximum ? std::max(fastest_particle, wave_speed)
-                                                     : wave_speed + fastest_particle;
-  return cfl * cell_size / speed;
+  return courant_time_step(fastest_particle, wave_speed, cell_size, cfl, rule);
 }
 
-TEST_CASE("Courant time step, Eq. (42): the Dyka bar at 40 cells") {
+TEST_CASE("Eq. (42): Courant time step: the Dyka bar at 40 cells") {
   Particles<1> bar;
   bar.add(Vector<1>(0.0), 1.0, 7833.0, Vector<1>(-5.0), Vector<1>(0.0));
   const double h = 0.1333 / 40, c = std::sqrt(200e9 / 7833.0);  // c = 5053.0 m/s

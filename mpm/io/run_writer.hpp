@@ -169,9 +169,14 @@ inline void write_run_json(const std::string& path, const Scene& scene, const Ru
       << "  \"particle_steps_per_second\": " << summary.particle_steps_per_second << ",\n"
       << "  \"largest_mass_error\": " << summary.largest_mass_error << ",\n"
       << "  \"neighbours_mean\": " << summary.shape.neighbours_mean() << ",\n"
-      << "  \"neighbours_max\": " << summary.shape.neighbours_max << ",\n"
+      << "  \"neighbours_max\": " << summary.shape.neighbours_max() << ",\n"
       << "  \"newton_iterations_mean\": " << summary.shape.newton_iterations_mean() << ",\n"
-      << "  \"newton_iterations_max\": " << summary.shape.newton_iterations_max << "\n"
+      << "  \"newton_iterations_max\": " << summary.shape.newton_iterations_max() << ",\n"
+      << "  \"threads\": " << summary.threads << ",\n"
+      << "  \"phase_seconds\": {";
+  for (int phase = 0; phase < phase_count; ++phase)
+    out << (phase ? ", " : "") << "\"" << phase_name(phase) << "\": " << summary.phase_seconds[phase];
+  out << "}\n"
       << "}\n";
   close_checked(out, path);
 }

@@ -17,7 +17,7 @@ Vector<Dim> to_vector(const std::vector<double>& values) {
 }
 
 /// The grid spans the scene's [origin, origin + length] plus margin_min and margin_max cells
-/// beyond it on each axis (spec 5.1.2: room for free ends to move, and for their supports).
+/// beyond it on each axis (paper/09_choices.md, 'Grid margins': room for free ends to move, and for their supports).
 template <int Dim>
 Grid<Dim> build_grid(const Scene& scene) {
   Vector<Dim> origin;

@@ -27,7 +27,7 @@ struct Gravity {
   Vector<Dim> at(double time) const { return gravity_ramp(time, ramp_period) * acceleration; }
 };
 
-TEST_CASE("Gravity ramp, Eq. (44): end values, midpoint, smooth start and end") {
+TEST_CASE("Eq. (44): gravity ramp: end values, midpoint, smooth start and end") {
   const double period = 20.0;
   CHECK(gravity_ramp(0.0, period) == doctest::Approx(0.0));
   CHECK(gravity_ramp(5.0, period) == doctest::Approx(0.5));   // t = T/4

@@ -5,7 +5,7 @@
 /// 2D plane strain (unit thickness, \f$ \varepsilon_{zz} = 0 \f$, as the authors run it):
 /// \f$ \boldsymbol\sigma = \lambda\,\mathrm{tr}(\boldsymbol\varepsilon)\,\mathbf I + 2G\boldsymbol\varepsilon \f$ and
 /// \f$ \sigma_{zz} = \lambda\,\mathrm{tr}(\boldsymbol\varepsilon) \f$, with \f$ G = E/(2(1+\nu)) \f$,
-/// \f$ \lambda = \nu E/((1+\nu)(1-2\nu)) \f$. Small strain, total-strain form, no objective rate (spec 1).
+/// \f$ \lambda = \nu E/((1+\nu)(1-2\nu)) \f$. Small strain, total-strain form, no objective rate (paper/02_mpm_forward_euler.md).
 #pragma once
 #include <doctest/doctest.h>
 
@@ -44,7 +44,7 @@ struct LinearElastic {
   }
 };
 
-TEST_CASE("Hooke's law, Eq. (3): 1D, plane strain, and the constrained-column ratio nu/(1-nu)") {
+TEST_CASE("Eq. (3): Hooke's law: 1D, plane strain, and the constrained-column ratio nu/(1-nu)") {
   const LinearElastic steel{200e9, 0.0, 7833.0};
   CHECK(steel.stress<1>(Matrix<1>::Constant(1e-3))(0, 0) == doctest::Approx(2e8));
 

@@ -3,7 +3,7 @@
 /// particles, so each kernel streams through exactly the fields it reads and writes.
 ///
 /// A particle p carries m_p (constant), rho_p (V_p = m_p / rho_p), x_p, v_p, a_p, epsilon_p and
-/// sigma_p (spec 1). In 2D (plane strain) sigma_zz is kept in its own array.
+/// sigma_p (paper/02_mpm_forward_euler.md, 'What a particle carries'). In 2D (plane strain) sigma_zz is kept in its own array.
 #pragma once
 #include <vector>
 

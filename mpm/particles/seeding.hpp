@@ -1,6 +1,6 @@
 /// \file
 /// Filling a body with particles: an axis-aligned box of whole grid cells, each cell holding
-/// ppc_x (x ppc_y) particles at the centres of a uniform subdivision (spec 5.1.2, 8.9).
+/// ppc_x (x ppc_y) particles at the centres of a uniform subdivision (paper/09_choices.md, 'Particle placement and point A').
 ///
 /// Each particle gets the mass of its share of the cell, m_p = rho_0 h^Dim / (ppc_x ppc_y) (per
 /// unit area in 1D, per unit thickness in 2D), and the half-length l_p = h / (2 ppc) per axis.
@@ -69,7 +69,7 @@ TEST_CASE("Seeding: positions, masses and half-lengths of a 2x2-per-cell block a
 
   Particles<2> gauss;
   fill_box(grid, Vector<2>(0.0, 8.0), Vector<2>(2.0, 10.0), {2, 2}, 6000.0, Vector<2>(0.0, 0.0), Placement::gauss, gauss);
-  CHECK(gauss.position[3][1] == doctest::Approx(9.57735).epsilon(1e-6));  // 9 + 1/sqrt(3), spec 5.2.1
+  CHECK(gauss.position[3][1] == doctest::Approx(9.57735).epsilon(1e-6));  // 9 + 1/sqrt(3), paper/09_choices.md
 
   const Grid<1> line(Vector<1>(-0.1), 0.1, {5});
   Particles<1> bar;

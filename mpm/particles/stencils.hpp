@@ -1,12 +1,16 @@
 /// \file
 /// Shape-function stencils: for every particle p, its nodes I, N_Ip and grad N_Ip.
 ///
-/// Computed once per step at the particle positions x_p^k (spec 1) and reused by every
+/// Computed once per step at the particle positions x_p^k (paper/02_mpm_forward_euler.md) and reused by every
 /// transfer of the step. Storage is flat with a fixed capacity per particle, set once per run by
 /// the shape function, so computing the stencils allocates nothing.
 #pragma once
+#include <array>
+#include <optional>
 #include <vector>
 
+#include "mpm/core/errors.hpp"
+#include "mpm/core/parallel.hpp"
 #include "mpm/core/types.hpp"
 
 namespace mpm {
@@ -34,15 +38,26 @@ struct Stencils {
 
 namespace mpm {
 
-/// Evaluates the shape function at every particle position, once per step; every transfer of
-/// the step then reads these stencils. \throws ShapeFailure from the shape function.
+/// Evaluates the shape function at every particle position, once per step, on every core; every
+/// transfer of the step then reads these stencils.
+/// \throws ShapeFailure from the shape function: that of the first particle that failed, as a serial loop would.
 template <int Dim, class Shape>
 void compute_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, Stencils<Dim>& stencils) {
-  for (int p = 0; p < static_cast<int>(positions.size()); ++p) {
-    const int first = stencils.begin(p);
-    stencils.count[p] = shape.evaluate(p, positions[p], &stencils.node[first], &stencils.value[first],
-                                       &stencils.gradient[first]);
-  }
+  const int count = static_cast<int>(positions.size());
+  std::array<std::optional<ShapeFailure>, max_threads> failure;  // per thread: its first, in its block
+  parallel_for_blocks(count, [&](int thread, Block block) {
+    try {
+      for (int p = block.begin; p < block.end; ++p) {
+        const int first = stencils.begin(p);
+        stencils.count[p] = shape.evaluate(p, positions[p], &stencils.node[first], &stencils.value[first],
+                                           &stencils.gradient[first]);
+      }
+    } catch (const ShapeFailure& what) {
+      failure[thread] = what;
+    }
+  });
+  for (const auto& first : failure)
+    if (first) throw *first;
 }
 
 }  // namespace mpm

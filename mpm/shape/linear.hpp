@@ -1,5 +1,5 @@
 /// \file
-/// Linear shape functions: the 1D hat and its tensor product, the bilinear Q4 of a 2D cell (spec 4.3).
+/// Linear shape functions: the 1D hat and its tensor product, the bilinear Q4 of a 2D cell (paper/04_shape_functions.md).
 ///
 /// \f$ S(\Delta) = 1 - |\Delta|/h \f$ for \f$ |\Delta| \le h \f$, so a particle sees the 2^Dim nodes of its cell.
 /// grad N jumps when a particle crosses a cell face: the source of grid-crossing noise (Fig. 6).

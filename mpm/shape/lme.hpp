@@ -1,5 +1,7 @@
 /// \file
-/// Local maximum-entropy (LME) shape functions of Arroyo & Ortiz (2006), Eqs. (34)-(41), spec 4.1 and 8.
+/// Local maximum-entropy (LME) shape functions of Arroyo & Ortiz (2006): the paper's Eqs. (34)-(41)
+/// (paper/04_shape_functions.md), in its order, then the Newton solve that finds the multiplier
+/// lambda*, then the shape class.
 ///
 /// At a point x with neighbour nodes I, the LME functions are the least biased (most entropic,
 /// Eq. (34)) non-negative partition of unity that reproduces x, biased towards near nodes by the
@@ -13,43 +15,60 @@
 /// \f$ \beta = \gamma / h^2 \f$: gamma -> infinity tends to the linear (Delaunay) interpolant, gamma ~ 1
 /// smooths over a few cells. The solution exists when x is inside the convex hull of its neighbours.
 ///
-/// Numerics (spec 8.3). Everything runs in cell units: offsets \f$ \hat l_I = (x - x_I)/h \f$,
+/// Numerics (paper/09_choices.md, 'Newton for the multiplier'). Everything runs in cell units: offsets \f$ \hat l_I = (x - x_I)/h \f$,
 /// \f$ \hat\beta = \beta h^2 \f$ (= gamma), \f$ \hat\lambda = \lambda h \f$, so r/h and J/h^2 are dimensionless
 /// and the Newton tolerance is relative to h. Exponents are shifted by their maximum before exp.
-/// Newton steps on r = 0 are safeguarded by a backtracking (Armijo) line search on the convex
-/// log Z, and warm-started from the particle's multiplier of the previous call.
+/// Newton is warm-started from the particle's multiplier of the previous call; its safeguards (a
+/// capped step, a line search on the convex log Z where the full step is not certainly safe) are in
+/// mpm/shape/lme_newton.hpp, the neighbour search and the bound on the neighbours in
+/// mpm/shape/lme_neighbours.hpp. The property tests and their helpers follow the kernels.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "mpm/core/errors.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/shape/linear.hpp"
+#include "mpm/shape/lme_neighbours.hpp"
+#include "mpm/shape/lme_newton.hpp"
 #include "mpm/shape/shape_diagnostics.hpp"
 #include "mpm/shape/shape_properties.hpp"
 
 namespace mpm {
 
 struct LmeOptions {
-  double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (spec 2.5: beta = gamma / h^2)
+  double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (paper/04_shape_functions.md: beta = gamma / h^2)
   double support_tolerance = 1e-6;  ///< the prior \f$ e^{-\beta R^2} \f$ at the support radius R (A\&O06; authors: 1e-5)
-  double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (spec 8.3)
+  double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (paper/04_shape_functions.md)
   int max_iterations = 100;         ///< Newton updates of lambda per evaluation before ShapeFailure
-  /// grid_spacing: beta = gamma / h^2 (seed, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
-  /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, spec 8.1). The
+  /// grid_spacing: beta = gamma / h^2 (the paper, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
+  /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, paper/09_choices.md). The
   /// neighbours are those within R = h sqrt(-ln(support_tolerance) / gamma) under both rules (with hbar in
   /// R the radius would feed on itself: hbar ~ 2R/3 in 2D makes R grow unless the patch is capped).
   enum class BetaRule { grid_spacing, mean_neighbour_distance } beta_rule = BetaRule::grid_spacing;
 };
+
+// ---- Eqs. (34)-(41) --------------------------------------------------------------------------
+
+/// Eq. (34), Shannon's entropy of the shape functions at a point, which LME maximises (less
+/// \f$ \beta \sum_I N_I |x - x_I|^2 \f$) among the non-negative partitions of unity that reproduce x:
+/// \f[ H(N_1, \dots, N_n) = -\sum_I N_I \log N_I \qquad (0 \log 0 = 0). \f]
+inline double lme_entropy(int count, const double* values) {
+  double entropy = 0.0;
+  for (int I = 0; I < count; ++I)
+    if (values[I] > 0.0) entropy -= values[I] * std::log(values[I]);
+  return entropy;
+}
 
 /// Eq. (40), in cell units: the exponent of node I,
 /// \f[ f_I(x, \lambda) = -\beta |x - x_I|^2 + \lambda \cdot (x - x_I) . \f]
@@ -58,11 +77,13 @@ inline double lme_exponent(double beta, const Vector<Dim>& lambda, const Vector<
   return -beta * offset.squaredNorm() + lambda.dot(offset);
 }
 
-/// log Z and the shifted weights \f$ w_I = e^{f_I - m} \f$, \f$ m = \max_I f_I \f$ (so \f$ 0 < w_I \le 1 \f$ and
+/// Z and the shifted weights \f$ w_I = e^{f_I - m} \f$, \f$ m = \max_I f_I \f$ (so \f$ 0 < w_I \le 1 \f$ and
 /// \f$ \sum_I w_I \ge 1 \f$: nothing overflows, and underflow only hits weights below 1e-308).
 struct LmePartition {
-  double log_z;       ///< \f$ \log Z = m + \log \sum_I w_I \f$
+  double largest;     ///< m, the largest exponent
   double weight_sum;  ///< \f$ \sum_I w_I = Z e^{-m} \f$
+  /// \f$ \log Z = m + \log \sum_I w_I \f$ (only the line search needs it).
+  double log_z() const { return largest + std::log(weight_sum); }
 };
 
 /// Eq. (36), the partition function, stably:
@@ -81,7 +102,7 @@ LmePartition lme_partition(int count, const Vector<Dim>* offsets, double beta, c
     weights[I] = std::exp(weights[I] - largest);
     sum += weights[I];
   }
-  return {largest + std::log(sum), sum};
+  return {largest, sum};
 }
 
 /// The gradient and Hessian of log Z with respect to lambda, from the weights of lme_partition.
@@ -91,7 +112,7 @@ struct LmeMoments {
   Matrix<Dim> hessian;   ///< J, Eq. (37)
 };
 
-/// Eqs. (38) and (37), with \f$ p_I = w_I / \sum_J w_J \f$ the shape functions of Eq. (35) at this lambda:
+/// Eqs. (37) and (38), with \f$ p_I = w_I / \sum_J w_J \f$ the shape functions of Eq. (35) at this lambda:
 /// \f[ r(x, \lambda) = \frac{\partial \log Z}{\partial \lambda} = \sum_I p_I (x - x_I), \qquad
 ///     J(x, \lambda) = \frac{\partial r}{\partial \lambda} = \sum_I p_I (x - x_I) \otimes (x - x_I) - r \otimes r . \f]
 /// J is the covariance of the offsets under p, and is computed as such,
@@ -119,7 +140,8 @@ inline void lme_values(int count, double weight_sum, double* weights) {
 }
 
 /// Eq. (41), the gradients at the converged multiplier, with the undamped J of Eq. (37) and beta
-/// constant in space (Eqs. (39)-(40) with \f$ d\lambda^*/dx \f$ from r = 0):
+/// constant in space: Eq. (39), \f$ \nabla N_I = N_I (\nabla f_I - \sum_J N_J \nabla f_J) \f$ with the total
+/// derivatives of Eq. (40)'s \f$ f_I \f$ (\f$ d\lambda^*/dx \f$ from r = 0), becomes
 /// \f[ \nabla N_I^* = -N_I^* \, (J^*)^{-1} (x - x_I) . \f]
 /// Evaluated as \f$ -N_I (J^*)^{-1} (x - x_I - r) \f$: at convergence r = 0 and this is Eq. (41) itself,
 /// while for the residual \f$ |r| \le \f$ tol h that Newton leaves it keeps \f$ \sum_I \nabla N_I = 0 \f$ and
@@ -135,6 +157,57 @@ void lme_gradients(int count, const double* values, const Matrix<Dim>& hessian, 
     offsets_then_gradients[I] = -(values[I] / h) * (inverse * (offset - residual));
   }
 }
+
+// ---- The Newton solve for lambda* ------------------------------------------------------------
+
+/// Where Newton stopped: lambda (cell units), the partition and moments there, the iterations.
+template <int Dim>
+struct LmeSolution {
+  Vector<Dim> lambda;
+  LmePartition partition;
+  LmeMoments<Dim> moments;
+  int iterations = 0;
+  const char* failure = nullptr;  ///< why it did not converge, or nullptr
+};
+
+/// Newton on r(lambda) = 0, Eq. (38), with J of Eq. (37), from `lambda`: lambda <- lambda + t s with
+/// s = -J^{-1} r (safeguarded_newton_step). t = 1 where the full step is certainly safe (full_step_is_safe:
+/// near the root, i.e. almost always from a warm start); elsewhere t halves from 1 until log Z has dropped
+/// by at least 1e-4 of the first-order prediction t r.s (armijo_step_length). Stops when |r| <= tolerance;
+/// leaves the weights of the last lambda in `weights`. `diameter`: that of the neighbourhood, 2 R / h.
+template <int Dim>
+LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offsets, double beta, Vector<Dim> lambda, double diameter,
+                            double tolerance, int max_iterations, double* weights) {
+  LmeSolution<Dim> at{lambda, lme_partition(count, offsets, beta, lambda, weights), {}, 0, nullptr};
+  at.moments = lme_moments(count, offsets, weights, at.partition.weight_sum);
+  while (at.moments.residual.norm() > tolerance) {
+    if (at.iterations == max_iterations) {
+      at.failure = "";
+      return at;
+    }
+    const Vector<Dim> step = safeguarded_newton_step(at.moments.residual, at.moments.hessian, at.lambda);
+    double t = 1.0;
+    if (full_step_is_safe(step.norm(), diameter)) {
+      at.partition = lme_partition(count, offsets, beta, Vector<Dim>(at.lambda + step), weights);
+    } else {
+      const double log_z = at.partition.log_z();
+      t = armijo_step_length(log_z, at.moments.residual.dot(step), [&](double trial) {
+        at.partition = lme_partition(count, offsets, beta, Vector<Dim>(at.lambda + trial * step), weights);
+        return at.partition.log_z();
+      });
+      if (t == 0.0) {
+        at.failure = " (line search found no decrease of log Z)";
+        return at;
+      }
+    }
+    at.lambda += t * step;
+    at.moments = lme_moments(count, offsets, weights, at.partition.weight_sum);
+    ++at.iterations;
+  }
+  return at;
+}
+
+// ---- The shape function ----------------------------------------------------------------------
 
 template <int Dim>
 class LmeShape {
@@ -166,7 +239,7 @@ class LmeShape {
               << std::exp(-options.gamma * Dim) << ")";
       refuse(message.str());
     }
-    capacity_ = lattice_points_in_ball_bound(std::sqrt(radius_squared_));
+    capacity_ = lattice_points_in_ball_bound<Dim>(std::sqrt(radius_squared_));
   }
 
   /// An upper bound of the neighbours of any point: the most lattice points a ball of radius R can
@@ -183,90 +256,36 @@ class LmeShape {
   /// The particle's lambda (1/length) of its last successful evaluation: Eqs. (35)-(36).
   const Vector<Dim>& lagrange_multiplier(int particle) const { return lambda_[particle]; }
 
-  /// N_I(x) and grad N_I(x) for every node within the support radius of x.
+  /// N_I(x) and grad N_I(x) for every node within the support radius of x: the neighbours, lambda*
+  /// by Newton from the particle's last multiplier, then Eq. (35) and Eq. (41).
   /// \throws ShapeFailure if x is outside the grid, or if Newton does not converge; the
   /// particle's multiplier is then left as it was.
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
     const double h = grid_.spacing();
     Vector<Dim>* offsets = gradients;  // the offsets (x - x_I)/h live where the gradients will go
-    const int count = neighbours(particle, x, nodes, offsets);
+    const int count = lme_neighbours(grid_, radius_squared_, capacity_, particle, x, nodes, offsets);
     const double beta = beta_in_cell_units(count, offsets);
-
-    // Newton on r(lambda) = 0, Eq. (38), with J of Eq. (37): lambda <- lambda + t s, s = -J^{-1} r (capped,
-    // see newton_step), where t halves from 1 until log Z has dropped by at least 1e-4 of the
-    // first-order prediction t r.s (Armijo). Near the root t = 1 always passes: plain Newton.
-    Vector<Dim> lambda = lambda_[particle] * h;  // warm start
-    LmePartition partition = lme_partition(count, offsets, beta, lambda, values);
-    LmeMoments<Dim> moments = lme_moments(count, offsets, values, partition.weight_sum);
-    int iterations = 0;
-    while (moments.residual.norm() > options_.newton_tolerance) {
-      if (iterations == options_.max_iterations) throw not_converged(particle, iterations, moments, "");
-      const Vector<Dim> step = newton_step(moments, lambda);
-      const double slope = moments.residual.dot(step);  // d log Z / dt at t = 0, negative
-      // log Z carries rounding of about eps |log Z|: below that, a decrease cannot be seen.
-      const double noise = 16.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(partition.log_z));
-      double t = 1.0;
-      LmePartition trial = lme_partition(count, offsets, beta, Vector<Dim>(lambda + step), values);
-      for (int halving = 0; !(trial.log_z <= partition.log_z + 1e-4 * t * slope + noise); ++halving) {
-        if (halving == max_halvings) throw not_converged(particle, iterations, moments, " (line search found no decrease of log Z)");
-        t *= 0.5;
-        trial = lme_partition(count, offsets, beta, Vector<Dim>(lambda + t * step), values);
-      }
-      lambda += t * step;
-      partition = trial;
-      moments = lme_moments(count, offsets, values, partition.weight_sum);
-      ++iterations;
-    }
-    if (!positive_definite(moments.hessian)) {
+    const LmeSolution<Dim> solution = solve_lme_multiplier(count, offsets, beta, Vector<Dim>(lambda_[particle] * h),
+                                                 2.0 * std::sqrt(radius_squared_), options_.newton_tolerance,
+                                                 options_.max_iterations, values);
+    if (solution.failure) throw not_converged(particle, solution.iterations, solution.moments, solution.failure);
+    if (!positive_definite(solution.moments.hessian)) {
       std::ostringstream cause;
       cause << "LME Hessian J is singular at convergence (x on the edge of the convex hull of its neighbours): det(J)/h^"
-            << 2 * Dim << " = " << moments.hessian.determinant();
+            << 2 * Dim << " = " << solution.moments.hessian.determinant();
       throw ShapeFailure(particle, cause.str());
     }
-
-    lme_values(count, partition.weight_sum, values);
-    lme_gradients(count, values, moments.hessian, moments.residual, h, gradients);
-    lambda_[particle] = lambda / h;
-    diagnostics_.record(count, iterations);
+    lme_values(count, solution.partition.weight_sum, values);
+    lme_gradients(count, values, solution.moments.hessian, solution.moments.residual, h, gradients);
+    lambda_[particle] = solution.lambda / h;
+    diagnostics_.record(count, solution.iterations);
     return count;
   }
 
   const ShapeDiagnostics& diagnostics() const { return diagnostics_; }
 
  private:
-  /// Halvings of t before the line search gives up. Steps are capped (newton_step), so a handful
-  /// suffice; 60 (t = 1e-18) means log Z cannot decrease along a descent direction: rounding.
-  static constexpr int max_halvings = 60;
-
-  /// Every node within R of x: its number, and its offset (x - x_I)/h. Searches only the lattice
-  /// box [x - R, x + R] clipped to the grid. Since R >= h sqrt(Dim), the corners of the cell that
-  /// contains x are always among the neighbours, so x is inside their convex hull.
-  int neighbours(int particle, const Vector<Dim>& x, int* nodes, Vector<Dim>* offsets) const {
-    const double radius = std::sqrt(radius_squared_);
-    const Vector<Dim> xi = (x - grid_.origin()) / grid_.spacing();  // x in lattice coordinates
-    typename Grid<Dim>::MultiIndex lower{}, upper{}, k{};
-    for (int axis = 0; axis < Dim; ++axis) {
-      lower[axis] = std::max(0, static_cast<int>(std::ceil(xi[axis] - radius)));
-      upper[axis] = std::min(grid_.cells(axis), static_cast<int>(std::floor(xi[axis] + radius)));
-    }
-    k = lower;
-    int count = 0;
-    while (true) {
-      Vector<Dim> offset;
-      for (int axis = 0; axis < Dim; ++axis) offset[axis] = xi[axis] - k[axis];
-      if (offset.squaredNorm() <= radius_squared_) {
-        if (count == capacity_) throw ShapeFailure(particle, "LME: more neighbours than capacity() (internal error)");
-        nodes[count] = grid_.node_index(k);
-        offsets[count] = offset;
-        ++count;
-      }
-      int axis = 0;  // odometer over the box
-      while (axis < Dim && ++k[axis] > upper[axis]) k[axis] = lower[axis], ++axis;
-      if (axis == Dim) return count;
-    }
-  }
-
   /// beta h^2: gamma, or gamma (h / hbar)^2 under the authors' rule. Under that rule beta varies
   /// with x and Eq. (41), which takes beta constant, is not the exact gradient; the authors' code
   /// makes the same approximation.
@@ -278,66 +297,12 @@ class LmeShape {
     return options_.gamma / (mean * mean);
   }
 
-  static bool positive_definite(const Matrix<Dim>& J) { return J(0, 0) > 0.0 && J.determinant() > 0.0; }
-
-  /// The Newton step -J^{-1} r, no longer than max(1, |lambda|) (cell units). Far from the solution
-  /// J can be nearly singular, e.g. a warm start with lambda h ~ 100 left by a point at the grid edge,
-  /// and the full step would throw lambda where every weight but one underflows; the cap lets lambda
-  /// at most double, or move by 1, per iteration, and the line search does the rest. If rounding has
-  /// left J not positive definite, the step of the authors' damped matrix J + |r| I (dimensionless
-  /// here, spec 8.3) is used; failing that, steepest descent -r.
-  static Vector<Dim> newton_step(const LmeMoments<Dim>& moments, const Vector<Dim>& lambda) {
-    const Vector<Dim>& r = moments.residual;
-    Matrix<Dim> J = moments.hessian;
-    if (!positive_definite(J)) J += r.norm() * Matrix<Dim>::Identity();
-    Vector<Dim> step = -r;
-    if (positive_definite(J)) {
-      const Vector<Dim> newton = -(J.inverse() * r);
-      if (newton.allFinite()) step = newton;
-    }
-    const double longest = std::max(1.0, lambda.norm());
-    const double length = step.norm();
-    return length > longest ? Vector<Dim>(step * (longest / length)) : step;
-  }
-
   ShapeFailure not_converged(int particle, int iterations, const LmeMoments<Dim>& moments, const char* why) const {
     std::ostringstream cause;
     cause.precision(3);
     cause << "LME Newton did not converge: " << iterations << " iterations, |r|/h = " << moments.residual.norm()
           << ", gamma = " << options_.gamma << why;
     return ShapeFailure(particle, cause.str());
-  }
-
-  /// The most lattice points within `radius` (cell units) of any centre, bounded from above:
-  /// centres are taken in [0, 1/2]^Dim of a cell (the lattice's mirror symmetries give the rest),
-  /// covered by 32^Dim small boxes, and a box counts every point within `radius` of some centre in
-  /// it. The relative slack 1e-12 covers the rounding of the test in neighbours().
-  static int lattice_points_in_ball_bound(double radius) {
-    const int divisions = 32, reach = static_cast<int>(std::ceil(radius)) + 1;
-    const double limit = radius * radius * (1.0 + 1e-12), width = 0.5 / divisions;
-    int most = 0;
-    std::array<int, Dim> box{};
-    while (true) {
-      int count = 0;
-      std::array<int, Dim> k;
-      k.fill(-reach);
-      while (true) {
-        double distance_squared = 0.0;  // from lattice point k to the box of centres
-        for (int axis = 0; axis < Dim; ++axis) {
-          const double low = box[axis] * width, high = low + width;
-          const double gap = k[axis] < low ? low - k[axis] : (k[axis] > high ? k[axis] - high : 0.0);
-          distance_squared += gap * gap;
-        }
-        if (distance_squared <= limit) ++count;
-        int axis = 0;
-        while (axis < Dim && ++k[axis] > reach) k[axis] = -reach, ++axis;
-        if (axis == Dim) break;
-      }
-      most = std::max(most, count);
-      int axis = 0;
-      while (axis < Dim && ++box[axis] == divisions) box[axis] = 0, ++axis;
-      if (axis == Dim) return most;
-    }
   }
 
   Grid<Dim> grid_;
@@ -347,6 +312,8 @@ class LmeShape {
   std::vector<Vector<Dim>> lambda_;  ///< per particle, 1/length: the warm start
   ShapeDiagnostics diagnostics_;
 };
+
+// ---- Tests: helpers, then the equations, then the properties ---------------------------------
 
 namespace testing {
 
@@ -438,7 +405,7 @@ void check_lme_symmetric_point(LmeShape<Dim>& lme, const Grid<Dim>& grid, const 
 
 }  // namespace testing
 
-TEST_CASE("LME by hand: at a node and at a cell centre lambda = 0 and N is the normalised Gaussian prior") {
+TEST_CASE("Eqs. (35)-(36) by hand: at a node and at a cell centre lambda = 0 and N is the normalised Gaussian prior; grad N by Eq. (41)") {
   // Tolerances: what |r|/h <= 1e-13 allows (testing::check_lme_symmetric_point), a few 1e-13 at most.
   LmeOptions options;
   options.newton_tolerance = 1e-13;
@@ -459,7 +426,7 @@ TEST_CASE("LME by hand: at a node and at a cell centre lambda = 0 and N is the n
   testing::check_lme_symmetric_point(lme2, plane, Vector<2>(1.3, 2.1), Vector<2>(2.25, 2.75), 16);
 }
 
-TEST_CASE("LME: every shape property in 1D and 2D, near and at the grid edge, on faces and at nodes") {
+TEST_CASE("Eq. (41) against finite differences, and every shape property, in 1D and 2D, near and at the grid edge, on faces and at nodes") {
   LmeOptions options;
   options.newton_tolerance = 1e-13;  // so that finite differences of N can check grad N (see check_lme_properties)
   const Grid<1> line(Vector<1>(-1.0), 0.25, {16});
@@ -566,24 +533,24 @@ TEST_CASE("LME Newton: few iterations from a warm start, and a clear failure oth
     edge.initialise(1);
     interior.evaluate(0, Vector<1>(0.5), nodes, values, gradients);
     edge.evaluate(0, Vector<1>(0.3), nodes, values, gradients);
-    const long cold = interior.diagnostics().newton_iterations_total, cold_edge = edge.diagnostics().newton_iterations_total;
+    const long cold = interior.diagnostics().newton_iterations_total(), cold_edge = edge.diagnostics().newton_iterations_total();
     for (int k = 1; k <= 1000; ++k) interior.evaluate(0, Vector<1>(0.5 + k * 1e-3 * h), nodes, values, gradients);  // 10 cells
     for (int k = 1; k <= 2990; ++k) edge.evaluate(0, Vector<1>(0.3 - k * 1e-3 * h), nodes, values, gradients);  // to 0.01 h
     INFO("gamma = ", gamma);
-    CHECK(interior.diagnostics().newton_iterations_max <= (gamma == 3.0 ? 2 : 3));
-    CHECK(double(interior.diagnostics().newton_iterations_total - cold) / 1000 <= (gamma == 3.0 ? 2.0 : 2.1));
-    CHECK(edge.diagnostics().newton_iterations_max <= 3);
-    CHECK(double(edge.diagnostics().newton_iterations_total - cold_edge) / 2990 <= 2.1);
+    CHECK(interior.diagnostics().newton_iterations_max() <= (gamma == 3.0 ? 2 : 3));
+    CHECK(double(interior.diagnostics().newton_iterations_total() - cold) / 1000 <= (gamma == 3.0 ? 2.0 : 2.1));
+    CHECK(edge.diagnostics().newton_iterations_max() <= 3);
+    CHECK(double(edge.diagnostics().newton_iterations_total() - cold_edge) / 2990 <= 2.1);
 
     const Grid<2> plane(Vector<2>(0.0, 0.0), h, {10, 10});
     LmeShape<2> lme2(plane, options);
     lme2.initialise(1);
     lme2.evaluate(0, Vector<2>(0.3, 0.35), nodes, values, gradients2);
-    const long cold2 = lme2.diagnostics().newton_iterations_total;
+    const long cold2 = lme2.diagnostics().newton_iterations_total();
     for (int k = 1; k <= 2000; ++k)  // a slanted path across cells, faces and nodes' neighbourhoods
       lme2.evaluate(0, Vector<2>(0.3 + k * 0.8e-3 * h, 0.35 + k * 0.6e-3 * h), nodes, values, gradients2);
-    CHECK(lme2.diagnostics().newton_iterations_max <= (gamma == 3.0 ? 2 : 3));
-    CHECK(double(lme2.diagnostics().newton_iterations_total - cold2) / 2000 <= (gamma == 3.0 ? 2.0 : 2.1));
+    CHECK(lme2.diagnostics().newton_iterations_max() <= (gamma == 3.0 ? 2 : 3));
+    CHECK(double(lme2.diagnostics().newton_iterations_total() - cold2) / 2000 <= (gamma == 3.0 ? 2.0 : 2.1));
   }
 
   // Cold starts converge even far from the solution: at the grid edge (lambda -> infinity, N -> the
@@ -593,7 +560,7 @@ TEST_CASE("LME Newton: few iterations from a warm start, and a clear failure oth
   LmeShape<2> cold(plane, options);
   cold.initialise(1);
   cold.evaluate(0, Vector<2>(0.0, 0.0), nodes, values, gradients2);
-  CHECK(cold.diagnostics().newton_iterations_max <= 25);
+  CHECK(cold.diagnostics().newton_iterations_max() <= 25);
   // The weak Kronecker property at the corner node: every other node I has offset -k_I with k_I >= 0,
   // k_Ix + k_Iy >= 1, so 1 - N_0 <= -(r_x + r_y) <= sqrt(2) |r| <= sqrt(2) 1e-10 h.
   CHECK(nodes[0] == 0);
@@ -648,7 +615,7 @@ TEST_CASE("LME options: the hull condition on gamma and the support tolerance, a
   CHECK_THROWS_AS(LmeShape<1>(line, options), std::invalid_argument);
 
   // beta = gamma / hbar^2. In 1D at a cell centre with gamma = 3 the neighbours are at 0.5 h and 1.5 h,
-  // so hbar = h and N is the default's (spec 4.1, example 2), to rounding. (So it is wherever x has
+  // so hbar = h and N is the default's (paper/09_choices.md, 'The beta rule'), to rounding. (So it is wherever x has
   // four neighbours, two on each side: their distances add up to 4 h.)
   int nodes[64];
   double values[64], reference[64];
@@ -678,6 +645,130 @@ TEST_CASE("LME options: the hull condition on gamma and the support tolerance, a
   authors2.initialise(1);
   for (const Vector<2>& x : {Vector<2>(0.0, 3.3), Vector<2>(4.5, 4.5), Vector<2>(4.2, 7.9), Vector<2>(9.9, 9.95)})
     testing::check_shape_properties(authors2, plane, 0, x, tolerance);
+}
+
+TEST_CASE("Eq. (34): N maximises the entropy less beta U among the partitions of unity that reproduce x") {
+  // F(N) = beta sum_I N_I |x - x_I|^2 - H(N) (cell units) is least at the LME functions on the set
+  // sum N = 1, sum N x_I = x. Moving along a direction d that keeps both (sum d = 0, sum d x_I = 0)
+  // by eps raises F by eps^2/2 sum d_I^2 / N_I to second order (the first order vanishes at the optimum).
+  LmeOptions options;
+  options.newton_tolerance = 1e-13;
+  const Grid<1> line(Vector<1>(0.0), 1.0, {10});
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {10, 10});
+  auto check = [&](auto& shape, const auto& grid, const auto& x, const std::vector<std::pair<int, double>>& move) {
+    constexpr int Dim = std::decay_t<decltype(x)>::RowsAtCompileTime;
+    std::vector<int> nodes(shape.capacity());
+    std::vector<double> N(shape.capacity());
+    std::vector<Vector<Dim>> gradients(shape.capacity());
+    shape.initialise(1);
+    const int count = shape.evaluate(0, x, nodes.data(), N.data(), gradients.data());
+    auto F = [&](const std::vector<double>& values) {
+      double U = 0.0;
+      for (int k = 0; k < count; ++k) U += values[k] * (x - grid.node_position(nodes[k])).squaredNorm();
+      return shape.options().gamma * U - lme_entropy(count, values.data());
+    };
+    std::vector<double> d(count, 0.0);
+    for (const auto& [node, weight] : move)
+      for (int k = 0; k < count; ++k)
+        if (nodes[k] == node) d[k] = weight;
+    double smallest = 1.0, curvature = 0.0, sum = 0.0;
+    Vector<Dim> moment = Vector<Dim>::Zero();
+    for (int k = 0; k < count; ++k) {
+      if (d[k] != 0.0) smallest = std::min(smallest, N[k]), curvature += d[k] * d[k] / N[k];
+      sum += d[k];
+      moment += d[k] * grid.node_position(nodes[k]);
+    }
+    REQUIRE(sum == 0.0);
+    REQUIRE(moment.norm() < 1e-12);
+    REQUIRE(curvature > 0.0);
+    for (double eps : {1e-3 * smallest, -1e-3 * smallest}) {
+      std::vector<double> moved = N;
+      for (int k = 0; k < count; ++k) moved[k] += eps * d[k];
+      const double rise = F(moved) - F(N);
+      CHECK(rise > 0.0);
+      CHECK(rise == doctest::Approx(0.5 * eps * eps * curvature).epsilon(0.01));
+    }
+  };
+  LmeShape<1> lme(line, options);
+  check(lme, line, Vector<1>(4.3), {{3, 1.0}, {4, -2.0}, {5, 1.0}});  // a second difference
+  check(lme, line, Vector<1>(4.3), {{3, 1.0}, {4, -1.0}, {5, -1.0}, {6, 1.0}});  // the neighbours are nodes 3 to 6
+  LmeShape<2> lme2(plane, options);
+  const int i = 4, j = 5;  // the corners of the cell that contains x: a twist
+  check(lme2, plane, Vector<2>(4.3, 5.6),
+        {{plane.node_index({i, j}), 1.0}, {plane.node_index({i + 1, j}), -1.0}, {plane.node_index({i, j + 1}), -1.0},
+         {plane.node_index({i + 1, j + 1}), 1.0}});
+  // By hand: H of a uniform partition of 4 is log 4; 0 log 0 = 0.
+  const double uniform[4] = {0.25, 0.25, 0.25, 0.25}, corner[3] = {1.0, 0.0, 0.0};
+  CHECK(lme_entropy(4, uniform) == doctest::Approx(std::log(4.0)).epsilon(1e-15));
+  CHECK(lme_entropy(3, corner) == 0.0);
+}
+
+TEST_CASE("Eqs. (37)-(38) and Eq. (40): r and J are the gradient and Hessian of log Z (finite differences in lambda); f_I by hand") {
+  // Eq. (40) by hand: beta = 3, lambda = (0.5, -1), x - x_I = (1, 2): -3 (1 + 4) + (0.5 - 2) = -16.5.
+  CHECK(lme_exponent<2>(3.0, Vector<2>(0.5, -1.0), Vector<2>(1.0, 2.0)) == -16.5);
+  // The 16 neighbours of a point, a lambda away from the root: log Z is smooth in lambda, and central
+  // differences with step 1e-5 are exact to ~1e-10 (third derivative ~ 1, divided by 6, times step^2).
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {10, 10});
+  const double radius_squared = -std::log(1e-6) / 3.0, beta = 3.0, step = 1e-5;
+  int nodes[16];
+  Vector<2> offsets[16];
+  double w[16];
+  const int count = lme_neighbours(plane, radius_squared, 16, 0, Vector<2>(4.4, 5.7), nodes, offsets);
+  REQUIRE(count >= 12);
+  const Vector<2> lambda(0.3, -0.7);
+  auto log_z = [&](const Vector<2>& l) { return lme_partition(count, offsets, beta, l, w).log_z(); };
+  auto moments = [&](const Vector<2>& l) {
+    const LmePartition z = lme_partition(count, offsets, beta, l, w);
+    return lme_moments(count, offsets, w, z.weight_sum);
+  };
+  const LmeMoments<2> at = moments(lambda);
+  for (int k = 0; k < 2; ++k) {
+    const Vector<2> e = step * Vector<2>::Unit(k);
+    CHECK(at.residual[k] == doctest::Approx((log_z(lambda + e) - log_z(lambda - e)) / (2.0 * step)).epsilon(1e-8));
+    const Vector<2> column = (moments(lambda + e).residual - moments(lambda - e).residual) / (2.0 * step);
+    CHECK((at.hessian.col(k) - column).norm() <= 1e-8);
+  }
+  // Eq. (37) as printed, sum p (x - x_I) (x) (x - x_I) - r (x) r, equals the covariance form to rounding.
+  const LmePartition z = lme_partition(count, offsets, beta, lambda, w);
+  Matrix<2> printed = Matrix<2>::Zero();
+  for (int I = 0; I < count; ++I) printed += w[I] / z.weight_sum * offsets[I] * offsets[I].transpose();
+  printed -= at.residual * at.residual.transpose();
+  CHECK((printed - at.hessian).norm() <= 1e-14);
+}
+
+TEST_CASE("Eq. (39): grad N_I = N_I (grad f_I - sum_J N_J grad f_J), with the total derivatives of f_I by finite differences") {
+  // f_I(x) = -beta |x - x_I|^2 + lambda*(x).(x - x_I), lambda* re-solved at x +- delta. Newton's residual
+  // (1e-13 h) over the step (2e-6 h) bounds the error of grad f: about 1e-7 / h.
+  LmeOptions options;
+  options.newton_tolerance = 1e-13;
+  const double h = 0.5, delta = 1e-6 * h;
+  const Grid<2> plane(Vector<2>(0.0, 0.0), h, {10, 10});
+  LmeShape<2> lme(plane, options);
+  lme.initialise(1);
+  int nodes[16], nodes_moved[16];
+  double N[16], scratch[16];
+  Vector<2> gradients[16], scratch_gradients[16];
+  const Vector<2> x(2.2, 2.85);
+  const double beta = options.gamma / (h * h);
+  Vector<2> grad_f[16];
+  for (auto& g : grad_f) g.setZero();
+  for (int axis = 0; axis < 2; ++axis)
+    for (double side : {1.0, -1.0}) {
+      const Vector<2> moved = x + side * delta * Vector<2>::Unit(axis);
+      const int count = lme.evaluate(0, moved, nodes_moved, scratch, scratch_gradients);
+      for (int k = 0; k < count; ++k) {
+        const Vector<2> offset = moved - plane.node_position(nodes_moved[k]);
+        grad_f[k][axis] += side * (-beta * offset.squaredNorm() + lme.lagrange_multiplier(0).dot(offset)) / (2.0 * delta);
+      }
+    }
+  const int count = lme.evaluate(0, x, nodes, N, gradients);
+  Vector<2> mean = Vector<2>::Zero();
+  for (int k = 0; k < count; ++k) mean += N[k] * grad_f[k];
+  for (int k = 0; k < count; ++k) {
+    INFO("node ", nodes[k], ", N = ", N[k]);
+    CHECK(nodes[k] == nodes_moved[k]);
+    CHECK((gradients[k] - N[k] * (grad_f[k] - mean)).norm() * h <= 1e-6);
+  }
 }
 
 }  // namespace mpm

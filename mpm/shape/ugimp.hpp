@@ -1,6 +1,6 @@
 /// \file
 /// uGIMP shape functions: the "uniform" generalised interpolation material point weights of
-/// Bardenhagen & Kober (2004), as the authors use them (spec 4.2).
+/// Bardenhagen & Kober (2004), as the authors use them (paper/04_shape_functions.md).
 ///
 /// A particle is a segment (1D) or rectangle (2D) of half-length \f$ l_p \f$ per axis, centred at
 /// \f$ x_p \f$. Its weight at node I is the linear hat averaged over the particle,
@@ -38,7 +38,7 @@ struct GimpFactor {
   double derivative;
 };
 
-/// The 1D uGIMP weight of spec 4.2 (Bardenhagen & Kober 2004) for \f$ l_p \le h/2 \f$, in cell
+/// The 1D uGIMP weight of paper/04_shape_functions.md (Bardenhagen & Kober 2004) for \f$ l_p \le h/2 \f$, in cell
 /// units: \f$ d = \Delta / h \f$, \f$ \lambda = l_p / h \f$; returns S and dS/dd. With h and l_p restored:
 /// \f[
 ///   S(\Delta) = \begin{cases}
@@ -85,7 +85,7 @@ inline GimpFactor gimp_factor_average(double d, double lambda) {
           (hat(d + lambda) - hat(d - lambda)) / (2.0 * lambda)};
 }
 
-/// The uGIMP weight in cell units: the spec 4.2 table when it applies, its definition otherwise.
+/// The uGIMP weight in cell units: the table of paper/04_shape_functions.md when it applies, its definition otherwise.
 inline GimpFactor gimp_factor(double d, double lambda) {
   return lambda <= 0.5 ? gimp_factor_table(d, lambda) : gimp_factor_average(d, lambda);
 }
@@ -244,7 +244,7 @@ void check_ugimp_properties(UgimpShape<Dim>& shape, const Grid<Dim>& grid, int p
 
 }  // namespace testing
 
-TEST_CASE("uGIMP 1D weight: the spec 4.2 table by hand, its continuity, and against its definition") {
+TEST_CASE("uGIMP 1D weight: the table of paper/04_shape_functions.md by hand, its continuity, and against its definition") {
   const double lambda = 0.25;  // l_p = h/4: two particles per cell
   // By hand. Exact in binary for lambda = 1/4, so only the last bit may differ.
   CHECK(gimp_factor(0.0, lambda).value == doctest::Approx(1.0 - lambda / 2.0).epsilon(1e-15));  // 1 - l_p/(2h)
@@ -363,8 +363,8 @@ TEST_CASE("uGIMP: the support must stay in the grid, sizes are checked, capacity
   Vector<2> gradients[16];
   CHECK(gimp.evaluate(0, Vector<2>(0.125, 0.125), nodes, values, gradients) == 4);  // touches the edge: fine
   CHECK(gimp.evaluate(0, Vector<2>(0.5, 1.0), nodes, values, gradients) == 9);       // on a node: 3 x 3
-  CHECK(gimp.diagnostics().neighbours_max == 9);
-  CHECK(gimp.diagnostics().evaluations == 2);
+  CHECK(gimp.diagnostics().neighbours_max() == 9);
+  CHECK(gimp.diagnostics().evaluations() == 2);
 
   // The particle's support crossing the grid edge, and the particle leaving the grid.
   CHECK_THROWS_WITH_AS(gimp.evaluate(0, Vector<2>(0.12, 1.0), nodes, values, gradients),

@@ -6,6 +6,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include "mpm/core/parallel.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/particles/stencils.hpp"
@@ -19,7 +20,7 @@ Vector<Dim> nodal_acceleration(const GridFields<Dim>& grid, int node) {
   return grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_force[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
 }
 
-/// Which nodal velocity moves the particles in the forward-Euler update (spec 3.2).
+/// Which nodal velocity moves the particles in the forward-Euler update (paper/09_choices.md, 'The position update of forward Euler').
 enum class EulerPositionVelocity {
   updated,  ///< the authors' code: p_I after p_I += dt f_I, i.e. v_I^{k+1} (default)
   start     ///< the literal Eqs. (20)-(21): v_I^k = p_I^k / m_I
@@ -32,7 +33,7 @@ enum class EulerPositionVelocity {
 template <int Dim>
 void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double dt,
                                    EulerPositionVelocity position_velocity, Particles<Dim>& particles) {
-  for (int p = 0; p < particles.size(); ++p) {
+  parallel_for(particles.size(), [&](int p) {
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
     for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
       const int node = stencils.node[k];
@@ -44,10 +45,10 @@ void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFiel
     }
     particles.velocity[p] += dt * acceleration;
     particles.position[p] += dt * velocity;
-  }
+  });
 }
 
-/// Which nodal velocity enters the position update Eq. (33) of the predictor-corrector (spec 3.1.3a).
+/// Which nodal velocity enters the position update Eq. (33) of the predictor-corrector (paper/09_choices.md).
 enum class NewmarkPositionVelocity {
   corrected,  ///< the authors' code: v_I^{k+1} from Eq. (30) (default)
   predicted,  ///< v_I^{pred} of Eq. (29)
@@ -55,7 +56,7 @@ enum class NewmarkPositionVelocity {
 };
 
 /// Eqs. (31)-(33), the particle update of the predictor-corrector. Eq. (32) increments v_p with the
-/// new acceleration only, not the Newmark average of Eq. (23) (spec 3.1.3b): a first-order,
+/// new acceleration only, not the Newmark average of Eq. (23) (paper/09_choices.md): a first-order,
 /// dissipative choice (tests/energy.cpp measures it).
 /// \f[ \mathbf a_p^{k+1} = \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
 ///     \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
@@ -64,7 +65,7 @@ enum class NewmarkPositionVelocity {
 template <int Dim>
 void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double newmark_gamma, double dt,
                              NewmarkPositionVelocity position_velocity, Particles<Dim>& particles) {
-  for (int p = 0; p < particles.size(); ++p) {
+  parallel_for(particles.size(), [&](int p) {
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
     for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
       const int node = stencils.node[k];
@@ -79,10 +80,10 @@ void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim
     particles.acceleration[p] = acceleration;
     particles.velocity[p] += dt * acceleration;
     particles.position[p] += dt * velocity + 0.5 * dt * dt * acceleration;
-  }
+  });
 }
 
-TEST_CASE("G2P on the worked example: Eqs. (19)-(22) and (31)-(33) by hand") {
+TEST_CASE("Eq. (18), Eqs. (19)-(22), Eqs. (31)-(33): G2P on the worked example by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   grid.nodal_mass = {1.5, 2.5, 2.0};

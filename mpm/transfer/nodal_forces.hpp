@@ -14,6 +14,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include "mpm/core/parallel.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/particles/stencils.hpp"
@@ -25,11 +26,10 @@ namespace mpm {
 /// with the particle volume V_p = m_p / rho_p of the current density.
 template <int Dim>
 void add_internal_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  for (int p = 0; p < particles.size(); ++p) {
+  scatter_to_nodes(particles.size(), grid.nodal_force, grid.vector_copies, [&](int p, Vector<Dim>* nodal_force) {
     const Matrix<Dim> volume_stress = particles.volume(p) * particles.stress[p];
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      grid.nodal_force[stencils.node[k]] -= volume_stress * stencils.gradient[k];
-  }
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_force[stencils.node[k]] -= volume_stress * stencils.gradient[k];
+  });
 }
 
 /// Eq. (15), body-force part: \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b \f$ (no tractions in
@@ -38,12 +38,13 @@ template <int Dim>
 void add_body_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils, const Vector<Dim>& body_force,
                     GridFields<Dim>& grid) {
   if (body_force.squaredNorm() == 0.0) return;
-  for (int p = 0; p < particles.size(); ++p)
+  scatter_to_nodes(particles.size(), grid.nodal_force, grid.vector_copies, [&](int p, Vector<Dim>* nodal_force) {
     for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      grid.nodal_force[stencils.node[k]] += stencils.value[k] * particles.mass[p] * body_force;
+      nodal_force[stencils.node[k]] += stencils.value[k] * particles.mass[p] * body_force;
+  });
 }
 
-TEST_CASE("Nodal forces on the worked example: Eq. (14) by hand, Eq. (15) sums to the weight") {
+TEST_CASE("Eq. (9), Eq. (10), Eqs. (14)-(15): nodal forces on the worked example: the internal force by hand, the body force sums to the weight") {
   testing::WorkedExample example;
   add_internal_force(example.particles, example.stencils, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(5.0));

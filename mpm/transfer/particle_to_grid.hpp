@@ -2,10 +2,12 @@
 /// Particle-to-grid transfers (P2G): the nodal mass, momentum and the Newmark velocity predictor.
 ///
 /// Contract: read the particles' m_p, v_p, a_p and the step's stencils; write nodal_mass,
-/// nodal_momentum, nodal_velocity. Fields are accumulated into zeroed arrays (GridFields::reset).
+/// nodal_momentum, nodal_velocity. Fields are accumulated into zeroed arrays (GridFields::reset),
+/// on every core: scatter_to_nodes gives each thread its own copy of the field (mpm/core/parallel.hpp).
 #pragma once
 #include <doctest/doctest.h>
 
+#include "mpm/core/parallel.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/particles/stencils.hpp"
@@ -16,17 +18,18 @@ namespace mpm {
 /// Eq. (13), lumped: \f$ m_I = \sum_J m_{IJ} = \sum_p N_{Ip}\, m_p \f$ (by the partition of unity).
 template <int Dim>
 void lumped_nodal_mass(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  for (int p = 0; p < particles.size(); ++p)
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      grid.nodal_mass[stencils.node[k]] += stencils.value[k] * particles.mass[p];
+  scatter_to_nodes(particles.size(), grid.nodal_mass, grid.scalar_copies, [&](int p, double* nodal_mass) {
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_mass[stencils.node[k]] += stencils.value[k] * particles.mass[p];
+  });
 }
 
 /// Nodal momentum of Eqs. (21)-(22): \f$ \mathbf p_I = \sum_p N_{Ip}\, m_p \mathbf v_p \f$.
 template <int Dim>
 void nodal_momentum(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  for (int p = 0; p < particles.size(); ++p)
+  scatter_to_nodes(particles.size(), grid.nodal_momentum, grid.vector_copies, [&](int p, Vector<Dim>* nodal_momentum) {
     for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      grid.nodal_momentum[stencils.node[k]] += stencils.value[k] * particles.mass[p] * particles.velocity[p];
+      nodal_momentum[stencils.node[k]] += stencils.value[k] * particles.mass[p] * particles.velocity[p];
+  });
 }
 
 /// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere.
@@ -47,20 +50,22 @@ void nodal_velocity_from_momentum(GridFields<Dim>& grid) {
 template <int Dim>
 void nodal_velocity_predictor(const Particles<Dim>& particles, const Stencils<Dim>& stencils, double newmark_gamma,
                               double dt, GridFields<Dim>& grid) {
-  for (int p = 0; p < particles.size(); ++p) {
+  scatter_to_nodes(particles.size(), grid.nodal_momentum, grid.vector_copies, [&](int p, Vector<Dim>* nodal_momentum) {
+    const Vector<Dim> momentum = particles.mass[p] * particles.velocity[p];
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_momentum[stencils.node[k]] += stencils.value[k] * momentum;
+  });
+  scatter_to_nodes(particles.size(), grid.nodal_velocity, grid.vector_copies, [&](int p, Vector<Dim>* nodal_velocity) {
     const Vector<Dim> momentum = particles.mass[p] * particles.velocity[p];
     const Vector<Dim> predicted = momentum + (1.0 - newmark_gamma) * dt * particles.mass[p] * particles.acceleration[p];
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
-      grid.nodal_momentum[stencils.node[k]] += stencils.value[k] * momentum;
-      grid.nodal_velocity[stencils.node[k]] += stencils.value[k] * predicted;  // divided by m_I below
-    }
-  }
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
+      nodal_velocity[stencils.node[k]] += stencils.value[k] * predicted;  // divided by m_I below
+  });
   for (int node = 0; node < grid.size(); ++node)
     grid.nodal_velocity[node] = grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_velocity[node] / grid.nodal_mass[node])
                                                             : Vector<Dim>::Zero();
 }
 
-TEST_CASE("P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
+TEST_CASE("Eq. (8), Eq. (13), Eqs. (21)-(22), Eqs. (26)-(29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   lumped_nodal_mass(example.particles, example.stencils, grid);

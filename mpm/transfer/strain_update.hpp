@@ -12,6 +12,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include "mpm/core/parallel.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/material/linear_elastic.hpp"
 #include "mpm/particles/particles.hpp"
@@ -29,7 +30,7 @@ Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<
   return 0.5 * (velocity_gradient + velocity_gradient.transpose());
 }
 
-/// Eq. (17) discretised as the authors do (spec 2.3): \f$ \rho_p^{k+1} = \rho_p^k / (1 + \Delta t\,\mathrm{tr}\,\dot{\boldsymbol\varepsilon}_p) \f$.
+/// Eq. (17) discretised as the authors do (paper/09_choices.md, 'The density update'): \f$ \rho_p^{k+1} = \rho_p^k / (1 + \Delta t\,\mathrm{tr}\,\dot{\boldsymbol\varepsilon}_p) \f$.
 inline double updated_density(double density, double dt, double volumetric_strain_rate) {
   return density / (1.0 + dt * volumetric_strain_rate);
 }
@@ -39,16 +40,16 @@ inline double updated_density(double density, double dt, double volumetric_strai
 template <int Dim>
 void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& nodal_velocity,
                                   const LinearElastic& material, double dt, Particles<Dim>& particles) {
-  for (int p = 0; p < particles.size(); ++p) {
+  parallel_for(particles.size(), [&](int p) {
     const Matrix<Dim> rate = strain_rate(stencils, p, nodal_velocity);
     particles.strain[p] += dt * rate;
     particles.density[p] = updated_density(particles.density[p], dt, rate.trace());
     particles.stress[p] = material.stress<Dim>(particles.strain[p]);
     particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
-  }
+  });
 }
 
-TEST_CASE("Strain rate, Eq. (16), density, Eq. (17), stress, Eq. (3): the worked example and a 2D shear") {
+TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density and stress: the worked example and a 2D shear") {
   testing::WorkedExample example;
   const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
   CHECK(strain_rate(example.stencils, 0, nodal_velocity)(0, 0) == doctest::Approx(-1.6));

@@ -1,5 +1,5 @@
 # Fig. 6: RMS of v_A against the number of cells, one panel per shape function, FE and NPC,
-# the background shaded by the grid-crossing ratio of spec 5.1.4 (light: negligible; middle:
+# the background shaded by the grid-crossing ratio of paper/08_test_cases.md (light: negligible; middle:
 # transition; dark: crossing), the fitted order of each band printed on the panel.
 # gnuplot -e "data='...'; out='...'; orders='shape,integrator,band,order rows as text'" dyka_fig6.gp
 load dir."/common.gp"

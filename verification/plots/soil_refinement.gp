@@ -1,6 +1,6 @@
 # Beyond the paper: the soil block on 2, 1 and 0.5 m cells (2 x 2 particles per cell, NPC), errors of the
 # top particle's settlement. Left: RMS of u - u_exact over 0-20 s and |u - u_exact| at 20 s against the
-# small-strain exact column (spec 7.2), with the gap between the small- and finite-strain static columns.
+# small-strain exact column (paper/07_exact_column.md), with the gap between the small- and finite-strain static columns.
 # Right: |mean settlement after the ramp - finite-strain static settlement| (mpm/exact/column_log_strain.hpp).
 # Runs that failed (completed = 0) are left out.
 # gnuplot -e "data='DATA_DIR'; out='.../soil_refinement'" soil_refinement.gp   (writes out.png and out.pdf)

@@ -1,6 +1,6 @@
 # Fig. 13: vertical displacement u_y(t) = y(t) - Y of the top particle (4.5, 9.5) m for LME gamma = 0.8,
 # LME gamma = 3, linear (Q4) and uGIMP, with the predictor-corrector (top) and forward Euler (bottom),
-# against the exact column at Y (spec 7.2); inset t = 10-15 s, u = -0.6 to -0.5 m.
+# against the exact column at Y (paper/07_exact_column.md); inset t = 10-15 s, u = -0.6 to -0.5 m.
 # gnuplot -e "data='DATA_DIR'; out='.../soil_fig13_settlement'" soil_settlement.gp   (writes out.png and out.pdf)
 set datafile separator ","
 methods = "lme0.8 lme3 linear ugimp"
@@ -27,7 +27,7 @@ do for [format in "png pdf"] {
     set grid
     unset object 1
     set object 1 rect from 10, -0.6 to 15, -0.5 fs empty border lc rgb "#555555" dt 2
-    plot file("lme3", "npc") using 1:3 with lines lw 2.5 lc rgb "black" title "exact (small strain, spec 7.2)", \
+    plot file("lme3", "npc") using 1:3 with lines lw 2.5 lc rgb "black" title "exact (small strain)", \
          for [m = 1:4] file(word(methods, m), integrator) using 1:2 with lines lw 1.4 lc rgb word(colours, m) title word(labels, m)
     # the inset
     unset object 1

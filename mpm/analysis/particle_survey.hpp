@@ -1,0 +1,96 @@
+/// \file
+/// What the time-step loop needs to know about the particles after every step, gathered in one
+/// pass over them: the balances (output, energy check), the two speeds of the next step's
+/// Courant condition, Eq. (42), and whether every particle is finite and on the grid.
+///
+/// (One pass instead of three: each pass over the particles costs about as much as a transfer.)
+#pragma once
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mpm/analysis/energy.hpp"
+#include "mpm/core/parallel.hpp"
+#include "mpm/grid/grid.hpp"
+#include "mpm/integrators/time_step.hpp"
+#include "mpm/particles/particles.hpp"
+
+namespace mpm {
+
+template <int Dim>
+struct ParticleSurvey {
+  Balances<Dim> balances;
+  double fastest_speed_squared = 0.0;                                 ///< \f$ \max_p |\mathbf v_p|^2 \f$
+  double smallest_density = std::numeric_limits<double>::infinity();  ///< \f$ \min_p \rho_p \f$
+  int unhealthy = 0;  ///< particles with a NaN or infinity in their state, or off the grid
+
+  /// \f$ \max_p |\mathbf v_p| \f$ (sqrt is monotone: the same number as the max of the norms).
+  double fastest_speed() const { return std::sqrt(fastest_speed_squared); }
+  /// \f$ \max_p \sqrt{E/\rho_p} = \sqrt{E / \min_p \rho_p} \f$, bit for bit (division and sqrt are monotone).
+  double wave_speed(double young_modulus) const { return std::sqrt(young_modulus / smallest_density); }
+};
+
+/// Whether particle p's state is finite and its position on the grid.
+template <int Dim>
+bool healthy(const Particles<Dim>& particles, const Grid<Dim>& grid, int p) {
+  return particles.position[p].allFinite() && particles.velocity[p].allFinite() && particles.stress[p].allFinite() &&
+         std::isfinite(particles.density[p]) && grid.contains(particles.position[p]);
+}
+
+/// One pass over the particles (on every core): the balances are summed in the order of balances().
+template <int Dim>
+ParticleSurvey<Dim> survey_particles(const Particles<Dim>& particles, const Grid<Dim>& grid) {
+  return parallel_sum(
+      particles.size(), ParticleSurvey<Dim>(),
+      [&](int p, ParticleSurvey<Dim>& survey) {
+        add_to_balances(particles, p, survey.balances);
+        survey.fastest_speed_squared = std::max(survey.fastest_speed_squared, particles.velocity[p].squaredNorm());
+        survey.smallest_density = std::min(survey.smallest_density, particles.density[p]);
+        if (!healthy(particles, grid, p)) ++survey.unhealthy;
+      },
+      [](ParticleSurvey<Dim>& total, const ParticleSurvey<Dim>& part) {
+        total.balances.kinetic += part.balances.kinetic;
+        total.balances.strain += part.balances.strain;
+        total.balances.momentum += part.balances.momentum;
+        total.balances.mass += part.balances.mass;
+        total.fastest_speed_squared = std::max(total.fastest_speed_squared, part.fastest_speed_squared);
+        total.smallest_density = std::min(total.smallest_density, part.smallest_density);
+        total.unhealthy += part.unhealthy;
+      });
+}
+
+TEST_CASE("Particle survey: the balances and Eq. (42)'s speeds of one pass equal those of their own passes, bit for bit") {
+  const Grid<2> grid(Vector<2>(0.0, 0.0), 0.5, {8, 8});
+  Particles<2> particles;
+  for (int p = 0; p < 3000; ++p) {  // above parallel_threshold: the survey runs on every core
+    const double s = std::sin(0.37 * p), c = std::cos(1.3 * p);
+    particles.add(Vector<2>(2.0 + 1.5 * s, 2.0 + 1.5 * c), 0.1 + 0.01 * (p % 7), 1000.0 * (1.0 + 0.1 * s * c),
+                  Vector<2>(s, -3.0 * c), Vector<2>(0.1, 0.1));
+    particles.strain[p] << 1e-3 * s, 2e-4 * c, 2e-4 * c, -1e-3 * c;
+    particles.stress[p] = 1e6 * particles.strain[p];
+  }
+  const double E = 1e7, h = grid.spacing();
+  use_threads(1);
+  const ParticleSurvey<2> one = survey_particles(particles, grid);
+  const Balances<2> sums = balances(particles);
+  CHECK(one.balances.kinetic == sums.kinetic);
+  CHECK(one.balances.strain == sums.strain);
+  CHECK(one.balances.momentum == sums.momentum);
+  CHECK(one.unhealthy == 0);
+  for (CourantSpeed rule : {CourantSpeed::maximum, CourantSpeed::sum})
+    CHECK(courant_time_step(one.fastest_speed(), one.wave_speed(E), h, 0.5, rule) == courant_time_step(particles, E, h, 0.5, rule));
+  use_threads(2);
+  const ParticleSurvey<2> two = survey_particles(particles, grid);
+  CHECK(two.balances.kinetic == doctest::Approx(sums.kinetic).epsilon(1e-14));
+  CHECK(two.balances.strain == doctest::Approx(sums.strain).epsilon(1e-14));
+  CHECK(two.fastest_speed_squared == one.fastest_speed_squared);
+  CHECK(two.smallest_density == one.smallest_density);
+  particles.velocity[2999][1] = std::nan("");
+  particles.position[5] = Vector<2>(-1.0, 1.0);
+  CHECK(survey_particles(particles, grid).unhealthy == 2);
+  use_threads(0);
+}
+
+}  // namespace mpm

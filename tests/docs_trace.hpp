@@ -1,0 +1,485 @@
+/// \file
+/// The trace from each equation of the paper to its kernel and its test, read from the sources.
+///
+/// paper/*.md states every equation (1)-(44) and (A.1)-(A.19) in a section of the shape fixed by the
+/// docs contract:
+///
+///     ### Eq. (16): rate of deformation at a particle {#eq16}
+///     \f[ ... \f]
+///     - kernel: \ref mpm::strain_rate "strain_rate()" in mpm/transfer/strain_update.hpp
+///     - test: \ref tests_eq16 "doctests of Eq. (16)"
+///
+/// or `- no kernel: <why>` instead of the kernel line. The doctests of mpm/ and tests/ name the equations
+/// they check in their TEST_CASE names ("Eq. (16): ...", "Eqs. (19)-(22): ...", "Eq. (A.5), Eq. (A.19): ...").
+/// This header parses both and lists what is missing (tests/docs_trace.cpp runs it under ctest), and
+/// writes the page of tests by equation that `make docs` renders (anchors tests_eq16, tests_eqA5).
+/// It knows no part of the solver: it reads text only.
+#pragma once
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace docs_trace {
+
+/// The 63 equation labels in paper order: "1" ... "44", "A.1" ... "A.19".
+inline std::vector<std::string> equation_labels() {
+  std::vector<std::string> labels;
+  for (int n = 1; n <= 44; ++n) labels.push_back(std::to_string(n));
+  for (int n = 1; n <= 19; ++n) labels.push_back("A." + std::to_string(n));
+  return labels;
+}
+
+/// "16" -> "16", "A.5" -> "A5": the suffix of the anchors eq16, tests_eqA5.
+inline std::string anchor_suffix(const std::string& label) {
+  std::string suffix;
+  for (char c : label)
+    if (c != '.') suffix += c;
+  return suffix;
+}
+
+/// Splits "A.12" into ("A.", 12) and "7" into ("", 7); false for anything else.
+inline bool split_label(const std::string& label, std::string& prefix, int& number) {
+  static const std::regex shape(R"(^(A\.)?([0-9]{1,3})$)");
+  std::smatch match;
+  if (!std::regex_match(label, match, shape)) return false;
+  prefix = match[1].str();
+  number = std::stoi(match[2].str());
+  return true;
+}
+
+/// Every equation a text names: "Eq. (16)", "Eqs. (19)-(22)" (each of 19, 20, 21, 22),
+/// "Eqs. (19)-(22) and (31)-(33)", "Eqs. (14), (15)". Labels as in equation_labels().
+inline std::vector<std::string> equations_named(const std::string& text) {
+  std::vector<std::string> named;
+  std::size_t at = 0;
+  while ((at = text.find("Eq", at)) != std::string::npos) {
+    std::size_t i = at + 2;
+    at = i;
+    if (i < text.size() && text[i] == 's') ++i;
+    if (i >= text.size() || text[i] != '.') continue;
+    ++i;
+    std::string previous_prefix;
+    int previous_number = 0;
+    bool range_open = false;
+    while (true) {
+      while (i < text.size() && text[i] == ' ') ++i;
+      if (i >= text.size() || text[i] != '(') break;
+      const std::size_t close = text.find(')', i);
+      if (close == std::string::npos) break;
+      const std::string label = text.substr(i + 1, close - i - 1);
+      std::string prefix;
+      int number = 0;
+      if (!split_label(label, prefix, number)) break;
+      if (range_open && prefix == previous_prefix && number > previous_number) {
+        for (int n = previous_number + 1; n <= number; ++n) named.push_back(prefix + std::to_string(n));
+      } else {
+        named.push_back(label);
+      }
+      previous_prefix = prefix;
+      previous_number = number;
+      i = close + 1;
+      // What joins this label to the next: "-" opens a range, ", " or " and " lists another.
+      if (i < text.size() && text[i] == '-') {
+        range_open = true;
+        ++i;
+      } else if (text.compare(i, 2, ", ") == 0 && i + 2 < text.size() && text[i + 2] == '(') {
+        range_open = false;
+        i += 2;
+      } else if (text.compare(i, 5, " and ") == 0 && i + 5 < text.size() && text[i + 5] == '(') {
+        range_open = false;
+        i += 5;
+      } else {
+        break;
+      }
+    }
+    at = i;
+  }
+  return named;
+}
+
+/// One doctest: its name, and where it is (path relative to the source root, 1-based line).
+struct TestCase {
+  std::string name;
+  std::string file;
+  int line = 0;
+};
+
+/// The TEST_CASE("...") names in one file's text.
+inline std::vector<TestCase> test_cases_in(const std::string& text, const std::string& file) {
+  std::vector<TestCase> found;
+  const std::string opening = std::string("TEST_") + "CASE(\"";  // split: this file is not a test file
+  std::size_t at = 0;
+  while ((at = text.find(opening, at)) != std::string::npos) {
+    const std::size_t start = at + opening.size();
+    std::string name;
+    std::size_t i = start;
+    for (; i < text.size() && text[i] != '"' && text[i] != '\n'; ++i) {
+      if (text[i] == '\\' && i + 1 < text.size()) ++i;
+      name += text[i];
+    }
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    found.push_back({name, file, line});
+    at = i;
+  }
+  return found;
+}
+
+/// One `- kernel:` reference: the qualified name and the file it is said to be in.
+struct KernelReference {
+  std::string qualified_name;  ///< e.g. mpm::strain_rate
+  std::string file;            ///< e.g. mpm/transfer/strain_update.hpp
+};
+
+/// One equation's section of a paper page.
+struct Section {
+  std::string label;      ///< "16", "A.5"
+  std::string title;      ///< the words after "Eq. (16): "
+  std::string page_file;  ///< paper/02_mpm_forward_euler.md
+  std::string page_id;    ///< the page's id, from `{#id}` on its first line
+  int line = 0;
+  std::string anchor;     ///< what the heading's `{#...}` says
+  bool has_display_formula = false;
+  std::string formula;    ///< the text between `\f[` and `\f]`
+  std::vector<KernelReference> kernels;
+  std::vector<std::string> malformed_kernel_lines;
+  bool no_kernel = false;
+  std::string test_anchor;  ///< the target of the `\ref` on the `- test:` line, empty if none
+};
+
+inline std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+/// The equation sections of one Markdown page, and every line that looks like an equation heading but
+/// is not of the contract's shape (reported as problems).
+inline std::vector<Section> sections_in(const std::string& text, const std::string& page_file,
+                                        std::vector<std::string>& problems) {
+  static const std::regex page_title(R"(^# .*\{#([A-Za-z0-9_]+)\}\s*$)");
+  static const std::regex heading(R"(^### Eqs?\. \(([^)]*)\): (.+?) \{#([A-Za-z0-9_]+)\}\s*$)");
+  static const std::regex loose_heading(R"(^#{1,6} Eqs?\. \([^)]*\):)");
+  static const std::regex reference(R"(\\ref\s+(mpm::[A-Za-z0-9_:]+))");
+  static const std::regex in_file(R"(\bin\s+`?((?:mpm|tests|verification)/[A-Za-z0-9_/]+\.(?:hpp|cpp))`?)");
+  static const std::regex test_reference(R"(^- test:\s*\\ref\s+([A-Za-z0-9_]+))");
+  std::vector<Section> sections;
+  std::istringstream lines(text);
+  std::string line, page_id;
+  int number = 0;
+  Section* current = nullptr;
+  bool expecting_formula = false, in_formula = false;
+  while (std::getline(lines, line)) {
+    ++number;
+    std::smatch match;
+    if (number == 1 && std::regex_match(line, match, page_title)) page_id = match[1].str();
+    if (std::regex_match(line, match, heading)) {
+      Section section;
+      section.label = match[1].str();
+      section.title = match[2].str();
+      section.anchor = match[3].str();
+      section.page_file = page_file;
+      section.page_id = page_id;
+      section.line = number;
+      sections.push_back(section);
+      current = &sections.back();
+      expecting_formula = true;
+      in_formula = false;
+      continue;
+    }
+    if (std::regex_search(line, loose_heading)) {
+      problems.push_back(page_file + ":" + std::to_string(number) +
+                         ": an equation heading not of the shape `### Eq. (N): words {#eqN}`: " + line);
+      current = nullptr;
+      continue;
+    }
+    if (!line.empty() && line[0] == '#') {  // any other heading ends the section
+      current = nullptr;
+      continue;
+    }
+    if (current == nullptr) continue;
+    const std::string stripped = trim(line);
+    if (in_formula) {
+      const auto close = stripped.find("\\f]");
+      current->formula += " " + stripped.substr(0, close);
+      if (close != std::string::npos) {
+        in_formula = false;
+        current->has_display_formula = !trim(current->formula).empty();
+      }
+      continue;
+    }
+    if (expecting_formula && !stripped.empty()) {
+      expecting_formula = false;
+      if (stripped.rfind("\\f[", 0) == 0) {
+        const std::string rest = stripped.substr(3);
+        const auto close = rest.find("\\f]");
+        current->formula = rest.substr(0, close);
+        if (close == std::string::npos)
+          in_formula = true;
+        else
+          current->has_display_formula = !trim(current->formula).empty();
+        continue;
+      }
+    }
+    if (stripped.rfind("- kernel:", 0) == 0) {
+      std::smatch file_match;
+      std::vector<std::string> names;
+      for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), reference); it != std::sregex_iterator(); ++it)
+        names.push_back((*it)[1].str());
+      if (names.empty() || !std::regex_search(stripped, file_match, in_file)) {
+        current->malformed_kernel_lines.push_back(stripped);
+        continue;
+      }
+      for (const std::string& name : names) current->kernels.push_back({name, file_match[1].str()});
+    } else if (stripped.rfind("- no kernel:", 0) == 0) {
+      current->no_kernel = !trim(stripped.substr(12)).empty();
+      if (!current->no_kernel) current->malformed_kernel_lines.push_back(stripped + " (gives no reason)");
+    } else {
+      std::smatch test_match;
+      if (std::regex_search(stripped, test_match, test_reference)) current->test_anchor = test_match[1].str();
+    }
+  }
+  return sections;
+}
+
+/// The last component and the enclosing ones of "mpm::exact::ElasticBar::velocity".
+inline std::vector<std::string> name_components(const std::string& qualified_name) {
+  std::vector<std::string> parts;
+  std::size_t start = 0, at;
+  while ((at = qualified_name.find("::", start)) != std::string::npos) {
+    parts.push_back(qualified_name.substr(start, at - start));
+    start = at + 2;
+  }
+  parts.push_back(qualified_name.substr(start));
+  return parts;
+}
+
+/// True when `text` (a header) declares `qualified_name`: its last component as a function
+/// (a type or `auto` before the name, a parameter list after it), a class, struct, enum or alias, and
+/// every enclosing class or namespace as a word of the file.
+inline bool declares(const std::string& text, const std::string& qualified_name) {
+  const std::vector<std::string> parts = name_components(qualified_name);
+  if (parts.size() < 2 || parts.front() != "mpm") return false;
+  for (std::size_t i = 1; i + 1 < parts.size(); ++i)
+    if (!std::regex_search(text, std::regex("\\b" + parts[i] + "\\b"))) return false;
+  const std::string& name = parts.back();
+  if (std::regex_search(text, std::regex("\\b(class|struct|enum class|enum|using)\\s+" + name + "\\b"))) return true;
+  const std::regex function("([A-Za-z0-9_>&*:]+)\\s+[&*]?" + name + "\\s*\\(");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), function); it != std::sregex_iterator(); ++it) {
+    const std::string before = (*it)[1].str();
+    if (before != "return" && before != "new" && before != "else" && before != "throw" && before != "case") return true;
+  }
+  return false;
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// What the checker reads: page texts by their path (paper/...), source texts by their path (mpm/..., tests/...).
+struct Sources {
+  std::map<std::string, std::string> pages;
+  std::map<std::string, std::string> code;
+};
+
+/// Reads paper/*.md, and every .hpp and .cpp under mpm/ and tests/, below `root`. The checker's own
+/// files (tests/docs_*) hold synthetic sections and test names for its doctests, so they are skipped.
+inline Sources read_sources(const std::filesystem::path& root) {
+  namespace fs = std::filesystem;
+  Sources sources;
+  if (fs::is_directory(root / "paper"))
+    for (const auto& entry : fs::directory_iterator(root / "paper"))
+      if (entry.is_regular_file() && entry.path().extension() == ".md")
+        sources.pages["paper/" + entry.path().filename().string()] = read_text(entry.path());
+  for (const char* folder : {"mpm", "tests"}) {
+    if (!fs::is_directory(root / folder)) continue;
+    for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
+      const auto extension = entry.path().extension();
+      if (!entry.is_regular_file() || (extension != ".hpp" && extension != ".cpp")) continue;
+      const std::string relative = fs::relative(entry.path(), root).generic_string();
+      if (relative.rfind("tests/docs_", 0) == 0) continue;
+      sources.code[relative] = read_text(entry.path());
+    }
+  }
+  return sources;
+}
+
+/// Everything parsed: the sections by label (several if a label is stated twice) and the test cases.
+struct Trace {
+  std::map<std::string, std::vector<Section>> sections;
+  std::vector<TestCase> test_cases;
+  std::map<std::string, std::vector<TestCase>> tests_by_equation;
+  std::vector<std::string> problems;  ///< parse problems (malformed headings)
+};
+
+inline Trace trace(const Sources& sources) {
+  Trace result;
+  for (const auto& [file, text] : sources.pages)
+    for (const Section& section : sections_in(text, file, result.problems))
+      result.sections[section.label].push_back(section);
+  for (const auto& [file, text] : sources.code)
+    for (const TestCase& test : test_cases_in(text, file)) {
+      result.test_cases.push_back(test);
+      std::set<std::string> labels;
+      for (const std::string& label : equations_named(test.name)) labels.insert(label);
+      for (const std::string& label : labels) result.tests_by_equation[label].push_back(test);
+    }
+  return result;
+}
+
+/// Every way the sources break the contract, each message starting with the equation it concerns.
+inline std::vector<std::string> check(const Sources& sources) {
+  const Trace parsed = trace(sources);
+  std::vector<std::string> errors = parsed.problems;
+  const std::vector<std::string> labels = equation_labels();
+  const std::set<std::string> known(labels.begin(), labels.end());
+  for (const auto& [label, sections] : parsed.sections)
+    if (known.count(label) == 0)
+      for (const Section& section : sections)
+        errors.push_back("Eq. (" + label + "): not an equation of the paper, stated at " + section.page_file + ":" +
+                         std::to_string(section.line));
+  for (const std::string& label : labels) {
+    const std::string eq = "Eq. (" + label + "): ";
+    const auto found = parsed.sections.find(label);
+    if (found == parsed.sections.end()) {
+      errors.push_back(eq + "no section `### Eq. (" + label + "): ... {#eq" + anchor_suffix(label) + "}` in paper/*.md");
+      continue;
+    }
+    if (found->second.size() > 1) {
+      std::string where;
+      for (const Section& section : found->second) where += " " + section.page_file + ":" + std::to_string(section.line);
+      errors.push_back(eq + "stated " + std::to_string(found->second.size()) + " times:" + where);
+    }
+    const Section& section = found->second.front();
+    const std::string at = " (" + section.page_file + ":" + std::to_string(section.line) + ")";
+    if (section.anchor != "eq" + anchor_suffix(label))
+      errors.push_back(eq + "its heading's anchor is {#" + section.anchor + "}, not {#eq" + anchor_suffix(label) + "}" + at);
+    if (!section.has_display_formula)
+      errors.push_back(eq + "no display formula \\f[ ... \\f] right after its heading" + at);
+    for (const std::string& malformed : section.malformed_kernel_lines)
+      errors.push_back(eq + "a kernel line not of the shape `- kernel: \\ref mpm::name \"text\" in path/file.hpp` "
+                       "(or `- no kernel: why`): " + malformed + at);
+    if (section.kernels.empty() && !section.no_kernel) {
+      errors.push_back(eq + "neither a `- kernel:` line nor a `- no kernel: why` line" + at);
+    }
+    for (const KernelReference& kernel : section.kernels) {
+      const auto code = sources.code.find(kernel.file);
+      if (code == sources.code.end()) {
+        errors.push_back(eq + "kernel " + kernel.qualified_name + ": no file " + kernel.file + at);
+      } else if (!declares(code->second, kernel.qualified_name)) {
+        errors.push_back(eq + "kernel " + kernel.qualified_name + " is not declared in " + kernel.file + at);
+      }
+    }
+    const std::string test_anchor = "tests_eq" + anchor_suffix(label);
+    const bool has_tests = parsed.tests_by_equation.count(label) > 0;
+    if (!section.kernels.empty() && section.test_anchor.empty())
+      errors.push_back(eq + "no `- test: \\ref " + test_anchor + " \"...\"` line" + at);
+    if (!section.test_anchor.empty() && section.test_anchor != test_anchor)
+      errors.push_back(eq + "its test line refers to " + section.test_anchor + ", not " + test_anchor + at);
+    if ((!section.kernels.empty() || !section.test_anchor.empty()) && !has_tests)
+      errors.push_back(eq + "no TEST_CASE in mpm/ or tests/ names it (\"Eq. (" + label + "): ...\" or a range \"Eqs. (M)-(N)\")");
+  }
+  return errors;
+}
+
+/// The Doxygen HTML file of a source file's listing: mpm/exact/bar.hpp -> bar_8hpp_source.html
+/// (Doxygen's escaping of the file name; the paths of this project have distinct file names).
+inline std::string source_listing_html(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  std::string escaped;
+  for (char c : name) {
+    if (c == '_') escaped += "__";
+    else if (c == '.') escaped += "_8";
+    else if (c == '-') escaped += "-";
+    else if (std::isupper(static_cast<unsigned char>(c))) escaped += std::string("_") + static_cast<char>(std::tolower(c));
+    else escaped += c;
+  }
+  return escaped + "_source.html";
+}
+
+/// Doxygen's line anchor in a source listing: line 51 -> l00051.
+inline std::string line_anchor(int line) {
+  std::string digits = std::to_string(line);
+  while (digits.size() < 5) digits = "0" + digits;
+  return "l" + digits;
+}
+
+inline std::string html_escape(const std::string& text) {
+  std::string escaped;
+  for (char c : text) {
+    if (c == '<') escaped += "&lt;";
+    else if (c == '>') escaped += "&gt;";
+    else if (c == '&') escaped += "&amp;";
+    else if (c == '"') escaped += "&quot;";
+    else escaped += c;
+  }
+  return escaped;
+}
+
+/// The page of tests by equation (Doxygen Markdown): one subpage per equation, id tests_eq16 or
+/// tests_eqA5 and title "Eq. (16): <its title on the paper page>" (so the search box finds
+/// "Eq. (16)"), linking back to the statement and listing every TEST_CASE that names the equation,
+/// with a link to its line in the source listing.
+inline std::string tests_page(const Sources& sources) {
+  const Trace parsed = trace(sources);
+  std::ostringstream page;
+  page << "# Tests by equation {#tests_by_equation}\n\n"
+       << "Generated by `make docs` from the `TEST_CASE` names of mpm/ and tests/: a doctest checks an equation "
+          "when its name says so (\"Eq. (16): ...\", or a range \"Eqs. (19)-(22): ...\"). Run the tests of one "
+          "equation with `build/bin/mpm_tests -tc=\"*Eq. (16)*\"`; the check `docs_trace` (run by ctest) fails when "
+          "an equation of the paper has a kernel but no test.\n\n"
+       << "| equation | stated on | doctests |\n|---|---|---|\n";
+  for (const std::string& label : equation_labels()) {
+    const auto tests = parsed.tests_by_equation.find(label);
+    const std::size_t count = tests == parsed.tests_by_equation.end() ? 0 : tests->second.size();
+    const auto section = parsed.sections.find(label);
+    page << "| \\ref tests_eq" << anchor_suffix(label) << " \"Eq. (" << label << ")\" | ";
+    if (section != parsed.sections.end()) page << "\\ref eq" << anchor_suffix(label) << " \"" << section->second.front().title << "\"";
+    page << " | " << count << " |\n";
+  }
+  page << "\n";
+  for (const std::string& label : equation_labels()) page << "- \\subpage tests_eq" << anchor_suffix(label) << "\n";
+  page << "\n";
+  for (const std::string& label : equation_labels()) {
+    const auto section = parsed.sections.find(label);
+    const std::string title = section != parsed.sections.end() ? section->second.front().title : "not stated on any page";
+    page << "\\page tests_eq" << anchor_suffix(label) << " Eq. (" << label << "): " << title << "\n\n";
+    if (section != parsed.sections.end()) {
+      const Section& stated = section->second.front();
+      page << "Stated in \\ref eq" << anchor_suffix(label) << " \"Eq. (" << label << ")\"";
+      if (!stated.page_id.empty()) page << " of \\ref " << stated.page_id;
+      page << ".";
+      if (stated.has_display_formula) page << "\n\\f[" << stated.formula << "\\f]\n";
+      page << "\n\n";
+      for (const KernelReference& kernel : stated.kernels)
+        page << "- kernel: \\ref " << kernel.qualified_name << " in " << kernel.file << "\n";
+      if (stated.no_kernel) page << "- no kernel (see the statement)\n";
+      page << "\n";
+    }
+    const auto tests = parsed.tests_by_equation.find(label);
+    if (tests == parsed.tests_by_equation.end()) {
+      page << "No doctest names Eq. (" << label << ").\n\n";
+      continue;
+    }
+    page << "Doctests that name Eq. (" << label << ") (`build/bin/mpm_tests -tc=\"*Eq. (" << label << ")*\"` runs those "
+         << "that spell it out; a range such as \"Eqs. (19)-(22)\" counts for each equation in it):\n\n";
+    for (const TestCase& test : tests->second)
+      page << "- <a href=\"" << source_listing_html(test.file) << "#" << line_anchor(test.line) << "\">" << test.file << ":"
+           << test.line << "</a>: `" << test.name << "`\n";
+    page << "\n";
+  }
+  return page.str();
+}
+
+}  // namespace docs_trace

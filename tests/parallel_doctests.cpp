@@ -1,0 +1,4 @@
+// Compiles the doctests of the parallel loops (core/) and of the loop's survey pass (analysis/)
+// into the test program.
+#include "mpm/analysis/particle_survey.hpp"
+#include "mpm/core/parallel.hpp"
