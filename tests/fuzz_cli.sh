@@ -10,7 +10,8 @@
 #
 #   bash tests/fuzz_cli.sh build/bin/mpm [CASES] [SEED]
 # CASES defaults to $MPM_FUZZ_CASES or 300 (what `make test` runs); SEED to $MPM_FUZZ_SEED or 11.
-# The same seed gives the same cases. Failing cases are printed with a command that reproduces them.
+# The same seed gives the same cases. Failing cases are printed with a command that reproduces them;
+# MPM_FUZZ_KEEP=DIR keeps their scene files there.
 set -u
 mpm=$1
 cases=${2:-${MPM_FUZZ_CASES:-300}}
@@ -36,7 +37,9 @@ junk_keys=(. .. a..b 'body[x].max' 'body[-1].min' 'body[0]' 'body[99].min' body.
 shape_options=(--dim --kind --at --gamma --cell-size --particle-size --tol --bogus)
 shape_values=(1 2 2x 3 linear ugimp lme 0.5 0.5, ,0.5 0.5,0.5 0.25,0.5,0.75 nan inf -inf 1e300 -1 0 1e-9 0.9 3 20 '' x)
 
-pick() { local -n list=$1; echo "${list[RANDOM % ${#list[@]}]}"; }
+# Sets $picked to a random entry of the array named $1. Never called in $(...): a subshell reseeds
+# RANDOM, and the cases would no longer follow from the seed.
+pick() { local -n list=$1; picked=${list[RANDOM % ${#list[@]}]}; }
 
 # The dotted keys of a scene with their values, `section.key<TAB>value` and `array[k].key<TAB>value`.
 keys_of() {
@@ -48,9 +51,8 @@ keys_of() {
 }
 
 # A plausible change of a scene's value: every number in it scaled by one factor (x2, x0.5, x10, ...).
-scale_numbers() {
-  local factors=(2 0.5 10 0.1 -1 3 1.5 100)
-  awk -v f="$(pick factors)" '{
+scale_numbers() {  # scale_numbers VALUE FACTOR
+  awk -v f="$2" '{
     out = ""; rest = $0
     while (match(rest, /-?[0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?/)) {
       out = out substr(rest, 1, RSTART - 1) sprintf("%.6g", substr(rest, RSTART, RLENGTH) * f)
@@ -59,13 +61,20 @@ scale_numbers() {
     print out rest }' <<<"$1"
 }
 
-# One --set: a key of the scene with a hostile value, or with its own value scaled (always, given "scaled").
+# Sets $override to one --set: a key of the scene with a hostile value, or with its own value
+# scaled (always, given "scaled").
+factors=(2 0.5 10 0.1 -1 3 1.5 100)
 some_override() {
-  local entry key value
-  entry=$(pick entries)
-  key=${entry%%$'\t'*} value=${entry#*$'\t'}
-  if [[ ${1:-} == scaled || $((RANDOM % 2)) -eq 0 ]] && [[ $value =~ [0-9] ]]; then echo "$key=$(scale_numbers "$value")"
-  else echo "$key=$(pick values)"; fi
+  local key value
+  pick entries
+  key=${picked%%$'\t'*} value=${picked#*$'\t'}
+  if [[ ${1:-} == scaled || $((RANDOM % 2)) -eq 0 ]] && [[ $value =~ [0-9] ]]; then
+    pick factors
+    override="$key=$(scale_numbers "$value" "$picked")"
+  else
+    pick values
+    override="$key=$picked"
+  fi
 }
 
 # Applies one random mutation to the file $1 in place.
@@ -78,8 +87,8 @@ mutate_file() {
     0) sed -i "${n}d" "$file" ;;
     1) line=$(sed -n "${n}p" "$file")
        if [[ $line == *=* ]]; then
-         local value; value=$(pick values)
-         awk -v n="$n" -v v="$value" 'NR == n { sub(/=.*/, "= " v) } { print }' "$file" >"$file.new" && mv "$file.new" "$file"
+         pick values
+         awk -v n="$n" -v v="$picked" 'NR == n { sub(/=.*/, "= " v) } { print }' "$file" >"$file.new" && mv "$file.new" "$file"
        fi ;;
     2) sed -i "${n}p" "$file" ;;
     3) head -c $((RANDOM % ($(wc -c <"$file") + 1))) "$file" >"$file.new" && mv "$file.new" "$file" ;;
@@ -99,7 +108,10 @@ report() {  # report CASE WHAT COMMAND...
   failures=$((failures + 1))
   echo "FAIL case $number: $what"
   printf '  reproduce: %q' "$mpm"; printf ' %q' "$@"; echo
-  [[ -n ${scene_copy:-} ]] && echo "  scene: $(tr '\n' '|' <"$scene_copy" | head -c 600)"
+  if [[ -n ${scene_copy:-} ]]; then
+    echo "  scene: $(tr '\n' '|' <"$scene_copy" | head -c 600)"
+    [[ -n ${MPM_FUZZ_KEEP:-} ]] && mkdir -p "$MPM_FUZZ_KEEP" && cp "$scene_copy" "$MPM_FUZZ_KEEP/"  # the whole scene, to reproduce
+  fi
   echo "  stderr: $(head -c 400 "$work/err")"
 }
 
@@ -109,9 +121,12 @@ for ((number = 0; number < cases; ++number)); do
   scene_copy=""
   if ((RANDOM % 10 == 0)); then  # `mpm shape`
     arguments=(shape)
-    for ((k = RANDOM % 6; k >= 0; --k)); do arguments+=("$(pick shape_options)" "$(pick shape_values)"); done
+    for ((k = RANDOM % 6; k >= 0; --k)); do
+      pick shape_options && arguments+=("$picked")
+      pick shape_values && arguments+=("$picked")
+    done
   else
-    scene=$(pick scenes)
+    pick scenes && scene=$picked
     scene_copy="$work/case_$number.toml"
     cp "$scene" "$scene_copy"
     mapfile -t entries < <(keys_of "$scene")
@@ -121,12 +136,12 @@ for ((number = 0; number < cases; ++number)); do
     arguments=(run "$scene_copy" --out "$out" "${budget[@]}" "${short[@]}")
     gentle=$((RANDOM % 3 == 0))  # a third of the cases: only plausible changes, so that many run
     for ((k = RANDOM % 3; k >= 0; --k)); do
-      ((gentle)) && { arguments+=(--set "$(some_override scaled)"); continue; }
+      ((gentle)) && { some_override scaled; arguments+=(--set "$override"); continue; }
       case $((RANDOM % 3)) in
         0) mutate_file "$scene_copy" ;;
-        1) arguments+=(--set "$(some_override)") ;;
-        2) if ((RANDOM % 4 == 0)); then arguments+=(--set "$(pick junk_keys)=$(pick values)")
-           else arguments+=(--set "$(some_override)"); fi ;;
+        1) some_override && arguments+=(--set "$override") ;;
+        2) if ((RANDOM % 4 == 0)); then pick junk_keys && key=$picked && pick values && arguments+=(--set "$key=$picked")
+           else some_override && arguments+=(--set "$override"); fi ;;
       esac
     done
   fi

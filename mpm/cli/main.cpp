@@ -1,11 +1,11 @@
 /// \file
 /// The `mpm` command.
 ///
-///   mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--max-memory BYTES|<n>G] [--max-steps N] [--force]
+///   mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--max-memory SIZE] [--max-steps N] [--force]
 ///       Runs a scene on N cores (default: all; the results equal those on one core to 1e-12); writes observers.csv, energy.csv, snapshots and run.json to DIR
 ///       (default `runs/<scene name>`). Exit codes: 0 done, 2 bad scene or option (nothing written),
 ///       3 the method failed during the run or a file could not be written (one line on stderr;
-///       what was written is kept). A scene whose estimated memory exceeds --max-memory (default
+///       what was written is kept). A scene whose estimated memory exceeds --max-memory SIZE (bytes, or 512M, 4G; default
 ///       half the machine's memory) or whose end_time / dt exceeds --max-steps (default 1e7;
 ///       --force lifts it) is a bad scene.
 ///   mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
