@@ -3,11 +3,13 @@
 /// integrator are chosen here, once per run, as template arguments of Simulation; nothing in
 /// the time step asks again.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "mpm/integrators/forward_euler.hpp"
 #include "mpm/integrators/newmark_predictor_corrector.hpp"
+#include "mpm/io/scene_budget.hpp"
 #include "mpm/io/scene_builder.hpp"
 #include "mpm/shape/lme.hpp"
 #include "mpm/shape/linear.hpp"
@@ -87,11 +89,15 @@ RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Di
   return detail::with_shape(scene, setup, integrator, monitor, partial);
 }
 
-/// Reads a scene file and applies `--set` overrides. \throws SceneError.
-inline io::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+/// Reads a scene file, applies `--set` overrides and, when a budget is given, checks the run's
+/// estimated size against it (io/scene_budget.hpp). \throws SceneError.
+inline io::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,
+                            const std::optional<io::Budget>& budget = std::nullopt) {
   io::SceneFile file = io::parse_scene_file(path);
   for (size_t k = 0; k < overrides.size(); ++k) io::apply_override(file, overrides[k], static_cast<int>(k) + 1);
-  return io::read_scene(file);
+  io::Scene scene = io::read_scene(file);
+  if (budget) io::check_budget(file, scene, *budget);
+  return scene;
 }
 
 }  // namespace mpm

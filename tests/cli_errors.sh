@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The CLI's contract on errors (issue 2, item 9):
+# The CLI's contract on errors (issue 2, item 9; issue 11):
 #   a bad scene or option: one line `error: FILE:LINE: KEY: ...`, exit code 2, no output folder;
 #   a run that fails: one line with step, time, particle, position and cause, exit code 3,
 #   keeping what was written so far.
@@ -39,6 +39,89 @@ expect 3 "^failure: step [0-9]+, t = .* s, particle [0-9]+ at \(.*\): particle l
 grep -q '"status": "failed' "$work/b/run.json" || { echo "FAIL: run.json of a failed run must say so"; failures=$((failures + 1)); }
 # An explicit scheme far beyond its stability limit.
 expect 3 "^failure: step [0-9]+, t = .* s: unstable: energy grew" -- run "$scene" --out "$work/c" --set solver.cfl=3.0
+
+# Issue 11: every input validated before anything runs; each reproducer of the issue, with the key
+# it must name. None may leave an output folder behind.
+bad() {  # bad PATTERN ARGS...: exit 2, the message located and naming its key, no output folder
+  local pattern=$1; shift
+  expect 2 "$pattern" -- "$@"
+  [[ -e "$work/a" ]] && { echo "FAIL: mpm $* made an output folder"; failures=$((failures + 1)); rm -rf "$work/a"; }
+}
+soil=$(dirname "$scene")/soil_block.toml
+bad "^error: --set\(1\):1: \.: not a key" run "$scene" --out "$work/a" --set .=1
+bad "^error: --set\(1\):1: body\[x\]\.max: not a key" run "$scene" --out "$work/a" --set 'body[x].max=[1.0]'
+bad "^error: --set\(1\):1: body\[0\]: not a key" run "$scene" --out "$work/a" --set 'body[0]=1'
+bad "^error: --set\(1\):1: body\.min: 'body' is an array of tables" run "$scene" --out "$work/a" --set 'body.min=[0.0]'
+bad "^error: --set\(1\):1: body\[7\]\.min: no table body\[7\]" run "$scene" --out "$work/a" --set 'body[7].min=[0.0]'
+bad "^error: --set\(1\):1: solver\.cfl: give one value only" run "$scene" --out "$work/a" --set 'solver.cfl=0.5
+x=1'
+grep -v '^cells' "$scene" >"$work/no_cells.toml"
+bad "^error: $work/no_cells.toml:[0-9]+: grid\.cells: missing" run "$work/no_cells.toml" --out "$work/a"
+{ printf 'title = "deep"\n'; yes a. | head -n 200000 | tr -d '\n'; echo 'b = 1'; } >"$work/deep.toml"
+bad "^error: $work/deep.toml:2: \(syntax\): dotted keys nest deeper than 64 levels" run "$work/deep.toml" --out "$work/a"
+{ printf 'x = '; yes '[' | head -n 100000 | tr -d '\n'; echo; } >"$work/brackets.toml"
+bad "^error: $work/brackets.toml:1: \(syntax\): brackets nest deeper" run "$work/brackets.toml" --out "$work/a"
+bad "^error: --set\(1\):1: a\.a\.a.*: not a key" run "$scene" --out "$work/a" --set "$(yes a. | head -n 50000 | tr -d '\n')b=1"
+bad "^error: --set\(1\):1: grid\.cells: the scene needs 1e\+08 particles" run "$scene" --out "$work/a" --set 'grid.cells=[100000000]' --max-memory 8G
+bad "^error: --set\(1\):1: grid\.cells: has 2 entries" run "$scene" --out "$work/a" --set 'grid.cells=[1000000,1000000]'
+bad "^error: --set\(1\):1: grid\.cells: the scene needs 4e\+12 particles" run "$soil" --out "$work/a" --set 'grid.cells=[1000000,1000000]'
+bad "^error: --set\(1\):1: grid\.margin_max: entries must be whole numbers in \[0, 100000000\], got 2\.14748e\+09" \
+  run "$scene" --out "$work/a" --set 'grid.margin_max=[2147483647]'
+bad "^error: --set\(1\):1: grid\.margin_max: the scene needs .* the limit is 1 GiB" run "$scene" --out "$work/a" --set 'grid.margin_max=[90000000]' --max-memory 1G
+bad "^error: --set\(1\):1: body\[0\]\.particles_per_cell: entries must be whole numbers in \[1, 100000000\]" \
+  run "$scene" --out "$work/a" --set 'body[0].particles_per_cell=[1000000000]'
+bad "^error: --set\(1\):1: body\[0\]\.particles_per_cell: the scene needs 4e\+09 particles" run "$scene" --out "$work/a" --set 'body[0].particles_per_cell=[100000000]'
+bad "^error: --set\(1\):1: grid\.margin_min: entries must be whole numbers" run "$scene" --out "$work/a" --set 'grid.margin_min=[2147483000]'
+bad "^error: --set\(1\):1: dimension: must be an integer in \[1, 2\], got 4294967297" run "$scene" --out "$work/a" --set dimension=4294967297
+bad "^error: --set\(1\):1: output\.every: must be an integer in \[1, 2147483647\], got 4294967297" run "$scene" --out "$work/a" --set output.every=4294967297
+bad "^error: --set\(1\):1: solver\.end_time: must be a finite number, got inf" run "$scene" --out "$work/a" --set solver.end_time=inf
+bad "^error: --set\(1\):1: solver\.cfl: must be a finite number, got inf" run "$soil" --out "$work/a" --set solver.cfl=inf
+bad "^error: --set\(1\):1: solver\.cfl: must be in \(0, 10\]" run "$soil" --out "$work/a" --set solver.cfl=1e6
+bad "^error: --set\(1\):1: output\.snapshots: must hold finite numbers only, got nan" run "$scene" --out "$work/a" --set 'output.snapshots=[nan]'
+bad "^error: --set\(1\):1: observer\[0\]\.position: must hold finite numbers only, got nan" run "$scene" --out "$work/a" --set 'observer[0].position=[nan]'
+bad "^error: --set\(1\):1: solver\.energy_growth_limit: must be a finite number, got nan" run "$scene" --out "$work/a" --set solver.energy_growth_limit=nan
+bad "^error: --set\(1\):1: grid\.cells: entries must be whole numbers in \[1, 100000000\], got 3e\+09" run "$scene" --out "$work/a" --set 'grid.cells=[3e9]'
+bad "^error: --set\(1\):1: grid\.length: must hold finite numbers only, got inf" run "$scene" --out "$work/a" --set 'grid.length=[inf]'
+bad "^error: --set\(2\):1: solver\.lme_tol: too large for lme_gamma = 3" run "$scene" --out "$work/a" --set 'solver.shape="lme"' --set solver.lme_tol=0.5
+bad "^error: --set\(2\):1: solver\.lme_gamma: too large for lme_tol" run "$scene" --out "$work/a" --set 'solver.shape="lme"' --set solver.lme_gamma=30
+bad "^error: --set\(1\):1: solver\.lme_gamma: the scene needs .* stencil nodes per particle" run "$soil" --out "$work/a" --set solver.lme_gamma=1e-6
+bad "^error: --set\(1\):1: solver\.foo: unknown key" run "$scene" --out "$work/a" --set solver.foo.bar=1
+bad "^error: --set\(1\):1: newtable: unknown key" run "$scene" --out "$work/a" --set newtable.x=1
+bad "^error: --set\(1\):1: title: must be one line of printable text" run "$scene" --out "$work/a" --set 'title="two\nlines"'
+bad "^error: --set\(1\):1: observer\[0\]\.position: lies outside the grid" run "$scene" --out "$work/a" --set 'observer[0].position=[5.0]'
+bad "^error: .*dyka_bar.toml:[0-9]+: solver\.end_time: end_time / dt = .* more than the limit of 100;.*--force" run "$scene" --out "$work/a" --max-steps 100
+bad "^error: .*dyka_bar.toml:[0-9]+: grid\.cells: the scene needs 40 particles.*the limit is 10 KiB \(--max-memory\)" run "$scene" --out "$work/a" --max-memory 10K
+bad "^error: --max-memory: 'lots' is not a size" run "$scene" --out "$work/a" --max-memory lots
+bad "^error: --max-steps: 'nan' is not a number" run "$scene" --out "$work/a" --max-steps nan
+bad "^error: --out: empty" run "$scene" --out ""
+bad "^error: $work:0: \(file\): is a directory" run "$work" --out "$work/a"
+bad "^error: --at: coordinates must lie within" shape --dim 1 --kind linear --at 1e300
+bad "^error: --at: 'nan' is not" shape --dim 1 --kind linear --at nan
+bad "^error: --dim: must be 1 or 2, got '2x'" shape --dim 2x --kind linear --at 0.5,0.5
+bad "^error: --at: '0.5,' is not" shape --dim 1 --kind linear --at 0.5,
+# --force lifts the step limit, and the run is whole
+"$mpm" run "$scene" --out "$work/forced" --max-steps 100 --force >"$work/out" 2>&1 &&
+  grep -q '"status": "done"' "$work/forced/run.json" || { echo "FAIL: --force must run the scene"; failures=$((failures + 1)); }
+
+# Output that cannot be written: exit 3 naming the file, never "wrote".
+cannot_write() {  # cannot_write FILE-PATTERN ARGS...
+  local pattern=$1; shift
+  expect 3 "^error: $pattern: cannot write" -- "$@"
+  grep -q wrote "$work/out" && { echo "FAIL: mpm $* said wrote"; failures=$((failures + 1)); }
+}
+touch "$work/file"
+cannot_write "$work/file/x" run "$scene" --out "$work/file/x"
+if [[ -d /proc/self ]]; then cannot_write "/proc/self/observers.csv" run "$scene" --out /proc/self; fi
+if [[ $(id -u) -ne 0 ]]; then  # root writes through permissions
+  mkdir "$work/readonly" && chmod 555 "$work/readonly"
+  cannot_write "$work/readonly/observers.csv" run "$scene" --out "$work/readonly"
+fi
+if [[ -w /dev/full ]]; then  # a full disk, one file at a time
+  for file in observers.csv energy.csv snapshot_0001.csv snapshot_0002.vtk run.json; do
+    mkdir -p "$work/full_$file" && ln -s /dev/full "$work/full_$file/$file"
+    cannot_write "$work/full_$file/$file" run "$scene" --out "$work/full_$file"
+  done
+fi
 
 echo "cli_errors: $failures failed"
 [[ $failures -eq 0 ]]

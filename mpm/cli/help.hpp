@@ -62,9 +62,9 @@ inline const char* exit_codes =
 inline std::string scene_keys_help() {
   std::ostringstream out;
   out << "Scene keys (TOML; body[].min is `min` of every [[body]]; \"per axis\": the default on every axis;\n"
-         "`required`: no default):\n";
+         "`required`: no default; `none`: optional, absent unless given):\n";
   auto default_text = [](const io::SceneKey& key) {
-    if (!key.fallback) return std::string("required");
+    if (!key.fallback) return std::string(key.optional ? "none" : "required");
     return std::string(key.fallback) + (key.per_axis ? " per axis" : "");
   };
   size_t key_width = 0, default_width = 0, unit_width = 0;
@@ -108,7 +108,7 @@ TEST_CASE("mpm help: every scene key with its default and unit, and the exit cod
     const auto line_start = help.find("\n  " + std::string(key.key) + " ");
     REQUIRE(line_start != std::string::npos);
     const std::string line = help.substr(line_start + 1, help.find('\n', line_start + 1) - line_start - 1);
-    CHECK(line.find(key.fallback ? key.fallback : "required") != std::string::npos);
+    CHECK(line.find(key.fallback ? key.fallback : key.optional ? "none" : "required") != std::string::npos);
     CHECK(line.find(std::string("  ") + key.unit + "  ") != std::string::npos);
   }
   for (const std::string command : {"run", "shape", "plot", ""})

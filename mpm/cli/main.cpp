@@ -1,10 +1,13 @@
 /// \file
 /// The `mpm` command.
 ///
-///   mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N]
+///   mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--max-memory SIZE] [--max-steps N] [--force]
 ///       Runs a scene on N cores (default: all; the results equal those on one core to 1e-12); writes observers.csv, energy.csv, snapshots and run.json to DIR
 ///       (default `runs/<scene name>`). Exit codes: 0 done, 2 bad scene or option (nothing written),
-///       3 the method failed during the run (one line on stderr; what was written is kept).
+///       3 the method failed during the run or a file could not be written (one line on stderr;
+///       what was written is kept). A scene whose estimated memory exceeds --max-memory SIZE (bytes, or 512M, 4G; default
+///       half the machine's memory) or whose end_time / dt exceeds --max-steps (default 1e7;
+///       --force lifts it) is a bad scene.
 ///   mpm run SCENE.toml --print-scene [--set KEY=VALUE]...
 ///       Prints the resolved scene (every key, defaults filled in) and exits 0 without running.
 ///   mpm plot RUN_DIR
@@ -20,9 +23,11 @@
 ///   $ build/bin/mpm run scenes/dyka_bar.toml --set grid.cells=[160]
 ///   Dyka bar: 2428 steps to t = 0.0002 s, 160 particles, 0.0219 s wall, 1.77e+07 particle-steps/s
 ///   wrote runs/dyka_bar
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -39,6 +44,7 @@ namespace {
 
 const char* usage =
     "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--print-scene]\n"
+    "                [--max-memory BYTES|<n>G] [--max-steps N] [--force]\n"
     "       mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
     "                 [--particle-size S] [--tol T]\n"
     "       mpm plot RUN_DIR\n"
@@ -51,20 +57,27 @@ int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) {
-    std::cerr << "error: --out: cannot create " << folder << ": " << error.message() << "\n";
-    return 2;
+    std::cerr << mpm::OutputFailure(folder, error.message()).message() << "\n";
+    return 3;
   }
   mpm::RunSummary summary;
   try {
-    mpm::io::RunWriter<Dim> writer(folder, scene, setup.observed);
-    mpm::io::ExactWriter<Dim> exact_then_writer(folder, scene, setup.particles, setup.observed, writer);
-    summary = mpm::run_setup<Dim>(scene, setup, exact_then_writer, &summary);
-  } catch (const mpm::SimulationFailure& failure) {
-    mpm::io::write_run_json(folder + "/run.json", scene, summary, std::string("failed: ") + failure.what(), setup.particles.size());
+    try {
+      mpm::io::RunWriter<Dim> writer(folder, scene, setup.observed);
+      mpm::io::ExactWriter<Dim> exact_then_writer(folder, scene, setup.particles, setup.observed, writer);
+      summary = mpm::run_setup<Dim>(scene, setup, exact_then_writer, &summary);
+      exact_then_writer.finish();
+      writer.finish();
+    } catch (const mpm::SimulationFailure& failure) {
+      std::cerr << failure.message() << "\n";
+      mpm::io::write_run_json(folder + "/run.json", scene, summary, std::string("failed: ") + failure.what(), setup.particles.size());
+      return 3;
+    }
+    mpm::io::write_run_json(folder + "/run.json", scene, summary, "done", setup.particles.size());
+  } catch (const mpm::OutputFailure& failure) {
     std::cerr << failure.message() << "\n";
     return 3;
   }
-  mpm::io::write_run_json(folder + "/run.json", scene, summary, "done", setup.particles.size());
   std::printf("%s: %ld steps to t = %g s, %d particles, %.3g s wall, %.3g particle-steps/s\nwrote %s\n", scene.title.c_str(),
               summary.steps, summary.final_time, setup.particles.size(), summary.wall_seconds,
               summary.particle_steps_per_second, folder.c_str());
@@ -73,17 +86,43 @@ int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
 
 int run_command(const std::vector<std::string>& arguments) {
   std::string scene_path, folder;
+  bool folder_given = false;
   std::vector<std::string> overrides;
   bool print_scene = false;
+  mpm::io::Budget budget;
   int threads = 0;
   for (size_t k = 0; k < arguments.size(); ++k) {
     const std::string& argument = arguments[k];
-    if ((argument == "--out" || argument == "--set" || argument == "--threads") && k + 1 >= arguments.size()) {
+    if ((argument == "--out" || argument == "--set" || argument == "--threads" || argument == "--max-memory" ||
+         argument == "--max-steps") &&
+        k + 1 >= arguments.size()) {
       std::cerr << "error: " << argument << ": needs a value\n" << usage;
       return 2;
     }
     if (argument == "--out") {
       folder = arguments[++k];
+      folder_given = true;
+    } else if (argument == "--max-memory") {
+      const auto bytes = mpm::io::parse_byte_size(arguments[++k]);
+      if (!bytes) {
+        std::cerr << "error: --max-memory: '" << arguments[k] << "' is not a size; give bytes or <n>K, <n>M, <n>G, <n>T\n";
+        return 2;
+      }
+      budget.max_bytes = *bytes;
+    } else if (argument == "--max-steps") {
+      const std::string& text = arguments[++k];
+      std::size_t end = 0;
+      try {
+        budget.max_steps = std::stod(text, &end);
+      } catch (const std::exception&) {
+        end = 0;
+      }
+      if (end != text.size() || !(budget.max_steps >= 1.0) || !std::isfinite(budget.max_steps)) {
+        std::cerr << "error: --max-steps: '" << text << "' is not a number >= 1\n";
+        return 2;
+      }
+    } else if (argument == "--force") {
+      budget.force = true;
     } else if (argument == "--threads") {
       const std::string value = arguments[++k];
       if (value.empty() || value.size() > 4 || value.find_first_not_of("0123456789") != std::string::npos ||
@@ -109,9 +148,13 @@ int run_command(const std::vector<std::string>& arguments) {
     std::cerr << "error: run: no scene file given\n" << usage;
     return 2;
   }
+  if (folder_given && folder.empty()) {
+    std::cerr << "error: --out: empty; give a folder, or leave --out out for runs/<scene name>\n";
+    return 2;
+  }
   if (folder.empty()) folder = "runs/" + std::filesystem::path(scene_path).stem().string();
   try {
-    const mpm::io::Scene scene = mpm::load_scene(scene_path, overrides);
+    const mpm::io::Scene scene = mpm::load_scene(scene_path, overrides, budget);
     for (const auto& warning : mpm::io::scene_warnings(scene_path, overrides, scene)) std::cerr << warning << "\n";
     if (print_scene) {
       mpm::io::print_resolved_scene(scene, std::cout);
@@ -137,9 +180,17 @@ int main(int argc, char** argv) {
     return 0;
   }
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
-  if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);
-  if (arguments[0] == "run") return run_command(rest);
-  if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
+  try {  // validation refuses bad input first; this only keeps a defect from ending in a signal
+    if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);
+    if (arguments[0] == "run") return run_command(rest);
+    if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "failure: out of memory (the scene's estimate was below --max-memory; please report it)\n";
+    return 3;
+  } catch (const std::exception& defect) {
+    std::cerr << "failure: internal error: " << defect.what() << " (please report it)\n";
+    return 3;
+  }
   std::cerr << "error: " << arguments[0] << ": unknown command\n" << usage;
   return 2;
 }

@@ -101,27 +101,48 @@ inline int shape_command(const std::vector<std::string>& arguments, std::ostream
     err << "error: " << option << ": " << what << "\n";
     return 2;
   };
+  // A number is the whole of its text and finite: "2x", "0.5," and "nan" are not numbers.
+  auto read_number = [](const std::string& text, double& number) {
+    std::size_t end = 0;
+    try {
+      number = std::stod(text, &end);
+    } catch (const std::exception&) {
+      return false;
+    }
+    return end == text.size() && std::isfinite(number);
+  };
   for (size_t k = 0; k < arguments.size(); ++k) {
     const std::string& option = arguments[k];
     if (k + 1 >= arguments.size()) return fail(option, "needs a value");
     const std::string value = arguments[++k];
-    try {
-      if (option == "--dim") request.dimension = std::stoi(value);
-      else if (option == "--kind") request.kind = value;
-      else if (option == "--gamma") request.gamma = std::stod(value);
-      else if (option == "--cell-size") request.cell_size = std::stod(value);
-      else if (option == "--particle-size") request.particle_size = std::stod(value);
-      else if (option == "--tol") request.tolerance = std::stod(value);
-      else if (option == "--at") {
-        std::vector<double> point;
-        std::stringstream stream(value);
-        for (std::string part; std::getline(stream, part, ',');) point.push_back(std::stod(part));
-        request.points.push_back(point);
-      } else {
-        return fail(option, "unknown option; allowed: --dim --kind --gamma --cell-size --particle-size --tol --at");
+    const auto not_a_number = "'" + value + "' is not a finite number";
+    if (option == "--dim") {
+      if (value != "1" && value != "2") return fail(option, "must be 1 or 2, got '" + value + "'");
+      request.dimension = value == "1" ? 1 : 2;
+    } else if (option == "--kind") {
+      request.kind = value;
+    } else if (option == "--gamma") {
+      if (!read_number(value, request.gamma)) return fail(option, not_a_number);
+    } else if (option == "--cell-size") {
+      if (!read_number(value, request.cell_size)) return fail(option, not_a_number);
+    } else if (option == "--particle-size") {
+      if (!read_number(value, request.particle_size)) return fail(option, not_a_number);
+    } else if (option == "--tol") {
+      if (!read_number(value, request.tolerance)) return fail(option, not_a_number);
+    } else if (option == "--at") {
+      std::vector<double> point;
+      for (std::size_t start = 0;;) {  // every comma separates two numbers: "0.5," is refused
+        const std::size_t comma = value.find(',', start);
+        double coordinate = 0.0;
+        if (!read_number(value.substr(start, comma - start), coordinate))
+          return fail(option, "'" + value + "' is not X or X,Y of finite numbers");
+        point.push_back(coordinate);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
       }
-    } catch (const std::exception&) {
-      return fail(option, "'" + value + "' is not a number");
+      request.points.push_back(point);
+    } else {
+      return fail(option, "unknown option; allowed: --dim --kind --gamma --cell-size --particle-size --tol --at");
     }
   }
   if (request.dimension != 1 && request.dimension != 2) return fail("--dim", "must be 1 or 2");
@@ -137,6 +158,20 @@ inline int shape_command(const std::vector<std::string>& arguments, std::ostream
   if (request.points.empty()) return fail("--at", "give at least one point");
   for (const auto& point : request.points)
     if (static_cast<int>(point.size()) != request.dimension) return fail("--at", "each point needs --dim coordinates, comma-separated");
+  // The grid around the points must be indexable: coordinates within 10^6 cells of 0, supports
+  // within 100 cells, and at most 10^8 nodes in all.
+  const double reach = std::sqrt(-std::log(request.tolerance) / request.gamma) + 3.0;  // cells, as evaluate_request
+  if (request.kind == "lme" && reach > 103.0) return fail("--gamma", "too small for --tol: the support would reach beyond 100 cells");
+  double nodes = 1.0;
+  for (int axis = 0; axis < request.dimension; ++axis) {
+    double lower = 0.0, upper = 0.0;
+    for (const auto& point : request.points) {
+      if (std::abs(point[axis]) > 1e6 * request.cell_size) return fail("--at", "coordinates must lie within 10^6 cell sizes of 0");
+      lower = std::min(lower, point[axis]), upper = std::max(upper, point[axis]);
+    }
+    nodes *= (upper - lower) / request.cell_size + 2.0 * reach + 3.0;
+  }
+  if (nodes > 1e8) return fail("--at", "the points lie too far apart for one grid of at most 10^8 nodes");
   try {
     request.dimension == 1 ? evaluate_request<1>(request, out) : evaluate_request<2>(request, out);
   } catch (const ShapeFailure& failure) {
@@ -156,6 +191,13 @@ TEST_CASE("mpm shape: the linear hat in 1D and Q4 in 2D by hand, and bad options
   CHECK(shape_command({"--dim", "3", "--kind", "linear", "--at", "0"}, out, err) == 2);
   CHECK(shape_command({"--dim", "1", "--kind", "lme", "--gamma", "20", "--at", "0"}, out, err) == 2);
   CHECK(shape_command({"--dim", "2", "--kind", "linear", "--at", "0.1"}, out, err) == 2);
+  // not numbers, or not finite, or out of reach: refused with exit 2 (issue 11)
+  CHECK(shape_command({"--dim", "2x", "--kind", "linear", "--at", "0.1,0.2"}, out, err) == 2);
+  CHECK(shape_command({"--dim", "1", "--kind", "linear", "--at", "0.5,"}, out, err) == 2);
+  CHECK(shape_command({"--dim", "1", "--kind", "linear", "--at", "nan"}, out, err) == 2);
+  CHECK(shape_command({"--dim", "1", "--kind", "linear", "--at", "1e300"}, out, err) == 2);
+  CHECK(shape_command({"--dim", "1", "--kind", "lme", "--gamma", "1e-9", "--at", "0"}, out, err) == 2);
+  CHECK(shape_command({"--dim", "1", "--kind", "linear", "--cell-size", "inf", "--at", "0"}, out, err) == 2);
 }
 
 }  // namespace mpm::cli

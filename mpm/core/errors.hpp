@@ -1,8 +1,9 @@
 /// \file
-/// The two ways a run can fail, and how each is told to the user.
+/// The three ways a run can fail, and how each is told to the user.
 ///
 /// - SceneError: the input is wrong. Raised before anything runs; the CLI prints
 ///   `error: FILE:LINE: KEY: what is wrong and what is allowed` and exits with code 2.
+/// - OutputFailure: a file of the output cannot be written; exit code 3, the file named.
 /// - SimulationFailure: the method failed during the run (NaN, a particle leaving the grid,
 ///   an LME Newton iteration that does not converge, unbounded energy growth). The CLI prints
 ///   one line with step, time, particle, position and cause, and exits with code 3.
@@ -25,6 +26,15 @@ struct SceneError : std::runtime_error {
     out << "error: " << file << ":" << line << ": " << key << ": " << what();
     return out.str();
   }
+};
+
+/// A file of the run's output could not be written (no permission, disk full). The CLI prints
+/// `error: FILE: cannot write: REASON` and exits with code 3; it never says "wrote".
+struct OutputFailure : std::runtime_error {
+  OutputFailure(std::string path_, const std::string& reason)
+      : std::runtime_error(reason), path(std::move(path_)) {}
+  std::string path;
+  std::string message() const { return "error: " + path + ": cannot write: " + what(); }
 };
 
 /// Raised by a shape function that cannot give a trustworthy stencil for a particle.

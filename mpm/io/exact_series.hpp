@@ -19,6 +19,7 @@
 
 #include "mpm/exact/bar.hpp"
 #include "mpm/exact/column.hpp"
+#include "mpm/io/run_writer.hpp"
 #include "mpm/io/scene.hpp"
 #include "mpm/simulation.hpp"
 
@@ -60,7 +61,9 @@ class ExactWriter : public Monitor<Dim> {
     else
       column_ = std::make_unique<exact::SoilColumn>(scene.length[Dim - 1], constrained_modulus(scene), scene.density,
                                                     -scene.gravity[Dim - 1], scene.ramp_period);
-    out_.open(folder + "/exact.csv");
+    path_ = folder + "/exact.csv";
+    out_.open(path_);
+    check_written(out_, path_);
     out_ << std::setprecision(12) << "t";
     for (const auto& observer : scene.observers)
       out_ << "," << observer.name << (bar_ ? ".v_x," : ".y,") << observer.name << (bar_ ? ".sigma_xx" : ".sigma_yy");
@@ -80,8 +83,14 @@ class ExactWriter : public Monitor<Dim> {
         }
       }
       out_ << "\n";
+      check_written(out_, path_);
     }
     next_.sample(step, time, particles, balances);
+  }
+
+  /// Closes exact.csv. \throws OutputFailure if it could not be written in full.
+  void finish() {
+    if (out_.is_open()) close_checked(out_, path_);
   }
   void snapshot(int index, double time, const Particles<Dim>& particles) override { next_.snapshot(index, time, particles); }
   void progress(double time, double end_time) override { next_.progress(time, end_time); }
@@ -105,6 +114,7 @@ class ExactWriter : public Monitor<Dim> {
   std::unique_ptr<exact::ElasticBar> bar_;
   std::unique_ptr<exact::SoilColumn> column_;
   std::ofstream out_;
+  std::string path_;
 };
 
 TEST_CASE("exact.csv: the bar's initial data from the particles, merged where the velocity is equal") {

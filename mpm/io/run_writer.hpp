@@ -6,11 +6,14 @@
 ///   snapshot_NNNN.vtk    the same as legacy VTK polydata
 ///   snapshot_NNNN.vtp    the same as VTK XML polydata, listed with its time in
 ///   snapshots.pvd        the collection ParaView opens as a time series (mpm/io/vtk_collection.hpp)
-/// and shows progress on stderr when stderr is a terminal.
+/// and shows progress on stderr when stderr is a terminal. Every stream is checked: a file that
+/// cannot be opened or written (no permission, disk full) raises OutputFailure naming it.
 #pragma once
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -23,6 +26,17 @@
 #include "mpm/simulation.hpp"
 
 namespace mpm::io {
+
+/// \throws OutputFailure if `out` failed (opening, writing or flushing `path`).
+inline void check_written(const std::ostream& out, const std::string& path) {
+  if (!out) throw OutputFailure(path, errno != 0 ? std::strerror(errno) : "the stream failed");
+}
+
+/// Flushes and closes `out`, then checks it: a full disk shows only when the buffer is written.
+inline void close_checked(std::ofstream& out, const std::string& path) {
+  if (out.is_open()) out.close();
+  check_written(out, path);
+}
 
 template <int Dim>
 class RunWriter : public Monitor<Dim> {
@@ -41,6 +55,16 @@ class RunWriter : public Monitor<Dim> {
     }
     observers_ << "\n";
     energy_ << std::setprecision(12) << "t,kinetic,strain,total,momentum_x" << (Dim == 2 ? ",momentum_y" : "") << "\n";
+    for (auto [stream, name] : {std::pair{&observers_, "/observers.csv"}, {&energy_, "/energy.csv"}}) {
+      if (!*stream) errno = 0, stream->clear(), stream->open(folder_ + name);  // again, for the reason in errno
+      check_written(*stream, folder_ + name);
+    }
+  }
+
+  /// Closes the CSV histories. \throws OutputFailure if either could not be written in full.
+  void finish() {
+    close_checked(observers_, folder_ + "/observers.csv");
+    close_checked(energy_, folder_ + "/energy.csv");
   }
 
   void sample(long, double time, const Particles<Dim>& particles, const Balances<Dim>& balances) override {
@@ -55,6 +79,8 @@ class RunWriter : public Monitor<Dim> {
     energy_ << time << "," << balances.kinetic << "," << balances.strain << "," << balances.total();
     for (int axis = 0; axis < Dim; ++axis) energy_ << "," << balances.momentum[axis];
     energy_ << "\n";
+    check_written(observers_, folder_ + "/observers.csv");
+    check_written(energy_, folder_ + "/energy.csv");
   }
 
   void snapshot(int index, double time, const Particles<Dim>& particles) override {
@@ -62,8 +88,10 @@ class RunWriter : public Monitor<Dim> {
     std::snprintf(stem, sizeof stem, "/snapshot_%04d", index);
     write_csv(folder_ + stem + ".csv", particles);
     write_vtk(folder_ + stem + ".vtk", time, particles);
-    write_vtp(folder_ + stem + ".vtp", particles);
-    collection_.add(time, std::string(stem + 1) + ".vtp");
+    if (!write_vtp(folder_ + stem + ".vtp", particles))
+      throw OutputFailure(folder_ + stem + ".vtp", errno != 0 ? std::strerror(errno) : "the stream failed");
+    if (!collection_.add(time, std::string(stem + 1) + ".vtp"))
+      throw OutputFailure(folder_ + "/snapshots.pvd", errno != 0 ? std::strerror(errno) : "the stream failed");
   }
 
   void progress(double time, double end_time) override {
@@ -92,6 +120,7 @@ class RunWriter : public Monitor<Dim> {
       if (Dim == 2) out << "," << particles.stress[p](0, 1) << "," << particles.stress_zz[p];
       out << "," << particles.density[p] << "\n";
     }
+    close_checked(out, path);
   }
 
   void write_vtk(const std::string& path, double time, const Particles<Dim>& particles) const {
@@ -120,6 +149,7 @@ class RunWriter : public Monitor<Dim> {
     for (int p = 0; p < count; ++p) out << particles.density[p] << "\n";
     out << "SCALARS id int 1\nLOOKUP_TABLE default\n";
     for (int p = 0; p < count; ++p) out << particles.id[p] << "\n";
+    close_checked(out, path);
   }
 
   std::string folder_;
@@ -132,6 +162,7 @@ class RunWriter : public Monitor<Dim> {
 };
 
 /// run.json: the resolved scene (every key, defaults filled in), the step statistics, the speed and, for LME, Newton statistics.
+/// \throws OutputFailure if it cannot be written.
 inline void write_run_json(const std::string& path, const Scene& scene, const RunSummary& summary,
                            const std::string& status, int particle_count) {
   std::ofstream out(path);
@@ -156,6 +187,7 @@ inline void write_run_json(const std::string& path, const Scene& scene, const Ru
     out << (phase ? ", " : "") << "\"" << phase_name(phase) << "\": " << summary.phase_seconds[phase];
   out << "}\n"
       << "}\n";
+  close_checked(out, path);
 }
 
 }  // namespace mpm::io

@@ -71,19 +71,9 @@ struct Scene {
 
 namespace detail {
 
-inline std::vector<int> to_integers(SceneReader& reader, const std::string& key, int size,
-                                    std::optional<std::vector<int>> fallback, int smallest) {
-  std::optional<std::vector<double>> fallback_numbers;  // none: the key is required
-  if (fallback) fallback_numbers = std::vector<double>(fallback->begin(), fallback->end());
-  const auto numbers = reader.numbers(key, size, fallback_numbers);
-  std::vector<int> values;
-  for (double number : numbers) {
-    if (number != std::floor(number) || number < smallest)
-      reader.fail(key, "entries must be whole numbers >= " + std::to_string(smallest));
-    values.push_back(static_cast<int>(number));
-  }
-  return values;
-}
+/// The largest count of cells or margin cells on one axis: a bound that keeps every sum and
+/// product of them exact in 64-bit arithmetic; the budget (scene_budget.hpp) bounds the totals.
+inline constexpr int max_cells_per_axis = 100'000'000;
 
 /// Calls `read` with a reader for every table of the array of tables `key` ([[key]] in TOML).
 template <class Read>
@@ -124,8 +114,9 @@ inline Scene read_scene(const SceneFile& file) {
   scene.file = file.path;
   SceneReader root(file, file.table, "");
   scene.title = root.any_text("title", "untitled");
-  scene.dimension = root.integer("dimension", 1);
-  if (scene.dimension != 1 && scene.dimension != 2) root.fail("dimension", "must be 1 or 2");
+  for (unsigned char character : scene.title)  // it is a line of the VTK header and of the progress line
+    if (character < 0x20 || character == 0x7f) root.fail("title", "must be one line of printable text (no newline, tab or control character)");
+  scene.dimension = root.integer("dimension", 1, 1, 2);
   const int dim = scene.dimension;
   const std::vector<std::string> axes = dim == 1 ? std::vector<std::string>{"x"} : std::vector<std::string>{"x", "y"};
 
@@ -133,12 +124,19 @@ inline Scene read_scene(const SceneFile& file) {
     SceneReader grid(file, detail::table_or_empty(file, root, "grid", true), "grid");
     scene.origin = grid.numbers("origin", dim, std::vector<double>(dim, 0.0));
     scene.length = grid.numbers("length", dim);
-    scene.cells = detail::to_integers(grid, "cells", dim, std::nullopt, 1);
-    scene.margin_min = detail::to_integers(grid, "margin_min", dim, std::vector<int>(dim, 0), 0);
-    scene.margin_max = detail::to_integers(grid, "margin_max", dim, std::vector<int>(dim, 0), 0);
     for (int axis = 0; axis < dim; ++axis)
       if (!(scene.length[axis] > 0.0)) grid.fail("length", "entries must be > 0");
+    scene.cells = grid.integers("cells", dim, std::nullopt, 1, detail::max_cells_per_axis);
+    scene.margin_min = grid.integers("margin_min", dim, std::vector<int>(dim, 0), 0, detail::max_cells_per_axis);
+    scene.margin_max = grid.integers("margin_max", dim, std::vector<int>(dim, 0), 0, detail::max_cells_per_axis);
     scene.spacing = scene.length[0] / scene.cells[0];
+    for (int axis = 0; axis < dim; ++axis) {  // the grid's lines must be distinct numbers where it lies
+      const double far = std::max(std::abs(scene.origin[axis]), std::abs(scene.origin[axis] + scene.length[axis])) +
+                         (std::max(scene.margin_min[axis], scene.margin_max[axis]) + 1.0) * scene.spacing;
+      if (!(scene.spacing > 1e-9 * far) || !std::isfinite(far))
+        grid.fail("origin", "too far from 0 for the cell size " + SceneReader::describe(scene.spacing) +
+                                ": the grid must lie within 1e9 cells of the origin of coordinates");
+    }
     for (int axis = 1; axis < dim; ++axis)
       if (std::abs(scene.length[axis] / scene.cells[axis] - scene.spacing) > 1e-9 * scene.spacing)
         grid.fail("cells", "cells must be square: length/cells must be equal on every axis");
@@ -170,7 +168,7 @@ inline Scene read_scene(const SceneFile& file) {
     inside_grid(reader, "max", body.max, true);
     for (int axis = 0; axis < dim; ++axis)
       if (!(body.max[axis] > body.min[axis] + 0.5 * scene.spacing)) reader.fail("max", "must exceed min by at least one cell");
-    body.particles_per_cell = detail::to_integers(reader, "particles_per_cell", dim, std::vector<int>(dim, 1), 1);
+    body.particles_per_cell = reader.integers("particles_per_cell", dim, std::vector<int>(dim, 1), 1, detail::max_cells_per_axis);
     body.velocity = reader.numbers("velocity", dim, std::vector<double>(dim, 0.0));
     body.placement = reader.text("placement", {"uniform", "gauss"}, std::string("uniform"));
     if (body.placement == "gauss")
@@ -209,16 +207,24 @@ inline Scene read_scene(const SceneFile& file) {
     scene.lme_tol = solver.positive("lme_tol", 1e-6);
     if (scene.lme_tol >= 1.0) solver.fail("lme_tol", "must be in (0, 1)");
     scene.lme_newton_tol = solver.positive("lme_newton_tol", 1e-10);
-    scene.lme_max_iterations = solver.integer("lme_max_iterations", 100);
-    if (scene.lme_max_iterations < 1) solver.fail("lme_max_iterations", "must be >= 1");
+    scene.lme_max_iterations = solver.integer("lme_max_iterations", 100, 1, 1000);  // Newton converges in < 10
     // The LME support radius R = h sqrt(-ln(tol)/gamma) must reach the corners of a particle's cell
-    // (its convex hull), R >= h sqrt(dimension): gamma <= -ln(tol)/dimension.
-    if (scene.shape == "lme" && scene.lme_gamma > -std::log(scene.lme_tol) / dim)
-      solver.fail("lme_gamma", "too large for lme_tol: the support must reach the corners of a cell, gamma <= -ln(lme_tol)/dimension = " +
-                                   std::to_string(-std::log(scene.lme_tol) / dim));
+    // (its convex hull), R >= h sqrt(dimension): gamma <= -ln(tol)/dimension. The key blamed is the
+    // one the user changed: lme_tol when it is given and lme_gamma is not overridden, else lme_gamma.
+    if (scene.shape == "lme" && scene.lme_gamma > -std::log(scene.lme_tol) / dim) {
+      const bool blame_tol = solver.has("lme_tol") && !file.overridden.count("solver.lme_gamma");
+      if (blame_tol)
+        solver.fail("lme_tol", "too large for lme_gamma = " + SceneReader::describe(scene.lme_gamma) +
+                                   ": the support must reach the corners of a cell, lme_tol <= exp(-lme_gamma * dimension) = " +
+                                   SceneReader::describe(std::exp(-scene.lme_gamma * dim)));
+      solver.fail("lme_gamma", "too large for lme_tol = " + SceneReader::describe(scene.lme_tol) +
+                                   ": the support must reach the corners of a cell, lme_gamma <= -ln(lme_tol)/dimension = " +
+                                   SceneReader::describe(-std::log(scene.lme_tol) / dim));
+    }
     scene.lme_beta = solver.text("lme_beta", {"grid_spacing", "mean_neighbour_distance"}, std::string("grid_spacing"));
     scene.integrator = solver.text("integrator", {"fe", "npc"}, std::string("fe"));
     scene.control.cfl = solver.positive("cfl", 0.5);
+    if (scene.control.cfl > 10.0) solver.fail("cfl", "must be in (0, 10]: far beyond any explicit scheme's stability limit");
     scene.control.courant = solver.text("courant", {"max", "sum"}, std::string("max")) == "max" ? CourantSpeed::maximum : CourantSpeed::sum;
     scene.control.end_time = solver.positive("end_time");
     scene.newmark_gamma = solver.number("newmark_gamma", 0.5);
@@ -231,6 +237,7 @@ inline Scene read_scene(const SceneFile& file) {
   }
   each_table(file, root, "observer", [&](SceneReader& reader) {
     ObserverSettings observer{reader.any_text("name", ""), reader.numbers("position", dim)};
+    inside_grid(reader, "position", observer.position, false);
     if (observer.name.empty() || observer.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
       reader.fail("name", "required; letters, digits and _ only (it names CSV columns)");
     for (const auto& other : scene.observers)
@@ -239,9 +246,9 @@ inline Scene read_scene(const SceneFile& file) {
   });
   {  // [output]
     SceneReader output(file, detail::table_or_empty(file, root, "output", false), "output");
-    scene.control.sample_every = output.integer("every", 1);
-    if (scene.control.sample_every < 1) output.fail("every", "must be >= 1");
+    scene.control.sample_every = output.integer("every", 1, 1);
     scene.control.snapshot_times = output.numbers("snapshots", -1, std::vector<double>{});
+    if (scene.control.snapshot_times.size() > 10'000) output.fail("snapshots", "at most 10000 times");
     for (double time : scene.control.snapshot_times)
       if (time < 0.0 || time > scene.control.end_time) output.fail("snapshots", "times must lie in [0, solver.end_time]");
     output.reject_unknown_keys();

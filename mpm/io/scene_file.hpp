@@ -7,7 +7,14 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <iomanip>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -49,23 +56,100 @@ struct SceneFile {
   std::map<std::string, std::string> overridden;
 };
 
-/// Parses the scene file. \throws SceneError on a syntax error, with its line.
+/// The largest scene file read (scenes are a few kB; the bound keeps a hostile file from
+/// exhausting memory inside the TOML parser).
+inline constexpr std::size_t max_scene_bytes = 1 << 20;
+/// The deepest nesting accepted: dotted-key levels (`a.b.c`) and open brackets (`[[`, `{`).
+/// The TOML parser recurses on both, so a key of 200 000 levels would overflow the stack.
+inline constexpr int max_scene_nesting = 64;
+
+/// Refuses TOML text that nests deeper than max_scene_nesting, before the parser sees it. A
+/// lexical scan: strings and comments are skipped, dots are counted between delimiters
+/// (`=`, `,`, brackets, end of line), open brackets are counted until closed.
+inline void check_nesting(std::string_view text, const std::string& name) {
+  int line = 1, depth = 0, dots = 0;
+  auto refuse = [&](const std::string& what) {
+    throw SceneError(name, line, "(syntax)", what + " nest deeper than " + std::to_string(max_scene_nesting) + " levels");
+  };
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    const char character = text[k];
+    if (character == '\n') {
+      ++line, dots = 0;
+    } else if (character == '#') {
+      while (k + 1 < text.size() && text[k + 1] != '\n') ++k;
+    } else if (character == '"' || character == '\'') {
+      const bool multiline = text.substr(k, 3) == std::string(3, character);
+      const std::string close = multiline ? std::string(3, character) : std::string(1, character);
+      for (k += close.size(); k < text.size(); ++k) {
+        if (text[k] == '\n') {
+          ++line;
+          if (!multiline) break;
+        }
+        if (character == '"' && text[k] == '\\') { ++k; continue; }
+        if (text.substr(k, close.size()) == close) { k += close.size() - 1; break; }
+      }
+    } else if (character == '[' || character == '{') {
+      if (++depth > max_scene_nesting) refuse("brackets");
+      dots = 0;
+    } else if (character == ']' || character == '}') {
+      depth = depth > 0 ? depth - 1 : 0, dots = 0;
+    } else if (character == '=' || character == ',') {
+      dots = 0;
+    } else if (character == '.' && ++dots > max_scene_nesting) {
+      refuse("dotted keys");
+    }
+  }
+}
+
+/// Parses the scene file. \throws SceneError if it cannot be read (missing, a directory, larger
+/// than max_scene_bytes) or on a syntax error, with its line.
 inline SceneFile parse_scene_file(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw SceneError(path, 0, "(file)", "is a directory; give a scene file (.toml)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path, 0, "(file)", "cannot be read: no such file, or no permission");
+  std::string text(max_scene_bytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) throw SceneError(path, 0, "(file)", "cannot be read");
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > max_scene_bytes)
+    throw SceneError(path, 0, "(file)", "is larger than " + std::to_string(max_scene_bytes) + " bytes; a scene is a few kB");
+  check_nesting(text, path);
   try {
-    return SceneFile{path, toml::parse_file(path), {}};
+    return SceneFile{path, toml::parse(std::string_view(text), std::string_view(path)), {}};
   } catch (const toml::parse_error& error) {
-    if (error.source().begin.line == 0 && std::string(error.description()).find("open") != std::string::npos)
-      throw SceneError(path, 0, "(file)", "cannot be read: " + std::string(error.description()));
     throw SceneError(path, static_cast<int>(error.source().begin.line), "(syntax)", std::string(error.description()));
   }
 }
 
 /// Parses a scene given as text (tests, tools). \throws SceneError on a syntax error.
 inline SceneFile parse_scene_text(const std::string& text, const std::string& name) {
+  check_nesting(text, name);
   try {
     return SceneFile{name, toml::parse(std::string_view(text), std::string_view(name)), {}};
   } catch (const toml::parse_error& error) {
     throw SceneError(name, static_cast<int>(error.source().begin.line), "(syntax)", std::string(error.description()));
+  }
+}
+
+/// True if `key` is a path of bare TOML keys joined by dots, each optionally followed by one
+/// index `[n]` (n of at most 6 digits), the last without an index: `solver.cfl`, `body[0].max`.
+inline bool is_key_path(const std::string& key) {
+  std::size_t k = 0, segments = 0;
+  auto bare = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
+  while (true) {
+    const std::size_t start = k;
+    while (k < key.size() && bare(key[k])) ++k;
+    if (k == start || ++segments > static_cast<std::size_t>(max_scene_nesting)) return false;
+    if (k == key.size()) return true;
+    if (key[k] == '[') {
+      const std::size_t digits = ++k;
+      while (k < key.size() && std::isdigit(static_cast<unsigned char>(key[k]))) ++k;
+      if (k == digits || k - digits > 6 || k >= key.size() || key[k] != ']') return false;
+      if (++k == key.size()) return false;  // the last segment names a key, not a table of an array
+    }
+    if (key[k] != '.') return false;
+    ++k;
   }
 }
 
@@ -75,29 +159,45 @@ inline void apply_override(SceneFile& scene, const std::string& assignment, int 
   const std::string origin = "--set(" + std::to_string(argument_number) + ")";
   const auto equals = assignment.find('=');
   if (equals == std::string::npos || equals == 0)
-    throw SceneError(origin, 1, assignment, "expected KEY=VALUE, e.g. --set solver.cfl=0.2");
+    throw SceneError(origin, 1, assignment.substr(0, 64), "expected KEY=VALUE, e.g. --set solver.cfl=0.2");
   const std::string key = assignment.substr(0, equals);
+  if (!is_key_path(key))
+    throw SceneError(origin, 1, key.substr(0, 64), "not a key: write a dotted path of letters, digits, _ and -, with [n] "
+                                                   "for the n-th [[table]], e.g. solver.cfl or body[0].max (at most " +
+                                                   std::to_string(max_scene_nesting) + " levels)");
+  const std::string value_text = "value = " + assignment.substr(equals + 1);
   toml::table parsed;
   try {
-    parsed = toml::parse(std::string_view("value = " + assignment.substr(equals + 1)), std::string_view(origin));
+    check_nesting(value_text, origin);
+    parsed = toml::parse(std::string_view(value_text), std::string_view(origin));
   } catch (const toml::parse_error& error) {
     throw SceneError(origin, 1, key, "the value is not TOML (" + std::string(error.description()) +
                                          "); write strings in quotes, arrays in brackets");
+  } catch (const SceneError& error) {
+    throw SceneError(origin, 1, key, std::string("the value is not TOML: ") + error.what());
   }
+  if (parsed.size() != 1) throw SceneError(origin, 1, key, "give one value only (no newline followed by other keys)");
   const auto parts = split_key_path(key);
   toml::table* table = &scene.table;
+  std::string path;  // the full path of `table`, normalised like the keys of `overridden`
   for (size_t k = 0; k + 1 < parts.size(); ++k) {
     const std::string& part = parts[k];
-    if (k + 1 < parts.size() && parts[k + 1][0] == '[') {
+    path += (path.empty() ? "" : ".") + part;
+    if (parts[k + 1][0] == '[') {
       toml::array* array = (*table)[part].as_array();
       const int index = std::stoi(parts[k + 1].substr(1));
-      if (!array || index < 0 || index >= static_cast<int>(array->size()) || !(*array)[index].is_table())
+      if (!array || index >= static_cast<int>(array->size()) || !(*array)[index].is_table())
         throw SceneError(origin, 1, key, "no table " + part + "[" + std::to_string(index) + "] in the scene");
       table = (*array)[index].as_table();
-      ++k;
+      path += parts[++k];
       continue;
     }
-    if (!table->contains(part)) table->insert(part, toml::table{});
+    if (!table->contains(part)) {
+      table->insert(part, toml::table{});
+      scene.overridden.emplace(path, origin);  // a table created here is located at this --set
+    }
+    if ((*table)[part].is_array_of_tables())
+      throw SceneError(origin, 1, key, "'" + part + "' is an array of tables; write " + part + "[0]." + parts[k + 1]);
     table = (*table)[part].as_table();
     if (!table) throw SceneError(origin, 1, key, "'" + part + "' is not a table");
   }
@@ -119,6 +219,12 @@ class SceneReader {
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     if (auto override = overridden_->find(full(key)); override != overridden_->end())
       throw SceneError(override->second, 1, full(key), what);
+    // a key inside a table that a --set created is located at that --set
+    for (std::string path = prefix_; !path.empty();) {
+      if (auto created = overridden_->find(path); created != overridden_->end()) throw SceneError(created->second, 1, full(key), what);
+      const auto cut = path.find_last_of(".[");
+      path = cut == std::string::npos ? "" : path.substr(0, cut);
+    }
     const toml::node* node = table_.get(key);
     throw SceneError(file_, node ? line_of(*node) : line_of(table_), full(key), what);
   }
@@ -130,8 +236,10 @@ class SceneReader {
       if (fallback) return *fallback;
       fail(key, "missing; a number is required");
     }
-    if (auto value = node->value<double>(); value && (node->is_floating_point() || node->is_integer())) return *value;
-    fail(key, "must be a number");
+    const auto value = node->value<double>();
+    if (!value || !(node->is_floating_point() || node->is_integer())) fail(key, "must be a number");
+    if (!std::isfinite(*value)) fail(key, "must be a finite number, got " + describe(*value));
+    return *value;
   }
 
   double positive(const std::string& key, std::optional<double> fallback = std::nullopt) {
@@ -140,15 +248,33 @@ class SceneReader {
     return value;
   }
 
-  int integer(const std::string& key, std::optional<int> fallback = std::nullopt) {
+  /// An integer in [smallest, largest]; checked on the file's 64-bit value, before any conversion.
+  int integer(const std::string& key, std::optional<int> fallback = std::nullopt, int smallest = std::numeric_limits<int>::min(),
+              int largest = std::numeric_limits<int>::max()) {
     known_.insert(key);
     const toml::node* node = table_.get(key);
     if (!node) {
       if (fallback) return *fallback;
-      fail(key, "missing; an integer is required");
+      fail(key, "missing; an integer in " + range_text(smallest, largest) + " is required");
     }
-    if (!node->is_integer()) fail(key, "must be an integer");
-    return static_cast<int>(*node->value<int64_t>());
+    if (!node->is_integer()) fail(key, "must be an integer in " + range_text(smallest, largest));
+    const int64_t value = *node->value_exact<int64_t>();
+    if (value < smallest || value > largest)
+      fail(key, "must be an integer in " + range_text(smallest, largest) + ", got " + std::to_string(value));
+    return static_cast<int>(value);
+  }
+
+  /// An array of whole numbers in [smallest, largest] (`[40]` or `[40.0]`); `size` < 0 accepts any length.
+  std::vector<int> integers(const std::string& key, int size, std::optional<std::vector<int>> fallback, int smallest, int largest) {
+    std::optional<std::vector<double>> fallback_numbers;
+    if (fallback) fallback_numbers = std::vector<double>(fallback->begin(), fallback->end());
+    std::vector<int> values;
+    for (double number : numbers(key, size, fallback_numbers)) {
+      if (number != std::floor(number) || number < smallest || number > largest)
+        fail(key, "entries must be whole numbers in " + range_text(smallest, largest) + ", got " + describe(number));
+      values.push_back(static_cast<int>(number));
+    }
+    return values;
   }
 
   std::string text(const std::string& key, const std::vector<std::string>& allowed, std::optional<std::string> fallback = std::nullopt) {
@@ -189,6 +315,7 @@ class SceneReader {
     for (const auto& entry : *array) {
       if (!(entry.is_floating_point() || entry.is_integer())) fail(key, "must hold numbers only");
       values.push_back(*entry.value<double>());
+      if (!std::isfinite(values.back())) fail(key, "must hold finite numbers only, got " + describe(values.back()));
     }
     return values;
   }
@@ -222,6 +349,16 @@ class SceneReader {
   std::string full(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
   const std::string& file() const { return file_; }
   int line() const { return line_of(table_); }
+
+  /// A number as the messages show it ("3e+09", "0.5", "inf", "nan").
+  static std::string describe(double value) {
+    std::ostringstream out;
+    out << std::setprecision(6) << value;
+    return out.str();
+  }
+  static std::string range_text(long long smallest, long long largest) {
+    return "[" + std::to_string(smallest) + ", " + std::to_string(largest) + "]";
+  }
 
  private:
   static std::string count_text(int size) { return size < 0 ? "some" : std::to_string(size); }
@@ -281,6 +418,56 @@ TEST_CASE("Scene file: overrides land in nested tables and arrays of tables; err
   } catch (const SceneError& error) {
     CHECK(error.message() == "error: bad.toml:2: solver.cfl: must be > 0, got -1.000000");
   }
+}
+
+TEST_CASE("Scene file: hostile input is refused with its key: nesting, key paths, non-finite numbers, integer ranges") {
+  auto message_of = [](auto action) -> std::string {
+    try {
+      action();
+    } catch (const SceneError& error) {
+      return error.message();
+    }
+    return "no error";
+  };
+  // 200 000 dotted levels would overflow the TOML parser's stack: refused before it runs
+  std::string deep = "x = 1\n";
+  for (int k = 0; k < 200000; ++k) deep += "a.";
+  deep += "b = 1\n";
+  CHECK(message_of([&] { parse_scene_text(deep, "d.toml"); }) == "error: d.toml:2: (syntax): dotted keys nest deeper than 64 levels");
+  CHECK(message_of([&] { parse_scene_text("x = " + std::string(1000, '['), "d.toml"); }) ==
+        "error: d.toml:1: (syntax): brackets nest deeper than 64 levels");
+  // dots and brackets inside strings and comments do not count; 64 levels are allowed
+  std::string fine = "s = \"" + std::string(100, '.') + "[[[\" # " + std::string(100, '.') + "\n";
+  for (int k = 0; k < 63; ++k) fine += "a.";
+  CHECK(message_of([&] { parse_scene_text(fine + "b = 1\n", "f.toml"); }) == "no error");
+
+  CHECK(is_key_path("solver.cfl"));
+  CHECK(is_key_path("body[0].max"));
+  CHECK(is_key_path("a-b_c.d9"));
+  for (const char* bad : {"", ".", "a..b", ".a", "a.", "body[x].max", "body[0]", "body[].max", "body[-1].max", "body[1234567].max",
+                          "a b", "a[0][1].b", "\"q\".a"})
+    CHECK_MESSAGE(!is_key_path(bad), bad);
+
+  SceneFile scene = parse_scene_text("n = 1\nbig = 4294967297\nv = [1.0, nan]\nw = inf\n[t]\nk = 1\n", "h.toml");
+  SceneReader root(scene, scene.table, "");
+  CHECK(message_of([&] { root.integer("big"); }).rfind("error: h.toml:2: big: must be an integer in [-2147483648, 2147483647], got 4294967297", 0) == 0);
+  CHECK(message_of([&] { root.integer("n", 1, 2, 3); }) == "error: h.toml:1: n: must be an integer in [2, 3], got 1");
+  CHECK(message_of([&] { root.numbers("v", 2); }) == "error: h.toml:3: v: must hold finite numbers only, got nan");
+  CHECK(message_of([&] { root.number("w"); }) == "error: h.toml:4: w: must be a finite number, got inf");
+  CHECK(message_of([&] { root.integers("v", 2, std::nullopt, 0, 10); }) == "error: h.toml:3: v: must hold finite numbers only, got nan");
+  apply_override(scene, "c=[3e9]", 1);
+  CHECK(message_of([&] { root.integers("c", 1, std::nullopt, 1, 100); }) ==
+        "error: --set(1):1: c: entries must be whole numbers in [1, 100], got 3e+09");
+
+  // overrides: keys are checked, and keys inside tables a --set created are located at that --set
+  CHECK(message_of([&] { apply_override(scene, ".=1", 2); }).rfind("error: --set(2):1: .: not a key", 0) == 0);
+  CHECK(message_of([&] { apply_override(scene, "t[x].k=1", 2); }).rfind("error: --set(2):1: t[x].k: not a key", 0) == 0);
+  CHECK(message_of([&] { apply_override(scene, "t.k=1\nz=2", 2); }).rfind("error: --set(2):1: t.k: give one value only", 0) == 0);
+  CHECK(message_of([&] { apply_override(scene, "t.k=" + std::string(100, '['), 2); }).rfind("error: --set(2):1: t.k: the value is not TOML", 0) == 0);
+  apply_override(scene, "made.deeper.key=1", 3);
+  SceneReader made(scene, *scene.table["made"].as_table(), "made");
+  CHECK(message_of([&] { made.number("other"); }) == "error: --set(3):1: made.other: missing; a number is required");
+  CHECK(message_of([&] { made.reject_unknown_keys(); }).rfind("error: --set(3):1: made.deeper: unknown key", 0) == 0);
 }
 
 }  // namespace mpm::io

@@ -21,7 +21,12 @@ struct SceneKey {
   bool per_axis;
   const char* unit;
   const char* meaning;
+  /// with fallback nullptr: the key is optional and has no default (absent unless the scene gives it)
+  bool optional = false;
 };
+
+/// The name that stands for any name in a table of free names ("constants.<name>").
+inline const std::string any_name = "<name>";
 
 /// The scene's keys, in the order a scene file writes them.
 inline const std::vector<SceneKey>& scene_keys() {
@@ -68,6 +73,17 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"solver.npc_position_velocity", "\"corrected\"", false, "-", "corrected | predicted | projected (literal Eq. 33)"},
       {"solver.energy_growth_limit", "10.0", false, "-",
        "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off"},
+      {"constants.<name>", nullptr, false, "-",
+       "a named constant: a number, or a formula of other constants (pi, young_modulus, poisson_ratio and density "
+       "are predefined); usable in every formula",
+       true},
+      {"initial_field.velocity", nullptr, false, "m/s",
+       "initial velocity per axis as formulas of x, X (y, Y) and the constants; [[initial_velocity]] boxes win",
+       true},
+      {"initial_field.stress", nullptr, false, "Pa",
+       "initial stress as formulas: [xx] in 1D, [xx, yy, xy] in 2D", true},
+      {"body_force.acceleration", nullptr, false, "m/s^2",
+       "body force per unit mass per axis as formulas of x, X (y, Y) and t, added to [gravity]", true},
       {"observer[].name", nullptr, false, "-", "column name in observers.csv (letters, digits, _)"},
       {"observer[].position", nullptr, false, "m", "the particle nearest this point at t = 0 is observed"},
       {"output.every", "1", false, "steps", "observers and energy sampled every n steps and at the end"},

@@ -131,6 +131,22 @@ inline toml::table resolved_table(const Scene& scene) {
                                      {"fe_position_velocity", scene.fe_position_velocity},
                                      {"npc_position_velocity", scene.npc_position_velocity},
                                      {"energy_growth_limit", control.energy_growth_limit}});
+  // The optional formula tables (mpm/io/scene_formulas.hpp), only when the scene gives them.
+  const SceneFormulas& formulas = scene.formulas;
+  toml::table constants;
+  for (const auto& [name, value] : formulas.constants)
+    if (name != "young_modulus" && name != "poisson_ratio" && name != "density") constants.insert(name, value);
+  if (!constants.empty()) table.insert("constants", constants);
+  auto texts = [](const FormulaList& list) {
+    toml::array array;
+    for (const auto& component : list.components) array.push_back(component.text());
+    return array;
+  };
+  toml::table initial_field;
+  if (formulas.initial_velocity) initial_field.insert("velocity", texts(*formulas.initial_velocity));
+  if (formulas.initial_stress) initial_field.insert("stress", texts(*formulas.initial_stress));
+  if (!initial_field.empty()) table.insert("initial_field", initial_field);
+  if (formulas.body_force) table.insert("body_force", toml::table{{"acceleration", texts(*formulas.body_force)}});
   table.insert("observer", observers);
   table.insert("output", toml::table{{"every", static_cast<int64_t>(control.sample_every)},
                                      {"snapshots", numbers_array(control.snapshot_times)}});
@@ -149,10 +165,17 @@ inline std::string resolved_json(const Scene& scene) {
 inline void print_resolved_scene(const Scene& scene, std::ostream& out) {
   const toml::table table = resolved_table(scene);
   out << "# " << scene.file << " resolved: every key, defaults filled in (mpm run --print-scene)\n";
-  auto print_key = [&](const SceneKey& key, const toml::table& section) {
-    std::string line = key_name(key.key) + " = " + detail::toml_text(*section.get(key_name(key.key)));
+  auto print_line = [&](const SceneKey& key, const std::string& name, const toml::node& value) {
+    std::string line = name + " = " + detail::toml_text(value);
     if (std::string(key.unit) != "-") line += std::string(line.size() < 40 ? 40 - line.size() : 1, ' ') + "# " + key.unit;
     out << line << "\n";
+  };
+  auto print_key = [&](const SceneKey& key, const toml::table& section) {
+    if (key_name(key.key) == any_name) {  // a table of free names: every entry
+      for (const auto& [name, value] : section) print_line(key, std::string(name.str()), value);
+      return;
+    }
+    if (const toml::node* value = section.get(key_name(key.key))) print_line(key, key_name(key.key), *value);
   };
   std::vector<std::string> sections;  // in order of first appearance
   for (const auto& key : scene_keys()) {
@@ -161,6 +184,7 @@ inline void print_resolved_scene(const Scene& scene, std::ostream& out) {
     else if (std::find(sections.begin(), sections.end(), section) == sections.end()) sections.push_back(section);
   }
   for (const auto& section : sections) {
+    if (!table.contains(section)) continue;  // an optional table the scene does not give
     auto print_section = [&](const toml::table& values) {
       for (const auto& key : scene_keys())
         if (key_section(key.key) == section) print_key(key, values);
@@ -224,6 +248,10 @@ TEST_CASE("Scene keys: the help table lists exactly the keys the parser accepts,
       const std::string name = key.key;
       CAPTURE(name);
       const toml::node* value = node_of(resolved, key);
+      if (key.optional) {  // absent unless given: the minimal scene gives none, and reads without it
+        CHECK(value == nullptr);
+        continue;
+      }
       REQUIRE(value != nullptr);  // every key of the table is in the resolved scene
       if (key.fallback) {
         if (node_of(file, key)) continue;  // `dimension = 2` of the 2D scene; 1D leaves it to its default
@@ -266,7 +294,9 @@ TEST_CASE("Scene keys: the help table lists exactly the keys the parser accepts,
         for (const auto& entry : *array)
           for (const auto& [inner, value] : *entry.as_table()) CHECK(listed.count(std::string(name.str()) + "[]." + std::string(inner.str())));
       } else if (const auto* table = node.as_table()) {
-        for (const auto& [inner, value] : *table) CHECK(listed.count(std::string(name.str()) + "." + std::string(inner.str())));
+        for (const auto& [inner, value] : *table)
+          CHECK((listed.count(std::string(name.str()) + "." + std::string(inner.str())) ||
+                 listed.count(std::string(name.str()) + "." + any_name)));
       } else {
         CHECK(listed.count(std::string(name.str())));
       }
@@ -280,6 +310,7 @@ TEST_CASE("Scene keys: the help table lists exactly the keys the parser accepts,
     }
     for (const auto& [section, names] : allowed_by_table) {
       CAPTURE(section);
+      if (names.count(any_name)) continue;  // a table of free names accepts any name
       toml::table with_unknown = file;
       toml::table* holder = &with_unknown;
       if (!section.empty()) {
@@ -309,6 +340,25 @@ TEST_CASE("Scene keys: the help table lists exactly the keys the parser accepts,
     print_resolved_scene(scene, printed);
     CHECK(resolved_table(read_scene(parse_scene_text(printed.str(), "printed.toml"))) == resolved);
   }
+}
+
+TEST_CASE("Scene keys: the formula tables are printed as given and read back to the same scene") {
+  const std::string scene_text =
+      "[constants]\nlength_of_bar = 2.0\nspeed = 'sqrt(young_modulus / density)'\n"
+      "[grid]\nlength = [2.0]\ncells = [4]\n[material]\nyoung_modulus = 4.0\ndensity = 1.0\n"
+      "[[body]]\nmin = [0.0]\nmax = [2.0]\n[solver]\nend_time = 1e-4\n"
+      "[initial_field]\nvelocity = ['1e-3 * cos(pi * X / (2 * length_of_bar))']\nstress = ['0']\n"
+      "[body_force]\nacceleration = ['speed * t']\n";
+  const Scene scene = read_scene(parse_scene_text(scene_text, "formulas.toml"));
+  const toml::table resolved = resolved_table(scene);
+  CHECK(*resolved["constants"]["speed"].value<double>() == 2.0);  // sqrt(4 / 1), resolved to a number
+  CHECK(resolved["constants"]["young_modulus"].node() == nullptr);  // predefined, not printed
+  CHECK(*resolved["initial_field"]["velocity"][0].value<std::string>() == "1e-3 * cos(pi * X / (2 * length_of_bar))");
+  CHECK(*resolved["body_force"]["acceleration"][0].value<std::string>() == "speed * t");
+  std::ostringstream printed;
+  print_resolved_scene(scene, printed);
+  CHECK(printed.str().find("[initial_field]") != std::string::npos);
+  CHECK(resolved_table(read_scene(parse_scene_text(printed.str(), "printed.toml"))) == resolved);
 }
 
 TEST_CASE("Scene keys: the printed scene is a readable scene file, in the table's order, with units") {

@@ -1,0 +1,252 @@
+/// \file
+/// The size of a run, estimated from its validated scene before anything is allocated, and the
+/// limits it must keep: memory (default: half the machine's memory) and the number of time steps
+/// end_time / dt (default 10^7). A scene beyond them is refused like any other bad input (exit 2),
+/// naming the key that makes it large.
+///
+/// The estimate is arithmetic in double precision on the scene's numbers, so no size can wrap.
+#pragma once
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "mpm/io/scene.hpp"
+
+namespace mpm::io {
+
+/// The limits of one run (`mpm run --max-memory BYTES|<n>G --max-steps N --force`).
+struct Budget {
+  double max_bytes = 0.0;  ///< 0: half the machine's memory (default_max_memory())
+  double max_steps = 1e7;  ///< end_time / dt at t = 0
+  bool force = false;      ///< run even beyond max_steps
+};
+
+/// The machine's physical memory in bytes (sysconf, else MemTotal of /proc/meminfo); 0 if unknown.
+inline double machine_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  if (pages > 0 && page_size > 0) return static_cast<double>(pages) * static_cast<double>(page_size);
+  std::ifstream meminfo("/proc/meminfo");
+  std::string name, unit;
+  double kilobytes = 0.0;
+  while (meminfo >> name >> kilobytes >> unit)
+    if (name == "MemTotal:") return kilobytes * 1024.0;
+  return 0.0;
+}
+
+/// Half the machine's memory, or 4 GiB when it cannot be told.
+inline double default_max_memory() {
+  const double memory = machine_memory();
+  return memory > 0.0 ? 0.5 * memory : 4.0 * (1 << 30);
+}
+
+/// Reads `12345`, `512M`, `4G`, `1.5G`, `2T` (powers of 1024; a trailing B or iB is allowed).
+/// \returns nothing unless it is a finite size > 0.
+inline std::optional<double> parse_byte_size(const std::string& text) {
+  std::size_t end = 0;
+  double value = 0.0;
+  if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.')) return std::nullopt;
+  try {
+    value = std::stod(text, &end);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  std::string unit = text.substr(end);
+  if (unit.size() > 1 && (unit.substr(1) == "B" || unit.substr(1) == "iB")) unit = unit.substr(0, 1);
+  const std::string units = "KMGT";
+  double scale = 1.0;
+  if (unit == "B") unit.clear();
+  if (!unit.empty()) {
+    const auto power = units.find(unit);
+    if (unit.size() != 1 || power == std::string::npos) return std::nullopt;
+    scale = std::pow(1024.0, static_cast<double>(power + 1));
+  }
+  value *= scale;
+  if (!(value > 0.0) || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+/// What a scene will need, estimated from its numbers alone.
+struct SceneCost {
+  double particles = 0.0;           ///< sum over bodies of cells x particles_per_cell
+  double nodes = 0.0;               ///< prod over axes of (cells + margins + 1)
+  double nodes_per_particle = 0.0;  ///< the stencil capacity of the shape function
+  double particle_bytes = 0.0, node_bytes = 0.0;
+  double time_step = 0.0, steps = 0.0;  ///< Eq. (42) at t = 0, and end_time over it
+  int largest_body = 0;                 ///< the body with most particles
+  double bytes() const { return particle_bytes + node_bytes; }
+};
+
+/// The estimate. Memory counts every per-particle array of Particles three times (seeding grows
+/// the vectors by doubling, and the simulation holds its own copy), the stencils (node, N, grad N
+/// per stencil entry), the shape's per-particle state and the nodal fields of GridFields.
+/// The stencil capacity is 2^d (linear), 3^d (uGIMP, l_p <= h/2), (2R/h + 2)^d (LME, a bound).
+inline SceneCost estimate_cost(const Scene& scene) {
+  const int d = scene.dimension;
+  SceneCost cost;
+  double per_cell_most = -1.0;
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const BodySettings& body = scene.bodies[k];
+    double count = 1.0;
+    for (int axis = 0; axis < d; ++axis)
+      count *= std::round((body.max[axis] - body.min[axis]) / scene.spacing) * body.particles_per_cell[axis];
+    cost.particles += count;
+    if (count > per_cell_most) per_cell_most = count, cost.largest_body = static_cast<int>(k);
+  }
+  cost.nodes = 1.0;
+  for (int axis = 0; axis < d; ++axis)
+    cost.nodes *= static_cast<double>(scene.cells[axis]) + scene.margin_min[axis] + scene.margin_max[axis] + 1.0;
+  if (scene.shape == "linear") cost.nodes_per_particle = std::pow(2.0, d);
+  else if (scene.shape == "ugimp") cost.nodes_per_particle = std::pow(3.0, d);
+  else cost.nodes_per_particle = std::pow(2.0 * std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 2.0, d);
+  const double particle_arrays = 4 + 8 + 8 + 5 * 8.0 * d + 2 * 8.0 * d * d + 8;  // Particles<Dim>
+  const double stencil = 4 + cost.nodes_per_particle * (4 + 8 + 8.0 * d);         // Stencils<Dim>
+  cost.particle_bytes = cost.particles * (3 * particle_arrays + stencil + 8.0 * d);
+  cost.node_bytes = cost.nodes * (8 + 4 * 8.0 * d);  // GridFields<Dim>
+  auto norm = [](const std::vector<double>& v) { return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0)); };
+  double fastest = 0.0;  // the fastest particle at t = 0
+  for (const auto& body : scene.bodies) fastest = std::max(fastest, norm(body.velocity));
+  for (const auto& box : scene.initial_velocities) fastest = std::max(fastest, norm(box.velocity));
+  const double wave_speed = std::sqrt(scene.young_modulus / scene.density);
+  const double speed = scene.control.courant == CourantSpeed::maximum ? std::max(fastest, wave_speed) : fastest + wave_speed;
+  cost.time_step = scene.control.cfl * scene.spacing / speed;
+  cost.steps = std::ceil(scene.control.end_time / cost.time_step);
+  return cost;
+}
+
+namespace detail {
+
+inline std::string bytes_text(double bytes) {
+  const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  int unit = 0;
+  while (bytes >= 1024.0 && unit < 6) bytes /= 1024.0, ++unit;
+  std::ostringstream out;
+  out << std::setprecision(3) << bytes << " " << units[unit];
+  return out.str();
+}
+
+}  // namespace detail
+
+/// Refuses a scene whose estimated size exceeds the budget or the code's 32-bit indices.
+/// \throws SceneError naming the key that makes the run large: the largest grid entry when the
+/// nodes dominate, lme_gamma for a very wide LME support, else particles_per_cell or grid.cells of
+/// the body with most particles; solver.end_time for too many time steps.
+inline void check_budget(const SceneFile& file, const Scene& scene, const Budget& budget) {
+  const SceneCost cost = estimate_cost(scene);
+  const double max_bytes = budget.max_bytes > 0.0 ? budget.max_bytes : default_max_memory();
+  const double most_index = std::numeric_limits<int>::max();
+  const bool too_big = cost.bytes() > max_bytes;
+  const bool too_many = cost.nodes > most_index || cost.particles * cost.nodes_per_particle > most_index;
+  if (too_big || too_many) {
+    std::ostringstream what;
+    what << std::setprecision(3) << "the scene needs " << cost.particles << " particles, " << cost.nodes << " nodes and "
+         << cost.nodes_per_particle << " stencil nodes per particle, about " << detail::bytes_text(cost.bytes());
+    if (too_big)
+      what << "; the limit is " << detail::bytes_text(max_bytes)
+           << (budget.max_bytes > 0.0 ? " (--max-memory)" : " (half this machine's memory; --max-memory BYTES|<n>G to change it)");
+    else
+      what << "; the code indexes nodes and stencil entries with 32-bit integers, at most 2^31 - 1 of each";
+    SceneReader grid(file, *file.table["grid"].as_table(), "grid");
+    if (cost.node_bytes >= cost.particle_bytes || cost.nodes > most_index) {
+      std::string key = "cells";
+      int largest = 0;
+      for (const auto& [name, values] : {std::pair{"cells", &scene.cells}, {"margin_min", &scene.margin_min}, {"margin_max", &scene.margin_max}})
+        for (int value : *values)
+          if (value > largest) largest = value, key = name;
+      grid.fail(key, what.str());
+    }
+    if (scene.shape == "lme" && cost.nodes_per_particle > 256) {
+      SceneReader solver(file, *file.table["solver"].as_table(), "solver");
+      solver.fail("lme_gamma", what.str() + "; a larger lme_gamma narrows the support");
+    }
+    const int k = cost.largest_body;
+    const BodySettings& body = scene.bodies[k];
+    double per_cell = 1.0, cells = 1.0;
+    for (int axis = 0; axis < scene.dimension; ++axis)
+      per_cell *= body.particles_per_cell[axis], cells *= std::round((body.max[axis] - body.min[axis]) / scene.spacing);
+    if (per_cell > cells) {
+      SceneReader reader(file, *(*file.table["body"].as_array())[k].as_table(), "body[" + std::to_string(k) + "]");
+      reader.fail("particles_per_cell", what.str());
+    }
+    grid.fail("cells", what.str());
+  }
+  // Beyond 2^50 steps t + dt == t may hold in double precision and time would stop: never run.
+  const bool endless = !(cost.steps <= std::pow(2.0, 50));
+  if (endless || (cost.steps > budget.max_steps && !budget.force)) {
+    SceneReader solver(file, *file.table["solver"].as_table(), "solver");
+    std::ostringstream what;
+    what << std::setprecision(3) << "end_time / dt = " << scene.control.end_time << " s / " << cost.time_step << " s = " << cost.steps
+         << " time steps (dt of Eq. (42) at t = 0: cfl h / wave or particle speed)";
+    if (endless)
+      what << "; no run can take that many steps (time would stop advancing in double precision)";
+    else
+      what << ", more than the limit of " << budget.max_steps
+           << "; shorten end_time or coarsen the grid, or raise the limit (--max-steps N) or lift it (--force)";
+    solver.fail("end_time", what.str());
+  }
+}
+
+TEST_CASE("Scene budget: sizes are estimated without overflow and the key that makes a run large is named") {
+  CHECK(parse_byte_size("4G") == 4.0 * 1024 * 1024 * 1024);
+  CHECK(parse_byte_size("512MiB") == 512.0 * 1024 * 1024);
+  CHECK(parse_byte_size("1000") == 1000.0);
+  CHECK(parse_byte_size("1.5K") == 1536.0);
+  CHECK_FALSE(parse_byte_size("4X"));
+  CHECK_FALSE(parse_byte_size("-1G"));
+  CHECK_FALSE(parse_byte_size("nan"));
+  CHECK_FALSE(parse_byte_size("inf"));
+  CHECK_FALSE(parse_byte_size(""));
+  CHECK_FALSE(parse_byte_size("0"));
+
+  const std::string bar =
+      "dimension = 1\n[grid]\nlength = [1.0]\ncells = [10]\nmargin_max = [2]\n[material]\nyoung_modulus = 100.0\ndensity = 1.0\n"
+      "[[body]]\nmin = [0.0]\nmax = [1.0]\nparticles_per_cell = [2]\n[solver]\nend_time = 1.0\ncfl = 0.5\n";
+  // by hand: 20 particles, 13 nodes; c = 10 m/s, h = 0.1 m, dt = 0.5 * 0.1 / 10 = 5 ms, 200 steps
+  const auto file = parse_scene_text(bar, "b.toml");
+  const SceneCost cost = estimate_cost(read_scene(file));
+  CHECK(cost.particles == 20.0);
+  CHECK(cost.nodes == 13.0);
+  CHECK(cost.nodes_per_particle == 2.0);
+  CHECK(cost.time_step == doctest::Approx(0.005));
+  CHECK(cost.steps == 200.0);
+  CHECK(cost.bytes() > 20 * (3 * 108.0));
+
+  auto message_of = [](const std::string& text, const std::vector<std::string>& overrides, Budget budget) -> std::string {
+    try {
+      SceneFile scene = parse_scene_text(text, "b.toml");
+      for (std::size_t k = 0; k < overrides.size(); ++k) apply_override(scene, overrides[k], static_cast<int>(k) + 1);
+      check_budget(scene, read_scene(scene), budget);
+    } catch (const SceneError& error) {
+      return error.message();
+    }
+    return "no error";
+  };
+  Budget small;
+  small.max_bytes = 1e6;
+  CHECK(message_of(bar, {}, small) == "no error");
+  CHECK(message_of(bar, {"grid.cells=[100000]"}, small).rfind("error: --set(1):1: grid.cells: the scene needs 2e+05 particles", 0) == 0);
+  CHECK(message_of(bar, {"grid.margin_max=[100000]"}, small).rfind("error: --set(1):1: grid.margin_max: the scene needs", 0) == 0);
+  CHECK(message_of(bar, {"body[0].particles_per_cell=[100000]"}, small).rfind("error: --set(1):1: body[0].particles_per_cell:", 0) == 0);
+  // 10^8 cells on each of two axes: 10^16 particles, far beyond any int, reported, not wrapped
+  const std::string plane = "dimension = 2\n[grid]\nlength = [1.0, 1.0]\ncells = [100000000, 100000000]\n[material]\n"
+                            "young_modulus = 100.0\ndensity = 1.0\n[[body]]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[solver]\nend_time = 1.0\n";
+  CHECK(message_of(plane, {}, Budget{}).rfind("error: b.toml:4: grid.cells: the scene needs 1e+16 particles, 1e+16 nodes", 0) == 0);
+  Budget few_steps;
+  few_steps.max_steps = 100;
+  CHECK(message_of(bar, {}, few_steps).rfind("error: b.toml:14: solver.end_time: end_time / dt = 1 s / 0.005 s = 200 time steps", 0) == 0);
+  few_steps.force = true;
+  CHECK(message_of(bar, {}, few_steps) == "no error");
+  CHECK(message_of(bar, {"solver.end_time=1e20"}, few_steps).find("no run can take that many steps") != std::string::npos);
+}
+
+}  // namespace mpm::io
