@@ -61,6 +61,9 @@ bad "^error: $work/no_cells.toml:[0-9]+: grid\.cells: missing" run "$work/no_cel
 bad "^error: $work/deep.toml:2: \(syntax\): dotted keys nest deeper than 64 levels" run "$work/deep.toml" --out "$work/a"
 { printf 'x = '; yes '[' | head -n 100000 | tr -d '\n'; echo; } >"$work/brackets.toml"
 bad "^error: $work/brackets.toml:1: \(syntax\): brackets nest deeper" run "$work/brackets.toml" --out "$work/a"
+# A table header that does not start with a key: toml++ 3.3 would trip its own assertion (UB in release).
+{ cat "$scene"; printf '[[[1]]]\n'; } >"$work/header.toml"
+bad "^error: $work/header.toml:[0-9]+: \(syntax\): a table header must start with a key" run "$work/header.toml" --out "$work/a"
 bad "^error: --set\(1\):1: a\.a\.a.*: not a key" run "$scene" --out "$work/a" --set "$(yes a. | head -n 50000 | tr -d '\n')b=1"
 bad "^error: --set\(1\):1: grid\.cells: the scene needs 1e\+08 particles" run "$scene" --out "$work/a" --set 'grid.cells=[100000000]' --max-memory 8G
 bad "^error: --set\(1\):1: grid\.cells: has 2 entries" run "$scene" --out "$work/a" --set 'grid.cells=[1000000,1000000]'

@@ -7,6 +7,8 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -101,6 +103,31 @@ inline void check_nesting(std::string_view text, const std::string& name) {
   }
 }
 
+/// Refuses a table header that does not start with a key (`[[[1]]]`, `[[=`, `[ ]`), before the
+/// parser sees it: the Debian TOML parser (toml++ 3.3) assumes a key starts there and, given anything
+/// else, trips an internal assertion (debug builds) or reads on in undefined behaviour (release),
+/// instead of reporting a syntax error. A line whose first non-blank character is `[` is a header
+/// (or a nested array on its own line, which no scene key takes): after `[` or `[[` and blanks, a
+/// bare-key character or a quote must follow.
+inline void check_table_headers(std::string_view text, const std::string& name) {
+  int line = 1;
+  for (std::size_t start = 0; start < text.size(); ++line) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::size_t k = text.find_first_not_of(" \t", start);
+    if (k < end && text[k] == '[') {
+      ++k;
+      if (k < end && text[k] == '[') ++k;
+      while (k < end && (text[k] == ' ' || text[k] == '\t')) ++k;
+      const char first = k < end ? text[k] : '\n';
+      const bool starts_key = std::isalnum(static_cast<unsigned char>(first)) || first == '_' || first == '-' ||
+                              first == '"' || first == '\'';
+      if (!starts_key)
+        throw SceneError(name, line, "(syntax)", "a table header must start with a key: write [name] or [[name]]");
+    }
+    start = end + 1;
+  }
+}
+
 /// Parses the scene file. \throws SceneError if it cannot be read (missing, a directory, larger
 /// than max_scene_bytes) or on a syntax error, with its line.
 inline SceneFile parse_scene_file(const std::string& path) {
@@ -115,6 +142,7 @@ inline SceneFile parse_scene_file(const std::string& path) {
   if (text.size() > max_scene_bytes)
     throw SceneError(path, 0, "(file)", "is larger than " + std::to_string(max_scene_bytes) + " bytes; a scene is a few kB");
   check_nesting(text, path);
+  check_table_headers(text, path);
   try {
     return SceneFile{path, toml::parse(std::string_view(text), std::string_view(path)), {}};
   } catch (const toml::parse_error& error) {
@@ -125,6 +153,7 @@ inline SceneFile parse_scene_file(const std::string& path) {
 /// Parses a scene given as text (tests, tools). \throws SceneError on a syntax error.
 inline SceneFile parse_scene_text(const std::string& text, const std::string& name) {
   check_nesting(text, name);
+  check_table_headers(text, name);
   try {
     return SceneFile{name, toml::parse(std::string_view(text), std::string_view(name)), {}};
   } catch (const toml::parse_error& error) {
@@ -169,6 +198,7 @@ inline void apply_override(SceneFile& scene, const std::string& assignment, int 
   toml::table parsed;
   try {
     check_nesting(value_text, origin);
+    check_table_headers(value_text, origin);
     parsed = toml::parse(std::string_view(value_text), std::string_view(origin));
   } catch (const toml::parse_error& error) {
     throw SceneError(origin, 1, key, "the value is not TOML (" + std::string(error.description()) +
@@ -418,6 +448,25 @@ TEST_CASE("Scene file: overrides land in nested tables and arrays of tables; err
   } catch (const SceneError& error) {
     CHECK(error.message() == "error: bad.toml:2: solver.cfl: must be > 0, got -1.000000");
   }
+}
+
+TEST_CASE("Scene file: a table header that does not start with a key is a syntax error, never the parser's assertion") {
+  auto message_of = [](const std::string& text) {
+    try {
+      parse_scene_text(text, "h.toml");
+    } catch (const SceneError& error) {
+      return error.message();
+    }
+    return std::string("accepted");
+  };
+  const std::string refused = "error: h.toml:2: (syntax): a table header must start with a key: write [name] or [[name]]";
+  for (const std::string header : {"[[[1]]]", "[[[a]]]", "[[[]]", "[[=", "  [ ]", "[\t]"}) {
+    CAPTURE(header);
+    CHECK(message_of("title = \"t\"\n" + header + "\n") == refused);
+  }
+  CHECK(message_of("[grid]\n[[body]]\n[ \"quoted key\" ]\n[[ 'also' ]]\nx = [\n  [1.0],\n]\n") == "accepted");
+  SceneFile file = parse_scene_text("[solver]\ncfl = 0.5\n", "o.toml");
+  CHECK_THROWS_AS(apply_override(file, "solver.cfl=0.5\n[[[1]]]", 1), SceneError);
 }
 
 TEST_CASE("Scene file: hostile input is refused with its key: nesting, key paths, non-finite numbers, integer ranges") {

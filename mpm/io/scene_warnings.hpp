@@ -3,8 +3,9 @@
 /// stderr before the run; a warning never stops a run (errors do: mpm/io/scene.hpp).
 ///   - an observer outside every [[body]] (the particle nearest to it is observed instead);
 ///   - a CFL above the measured stability limit of the chosen shape function and integrator;
-///   - LME next to rigid margin nodes behind a fixed face (it gives way there), uGIMP at a fixed face
-///     with no margin cell behind it (its support reaches past the wall).
+///   - LME next to rigid margin nodes behind a fixed face (it gives way there).
+/// uGIMP needs no warning at a wall: its particle domain is clipped at the grid's edge
+/// (mpm/shape/ugimp.hpp), so it runs whether or not there are margin cells.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -118,11 +119,6 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
                            " gives way there (its wide support drags the particles along the held nodes; the soil "
                            "block at gamma 0.8 settles 0.78 m instead of 0.57 m); with no margin at a fixed face LME "
                            "interpolates the wall exactly");
-    if (scene.shape == "ugimp" && margin == 0)
-      warn(margin_key, "uGIMP at the fixed face " + face +
-                           " with no margin cell behind it: its support reaches h + l_p past a particle, beyond the "
-                           "wall and off the grid, and the run stops (exit 3) when a particle nears the wall; give "
-                           "the wall one rigid cell (a margin of 1 on that side)");
   }
   return warnings;
 }
@@ -164,9 +160,8 @@ TEST_CASE("Scene warnings: the measured stability limits, and each warning at it
   auto lme = warnings_of(base + "shape = \"lme\"\n", {"grid.margin_max=[1]"});
   REQUIRE(lme.size() == 1);
   CHECK(lme[0].rfind("warning: --set(1):1: grid.margin_max: LME next to rigid margin nodes behind the fixed face xmax", 0) == 0);
-  auto ugimp = warnings_of(base + "shape = \"ugimp\"\n");
-  REQUIRE(ugimp.size() == 1);
-  CHECK(ugimp[0].rfind("warning: w.toml:1: grid.margin_max: uGIMP at the fixed face xmax with no margin cell", 0) == 0);
+  // uGIMP is clipped at the grid's edge: at a fixed face it needs no margin, and gets no warning either way.
+  CHECK(warnings_of(base + "shape = \"ugimp\"\n").empty());
   CHECK(warnings_of(base + "shape = \"ugimp\"\n", {"grid.margin_max=[1]"}).empty());
   // 2D, nu = 0.3: Eq. (42)'s CFL 1.3 is 1.52 with the P-wave speed, above LME gamma 3's 1.44 with NPC.
   const std::string block =
