@@ -67,7 +67,7 @@ double fitted_order(const std::vector<int>& cells, const std::vector<double>& er
   return -slope;
 }
 
-// The Dyka bar at 2 particles per cell: the crossing ratio of spec 5.1.4 is u_max / (h / 2 ppc),
+// The Dyka bar at 2 particles per cell: the crossing ratio of paper/08_test_cases.md (Grid-crossing bands) is u_max / (h / 2 ppc),
 // so crossing (ratio >= 1) starts at 1011 cells instead of 2021; 1280 cells is the cheapest
 // crossing mesh (2560 at 2 ppc would cost 4x as much again: section 7 of issue 10's time budget).
 const std::vector<int> dyka_cells{40, 160, 320, 1280};
@@ -176,7 +176,7 @@ int fig6_two_particles_report(const std::string& folder, const std::string& repo
   report << "### Fig. 6 at 2 particles per cell (`dyka_fig6_2ppc`)\n\n![dyka_fig6_2ppc](figures/dyka_fig6_2ppc.png)\n\n"
          << "The Dyka bar as in Fig. 6 with 2 particles per cell (LME γ = 3, CFL 0.5, 200 µs), meshes 40, 160, 320 and 1280 cells, against "
             "the 1-particle-per-cell sweep above. At 2 particles per cell the particles start h/4 from a cell face, so the crossing ratio "
-            "of spec 5.1.4 doubles: crossing (ratio >= 1) starts at 1011 cells instead of 2021. 2560 and 5120 cells at 2 particles per cell "
+            "of paper/08_test_cases.md (grid-crossing bands) doubles: crossing (ratio >= 1) starts at 1011 cells instead of 2021. 2560 and 5120 cells at 2 particles per cell "
             "are not run: each would cost 4-16x the whole 1280-cell set (the time budget of issue 10).\n\n";
   verification::write_claims(report, list);
   report << "Where the paper's claim holds (LME and uGIMP suffer less from grid crossing than linear shape functions, on the crossing meshes):\n\n"
