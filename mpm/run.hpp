@@ -89,6 +89,14 @@ RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Di
   return detail::with_shape(scene, setup, integrator, monitor, partial);
 }
 
+// The runs are compiled once, for Dim = 1 and 2, in mpm/run_1d.cpp and mpm/run_2d.cpp (the library
+// mpm_run of CMakeLists.txt), not again in every program and test file that runs a scene: each
+// instantiates Simulation for 3 shape functions x 2 integrators.
+extern template Setup<1> build_setup<1>(const io::Scene&);
+extern template Setup<2> build_setup<2>(const io::Scene&);
+extern template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
+extern template RunSummary run_setup<2>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
+
 /// Reads a scene file, applies `--set` overrides and, when a budget is given, checks the run's
 /// estimated size against it (io/scene_budget.hpp). \throws SceneError.
 inline io::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,

@@ -23,7 +23,7 @@
 #include <vector>
 
 #define TOML_EXCEPTIONS 1
-#define TOML_HEADER_ONLY 1
+#define TOML_HEADER_ONLY 0  // the parser is compiled once, in mpm/io/toml_parser.cpp
 #include <toml++/toml.h>
 
 #include "mpm/core/errors.hpp"

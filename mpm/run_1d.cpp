@@ -1,0 +1,9 @@
+/// \file
+/// The runs of 1D scenes, compiled once (mpm/run.hpp declares them extern): Simulation<1, Shape,
+/// Integrator> for every shape function and integrator.
+#include "mpm/run.hpp"
+
+namespace mpm {
+template Setup<1> build_setup<1>(const io::Scene&);
+template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
+}  // namespace mpm

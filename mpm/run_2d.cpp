@@ -1,0 +1,9 @@
+/// \file
+/// The runs of 2D scenes, compiled once (mpm/run.hpp declares them extern): Simulation<2, Shape,
+/// Integrator> for every shape function and integrator.
+#include "mpm/run.hpp"
+
+namespace mpm {
+template Setup<2> build_setup<2>(const io::Scene&);
+template RunSummary run_setup<2>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
+}  // namespace mpm
