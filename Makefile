@@ -2,17 +2,22 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: deps build test figures bench docs clean sanitize
+.PHONY: deps configure build test figures bench docs clean sanitize
 
 deps:
 	@bash .ci/install-deps.sh
 
-build: deps
+configure: deps
 	@mkdir -p $(BUILD_DIR)
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > $(BUILD_DIR)/configure.log 2>&1 || (cat $(BUILD_DIR)/configure.log; exit 1)
+
+build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-test: build
+# Builds what the tests run (CMake target test_programs: the tests, the CLI, docs_trace), not the
+# drivers of make figures, which make build compiles (.ci/run does, after make test).
+test: configure
+	@cmake --build $(BUILD_DIR) --target test_programs -j $(JOBS)
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
 # AddressSanitizer + UndefinedBehaviorSanitizer (issue 11): only the test program and the CLI,
