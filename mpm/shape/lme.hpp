@@ -115,7 +115,9 @@ struct LmeMoments {
 /// Eqs. (37) and (38), with \f$ p_I = w_I / \sum_J w_J \f$ the shape functions of Eq. (35) at this lambda:
 /// \f[ r(x, \lambda) = \frac{\partial \log Z}{\partial \lambda} = \sum_I p_I (x - x_I), \qquad
 ///     J(x, \lambda) = \frac{\partial r}{\partial \lambda} = \sum_I p_I (x - x_I) \otimes (x - x_I) - r \otimes r . \f]
-/// J is the covariance of the offsets under p, and is computed as such,
+/// Near the solution (\f$ |r|^2 \le 10^{-6} \operatorname{tr} \sum_I p_I (x - x_I) \otimes (x - x_I) \f$, i.e. almost
+/// always from a warm start) J is Eq. (37) as written, in the same pass as r: subtracting the tiny
+/// \f$ r \otimes r \f$ loses nothing. Elsewhere J is computed as the covariance of the offsets under p,
 /// \f$ J = \sum_I p_I (x - x_I - r) \otimes (x - x_I - r) \f$, which is Eq. (37) without its cancellation
 /// (far from the solution, with nearly all weight on one node, Eq. (37) as written can round to 0 or
 /// below). J is symmetric and positive definite when the neighbours span the space, so log Z is
@@ -124,8 +126,15 @@ template <int Dim>
 LmeMoments<Dim> lme_moments(int count, const Vector<Dim>* offsets, const double* weights, double weight_sum) {
   const double inverse_sum = 1.0 / weight_sum;  // one division: p_I = w_I / sum_J w_J
   Vector<Dim> r = Vector<Dim>::Zero();
-  for (int I = 0; I < count; ++I) r += weights[I] * offsets[I];
+  Matrix<Dim> second = Matrix<Dim>::Zero();
+  for (int I = 0; I < count; ++I) {
+    r += weights[I] * offsets[I];
+    second += weights[I] * offsets[I] * offsets[I].transpose();
+  }
   r *= inverse_sum;
+  second *= inverse_sum;
+  if (r.squaredNorm() <= 1e-6 * second.trace()) return {r, second - r * r.transpose()};  // Eq. (37) as written
+  // Far from the solution: the covariance, in a second pass.
   Matrix<Dim> J = Matrix<Dim>::Zero();
   for (int I = 0; I < count; ++I) {
     const Vector<Dim> centred = offsets[I] - r;
@@ -808,6 +817,24 @@ TEST_CASE("Eqs. (37)-(38) and Eq. (40): r and J are the gradient and Hessian of 
   for (int I = 0; I < count; ++I) printed += w[I] / z.weight_sum * offsets[I] * offsets[I].transpose();
   printed -= at.residual * at.residual.transpose();
   CHECK((printed - at.hessian).norm() <= 1e-14);
+  // Near the root lme_moments takes Eq. (37) as written, in one pass: J equals the covariance by hand.
+  LmeShape<2> lme(plane);
+  lme.initialise(1);
+  int scratch_nodes[16];
+  double scratch_values[16];
+  Vector<2> scratch_gradients[16];
+  lme.evaluate(0, Vector<2>(4.4, 5.7), scratch_nodes, scratch_values, scratch_gradients);
+  const Vector<2> near = lme.lagrange_multiplier(0) + Vector<2>(1e-5, -2e-5);  // h = 1: cell units
+  const LmeMoments<2> close = moments(near);
+  const LmePartition zn = lme_partition(count, offsets, beta, near, w);
+  Matrix<2> covariance = Matrix<2>::Zero(), second = Matrix<2>::Zero();
+  for (int I = 0; I < count; ++I) {
+    covariance += w[I] / zn.weight_sum * (offsets[I] - close.residual) * (offsets[I] - close.residual).transpose();
+    second += w[I] / zn.weight_sum * offsets[I] * offsets[I].transpose();
+  }
+  REQUIRE(close.residual.squaredNorm() <= 1e-6 * second.trace());  // the one-pass branch
+  REQUIRE(at.residual.squaredNorm() > 1e-6 * printed.trace());       // ... and above, the covariance branch
+  CHECK((covariance - close.hessian).norm() <= 1e-14);
 }
 
 TEST_CASE("Eq. (39): grad N_I = N_I (grad f_I - sum_J N_J grad f_J), with the total derivatives of f_I by finite differences") {
