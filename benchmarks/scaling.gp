@@ -40,8 +40,8 @@ do for [ext in "png pdf"] {
   label(d, n) = (strcol(1) eq d && int(column(4)) == n && int(column(7)) == 1) ? strcol(2)."+".strcol(3) : ""
   set title "1D, 2560 cells, 1 thread: where the time goes"
   plot for [c=11:17] csv using (phase(c, "1", 2560)):xtic(label("1", 2560)) every ::1 title columnheader(c)
-  set title "2D, 99856 particles, 1 thread: where the time goes"
-  plot for [c=11:17] csv using (phase(c, "2", 158)):xtic(label("2", 158)) every ::1 title columnheader(c)
+  set title "2D, 101124 particles, 1 thread: where the time goes"
+  plot for [c=11:17] csv using (phase(c, "2", 159)):xtic(label("2", 159)) every ::1 title columnheader(c)
   unset multiplot
   unset yrange
   set logscale xy

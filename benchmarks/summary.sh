@@ -22,6 +22,14 @@ for i in fe npc; do
   check "1D: LME cost / linear cost, $i" "$(value dyka_bar lme $i 20)" 2 "<=" "%.2f"
   check "2D soil block (400 particles): LME cost / linear cost, $i" "$(value soil_block lme $i 20)" 3 "<=" "%.2f"
 done
+speedup() { awk -F, -v s="$1" -v i="$2" -v n="$cores" '$1 == 2 && $2 == s && $3 == i && $5 >= 100000 && $5 < 200000 {
+    if ($7 == 1) one = $8; else if ($7 == n) many = $8 } END { if (one && many) printf "%.3f", one / many; else print "nan" }' "$scaling"; }
+if [[ -s $scaling && $cores -ge 2 ]]; then
+  for method in "linear fe" "lme npc"; do
+    set -- $method
+    check "2D soil block, 101124 particles, $1 + $2: speed-up on $cores cores" "$(speedup "$1" "$2")" 1.7 ">=" "%.2f"
+  done
+fi
 echo
 echo "## Threads: speed-up on $cores cores (time on 1 thread / time on $cores)"
 echo

@@ -46,7 +46,9 @@ inline Block block_of(int count, int block, int blocks) {
 /// body(thread, block) for each thread's block of [0, count). body must not throw.
 template <class Body>
 void parallel_for_blocks(int count, Body body) {
-#pragma omp parallel num_threads(threads_for(count))
+  const int threads = threads_for(count);
+  if (threads == 1) return body(0, Block{0, count});  // no parallel region: its start-up costs more than a small loop
+#pragma omp parallel num_threads(threads)
   body(omp_get_thread_num(), block_of(count, omp_get_thread_num(), omp_get_num_threads()));
 }
 
@@ -62,9 +64,15 @@ void parallel_for(int count, Body body) {
 /// `zero` and combined in block order by combine(total, partial).
 template <class T, class Body, class Combine>
 T parallel_sum(int count, const T& zero, Body body, Combine combine) {
+  const int threads = threads_for(count);
+  if (threads == 1) {  // no parallel region (see parallel_for_blocks)
+    T sum = zero;
+    for (int p = 0; p < count; ++p) body(p, sum);
+    return sum;
+  }
   std::array<T, max_threads> partial;
   int blocks = 1;
-#pragma omp parallel num_threads(threads_for(count))
+#pragma omp parallel num_threads(threads)
   {
     const int thread = omp_get_thread_num();
     const Block block = block_of(count, thread, omp_get_num_threads());
@@ -89,6 +97,10 @@ void set_zero(Eigen::MatrixBase<Derived>& value) { value.setZero(); }
 template <class T, class Body>
 void scatter_to_nodes(int count, std::vector<T>& field, std::vector<std::vector<T>>& copies, Body body) {
   const int threads = std::min(threads_for(count), static_cast<int>(copies.size()) + 1);
+  if (threads == 1) {  // no parallel region (see parallel_for_blocks)
+    for (int p = 0; p < count; ++p) body(p, field.data());
+    return;
+  }
   int blocks = 1;
 #pragma omp parallel num_threads(threads)
   {

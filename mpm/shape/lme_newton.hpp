@@ -35,9 +35,9 @@ Vector<Dim> safeguarded_newton_step(const Vector<Dim>& r, Matrix<Dim> J, const V
     const Vector<Dim> newton = -(J.inverse() * r);
     if (newton.allFinite()) step = newton;
   }
-  const double longest = std::max(1.0, lambda.norm());
-  const double length = step.norm();
-  return length > longest ? Vector<Dim>(step * (longest / length)) : step;
+  const double longest_squared = std::max(1.0, lambda.squaredNorm());  // |s| <= max(1, |lambda|), compared squared
+  const double length_squared = step.squaredNorm();
+  return length_squared > longest_squared ? Vector<Dim>(step * std::sqrt(longest_squared / length_squared)) : step;
 }
 
 /// Whether the full Newton step s certainly passes the line search below, which can then be skipped
