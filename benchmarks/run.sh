@@ -3,7 +3,7 @@
 # ratios are comparable (the machine may be shared and noisy: compare ratios, not absolute numbers).
 #
 # Writes results/bench/:
-#   speed.csv     the targets of issue 9 (Dyka bar at 640 cells; soil block), particle-steps/s, one thread,
+#   speed.csv     the targets of issue 9 (Dyka bar at 640 cells; soil block), particle-steps/s, one thread, best of 3,
 #                 and each shape's cost relative to linear with the same integrator
 #   scaling.csv   time per particle-step against particles: Dyka bar 40..20480 cells (1D) and a soil
 #                 block from 100 to 1e6 particles (2D), per shape and integrator, on 1 and on all cores;
@@ -46,6 +46,13 @@ run() {
     'BEGIN{printf "%d,%d,%d,%.4e,%.4e,%d%s\n", p, s, th, b / (p * s), p * s / b, rss, sh}'
 }
 
+# best_of N NAME SCENE THREADS OVERRIDES...: run N times, the row of the fastest (a shared machine only
+# ever slows a run down, so the fastest of a few is the closest to what the code can do)
+best_of() {
+  local times=$1; shift
+  for ((k = 0; k < times; ++k)); do run "$@"; done | sort -t, -k4 -g | head -1
+}
+
 # ---- 1. The targets: one thread, Dyka bar at 640 cells (200 us) and the soil block at 1 m cells ----
 speed=$out/speed.csv
 echo "scene,shape,integrator,particles,steps,threads,seconds_per_particle_step,particle_steps_per_second,max_resident_kib,$(echo $phases | tr ' ' ','),relative_to_linear" >"$speed"
@@ -59,7 +66,7 @@ for integrator in fe npc; do
       else
         extra=(--set grid.cells=[10,10])
       fi
-      row=$(run "target_${scene}_${shape}_$integrator" "$root/scenes/$scene.toml" 1 --set "solver.shape=\"$shape\"" \
+      row=$(best_of 3 "target_${scene}_${shape}_$integrator" "$root/scenes/$scene.toml" 1 --set "solver.shape=\"$shape\"" \
         --set "solver.integrator=\"$integrator\"" "${extra[@]}")
       cost=$(echo "$row" | cut -d, -f4)
       [[ $shape == linear ]] && linear=$cost
@@ -94,7 +101,8 @@ scale() {  # scale DIM CELLS SHAPE INTEGRATOR THREADS
     scene=$root/scenes/soil_block.toml
   fi
   local row
-  row=$(run "scale_${dim}d_${cells}_${shape}_${integrator}_$threads" "$scene" "$threads" --set "solver.shape=\"$shape\"" \
+  local repeats=1; [[ $dim == 2 && $cells == 159 ]] && repeats=3  # the size whose speed-up is a target
+  row=$(best_of "$repeats" "scale_${dim}d_${cells}_${shape}_${integrator}_$threads" "$scene" "$threads" --set "solver.shape=\"$shape\"" \
     --set "solver.integrator=\"$integrator\"" "${extra[@]}")
   echo "$dim,$shape,$integrator,$cells,$row,$(echo "$row" | awk -F, '{printf "%.0f", $6 * 1024 / $1}')" >>"$scaling"
 }
