@@ -49,8 +49,16 @@ void run_cases(const std::string& suite, const std::vector<std::string>& names, 
   std::map<std::string, int> left;
   for (const auto& name : names) ++left[case_group(name)];
   std::mutex lock;
-  auto finished = [&](std::size_t k) {
+  std::size_t done = 0;
+  // A line for every group when its last case ends, and for every case of 10 s or more (the groups all
+  // hold a large case, and the largest run first, so the group lines alone come in a burst at the end).
+  auto finished = [&](std::size_t k, double case_seconds) {
     std::lock_guard<std::mutex> guard(lock);
+    ++done;
+    if (case_seconds >= 10.0)
+      std::printf("figures: %s: %s took %.0f s (%zu of %zu cases done, %.0f s)\n", suite.c_str(), names[k].c_str(), case_seconds,
+                  done, names.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()),
+          std::fflush(stdout);
     const std::string group = case_group(names[k]);
     if (--left[group] == 0)
       std::printf("figures: %s: %s done (%.0f s)\n", suite.c_str(), group.c_str(),
@@ -67,13 +75,14 @@ void run_cases(const std::string& suite, const std::vector<std::string>& names, 
     std::printf("figures: %s: %s done on %u threads (%.0f s)\n", suite.c_str(), names[k].c_str(), cores,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     std::fflush(stdout);
-    finished(k);
+    finished(k, 0.0);
   }
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t n; (n = next++) < narrow.size();) {
+      const auto case_start = std::chrono::steady_clock::now();
       task(narrow[n], 1);
-      finished(narrow[n]);
+      finished(narrow[n], std::chrono::duration<double>(std::chrono::steady_clock::now() - case_start).count());
     }
   };
   std::vector<std::thread> threads;
