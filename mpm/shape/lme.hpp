@@ -262,6 +262,7 @@ class LmeShape {
       refuse(message.str());
     }
     capacity_ = lattice_points_in_ball_bound<Dim>(std::sqrt(radius_squared_));
+    diameter_ = 2.0 * std::sqrt(radius_squared_);
   }
 
   /// An upper bound of the neighbours of any point: the most lattice points a ball of radius R can
@@ -292,9 +293,8 @@ class LmeShape {
     Vector<Dim>* offsets = gradients;  // the offsets (x - x_I)/h live where the gradients will go
     const int count = lme_neighbours(grid_, radius_squared_, capacity_, particle, x, nodes, offsets);
     const double beta = beta_in_cell_units(count, offsets);
-    const double diameter = 2.0 * std::sqrt(radius_squared_);
-    const LmeSolution<Dim> solution = solve_lme_multiplier(count, offsets, beta, predicted_multiplier(particle, x, diameter),
-                                                           diameter, options_.newton_tolerance, options_.max_iterations, values);
+    const LmeSolution<Dim> solution = solve_lme_multiplier(count, offsets, beta, predicted_multiplier(particle, x),
+                                                           diameter_, options_.newton_tolerance, options_.max_iterations, values);
     if (solution.failure) throw not_converged(particle, solution.iterations, solution.moments, solution.failure);
     if (!positive_definite(solution.moments.hessian)) {
       std::ostringstream cause;
@@ -315,19 +315,19 @@ class LmeShape {
   const ShapeDiagnostics& diagnostics() const { return diagnostics_; }
 
  private:
-  /// beta h^2: gamma, or gamma (h / hbar)^2 under the authors' rule. Under that rule beta varies
-  /// with x and Eq. (41), which takes beta constant, is not the exact gradient; the authors' code
-  /// makes the same approximation.
   /// Newton's start, lambda h: the particle's last lambda*, moved along lme_multiplier_slope to x when
   /// that change is a step Newton would take in full (full_step_is_safe); otherwise the last lambda* as it
   /// is (a long jump, as between the points of a test, or the first evaluation, where the slope is 0).
-  Vector<Dim> predicted_multiplier(int particle, const Vector<Dim>& x, double diameter) const {
+  Vector<Dim> predicted_multiplier(int particle, const Vector<Dim>& x) const {
     const double h = grid_.spacing();
     const Vector<Dim> change = multiplier_slope_[particle] * ((x - evaluated_at_[particle]) / h);
     const Vector<Dim> last = lambda_[particle] * h;
-    return full_step_is_safe(change.norm(), diameter) ? Vector<Dim>(last + change) : last;
+    return full_step_is_safe(change.norm(), diameter_) ? Vector<Dim>(last + change) : last;
   }
 
+  /// beta h^2: gamma, or gamma (h / hbar)^2 under the authors' rule. Under that rule beta varies
+  /// with x and Eq. (41), which takes beta constant, is not the exact gradient; the authors' code
+  /// makes the same approximation.
   double beta_in_cell_units(int count, const Vector<Dim>* offsets) const {
     if (options_.beta_rule == LmeOptions::BetaRule::grid_spacing) return options_.gamma;
     double mean = 0.0;
@@ -347,6 +347,7 @@ class LmeShape {
   Grid<Dim> grid_;
   LmeOptions options_;
   double radius_squared_ = 0.0;  ///< (R/h)^2 = -ln(tol)/gamma
+  double diameter_ = 0.0;        ///< 2R/h, the neighbourhood's diameter (Newton's full_step_is_safe)
   int capacity_ = 0;
   std::vector<Vector<Dim>> lambda_;  ///< per particle, 1/length: the warm start
   std::vector<Matrix<Dim>> multiplier_slope_;  ///< per particle, d(lambda* h)/d(x/h) where it was last evaluated
