@@ -8,7 +8,6 @@
 // Cases: the mesh sweep of Fig. 6 (10 to 5120 cells, paper/08_test_cases.md) for linear, uGIMP and LME
 // gamma 3 with forward Euler and the predictor-corrector (also Figs. 7, 9, 10 and the work-
 // precision chart); the gamma sweep of Fig. 8 (40 cells).
-#include <gsl/gsl_fit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +18,7 @@
 #include <sstream>
 
 #include "verification/dyka_case.hpp"
+#include "verification/fitted_order.hpp"
 #include "verification/parallel.hpp"
 
 namespace {
@@ -83,17 +83,6 @@ double crossing_ratio(int cells) { return largest_displacement / (0.5 * 0.1333 /
 std::string band_of(int cells) {
   const double delta = crossing_ratio(cells);
   return delta < 0.1 ? "negligible" : delta < 1.0 ? "transition" : "crossing";
-}
-
-/// Observed order p of RMS ~ C N^-p over the meshes of one band, by GSL's least squares on logs.
-double fitted_order(const std::vector<int>& cells, const std::vector<double>& rms) {
-  std::vector<double> x, y;
-  for (size_t k = 0; k < cells.size(); ++k)
-    if (rms[k] > 0.0 && std::isfinite(rms[k])) x.push_back(std::log(cells[k])), y.push_back(std::log(rms[k]));
-  if (x.size() < 2) return std::nan("");
-  double intercept, slope, c00, c01, c11, sum_squares;
-  gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &intercept, &slope, &c00, &c01, &c11, &sum_squares);
-  return -slope;
 }
 
 /// Report helpers: one table row per claim.
@@ -165,7 +154,7 @@ int main(int argc, char** argv) {
         for (int n : sweep_cells)
           if (band_of(n) == band && !result(sweep_name(shape, integrator, n)).failed)
             cells.push_back(n), rms.push_back(result(sweep_name(shape, integrator, n)).rms);
-        const double order = fitted_order(cells, rms);
+        const double order = verification::fitted_order(cells, rms, 2);  // two meshes of the band at the least
         order_of[shape + "_" + integrator + "_" + band] = order;
         orders << shape << "," << integrator << "," << band << "," << order << "," << (cells.empty() ? 0 : cells.front()) << ","
                << (cells.empty() ? 0 : cells.back()) << "\n";

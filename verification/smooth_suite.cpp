@@ -10,7 +10,6 @@
 // Errors: RMS over every particle at T/4, T/2, 3T/4 and T of v_p - v(X_p, t), divided by V, and of
 // sigma_p - sigma(X_p, t), divided by Z V, against the exact first mode (small amplitude) or the
 // finite-strain reference (large amplitude).
-#include <gsl/gsl_fit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +22,7 @@
 #include <sstream>
 
 #include "verification/claims.hpp"
+#include "verification/fitted_order.hpp"
 #include "verification/parallel.hpp"
 #include "verification/smooth_case.hpp"
 
@@ -56,16 +56,8 @@ struct Series {
   }
 };
 
-/// Observed order p of error ~ C N^-p, by GSL's least squares on logs, over the finite entries.
-double fitted_order(const std::vector<int>& cells, const std::vector<double>& error) {
-  std::vector<double> x, y;
-  for (size_t k = 0; k < cells.size(); ++k)
-    if (error[k] > 0.0 && std::isfinite(error[k])) x.push_back(std::log(cells[k])), y.push_back(std::log(error[k]));
-  if (x.size() < 3) return std::nan("");
-  double intercept, slope, c00, c01, c11, sum_squares;
-  gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &intercept, &slope, &c00, &c01, &c11, &sum_squares);
-  return -slope;
-}
+// Observed orders over three meshes at the least (verification::fitted_order).
+constexpr std::size_t least_meshes = 3;
 
 // The Dyka bar at 2 particles per cell: the crossing ratio of paper/08_test_cases.md (Grid-crossing bands) is u_max / (h / 2 ppc),
 // so crossing (ratio >= 1) starts at 1011 cells instead of 2021: 1280 and 2560 cells cross at 2 ppc, and
@@ -347,7 +339,7 @@ int main(int argc, char** argv) {
       if (n >= 16) cells.push_back(n), velocity.push_back(r.velocity_error), stress.push_back(r.stress_error);
     }
     const bool complete = failed == 0;
-    order_of[s.key()] = {complete ? fitted_order(cells, velocity) : std::nan(""), complete ? fitted_order(cells, stress) : std::nan("")};
+    order_of[s.key()] = {complete ? verification::fitted_order(cells, velocity, least_meshes) : std::nan(""), complete ? verification::fitted_order(cells, stress, least_meshes) : std::nan("")};
     failed_of[s.key()] = failed;
     orders_file << s.amplitude << "," << s.shape << "," << s.integrator << "," << s.particles_per_cell << "," << cfl_name(s.cfl) << ","
                 << order_of[s.key()].first << "," << order_of[s.key()].second << "," << failed << "\n";
@@ -383,7 +375,7 @@ int main(int argc, char** argv) {
             if (n >= 12) cells.push_back(n), velocity.push_back(r.velocity_error), stress.push_back(r.stress_error);
           }
           manufactured_failed[key] = failed;
-          manufactured_order[key] = {failed ? std::nan("") : fitted_order(cells, velocity), failed ? std::nan("") : fitted_order(cells, stress)};
+          manufactured_order[key] = {failed ? std::nan("") : verification::fitted_order(cells, velocity, least_meshes), failed ? std::nan("") : verification::fitted_order(cells, stress, least_meshes)};
         }
 
   std::ofstream dyka_file(folder + "/dyka_2ppc.csv");  // Fig. 6 at 2 particles per cell
