@@ -34,7 +34,9 @@ sanitize: deps
 	@cmake --build $(SANITIZE_DIR) --target test_programs -j $(JOBS)
 	@cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -E '^docs_browser$$'
 
-figures: build
+# Builds only what the figures run (CMake target figure_programs: the CLI and the suites' drivers).
+figures: configure
+	@cmake --build $(BUILD_DIR) --target figure_programs -j $(JOBS)
 	@bash verification/make_figures.sh $(BUILD_DIR)
 
 bench: build

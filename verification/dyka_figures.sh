@@ -36,7 +36,7 @@ g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability
   echo
   echo "![dyka_work_precision](figures/dyka_work_precision.png)"
   echo
-  echo "RMS of v_A against the wall time of each run of the mesh sweep (points left to right: 10 to 5120 cells), measured with one run per core at a time."
+  echo "RMS of v_A against the wall time of each run of the mesh sweep (points left to right: 10 to 2560 cells), measured with one run per core at a time."
   echo
   echo "### Where methods fail: the largest stable CFL (\`dyka_stability\`)"
   echo

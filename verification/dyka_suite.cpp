@@ -5,9 +5,16 @@
 //
 //   build/bin/dyka_suite DATA_DIR REPORT SCENE
 //
-// Cases: the mesh sweep of Fig. 6 (10 to 5120 cells, paper/08_test_cases.md) for linear, uGIMP and LME
+// Cases: the mesh sweep of Fig. 6 (10 to 2560 cells, paper/08_test_cases.md) for linear, uGIMP and LME
 // gamma 3 with forward Euler and the predictor-corrector (also Figs. 7, 9, 10 and the work-
 // precision chart); the gamma sweep of Fig. 8 (40 cells).
+//
+// The sweep stops at 2560 cells, the first mesh where particles cross cells at 1 particle per cell
+// (crossing ratio 1.27). 5120 cells (ratio 2.5) alone cost 167 of the 228 CPU-seconds of this suite,
+// which would put make figures past its 180 s on 2 cores (issues 9 and 10); what it showed, each
+// shape's error leaving its no-crossing value, is measured more directly by the smooth suite (error
+// against amplitude / h on a fixed mesh, and Fig. 6 at 2 particles per cell). Add 5120 to
+// sweep_cells to see it; every claim below follows sweep_cells.
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +30,7 @@
 
 namespace {
 
-const std::vector<int> sweep_cells{10, 20, 40, 80, 160, 320, 640, 1280, 2560, 5120};
+const std::vector<int> sweep_cells{10, 20, 40, 80, 160, 320, 640, 1280, 2560};
 const std::vector<std::string> shapes{"linear", "ugimp", "lme"}, integrators{"fe", "npc"};
 const std::vector<double> gammas{0.8, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0};
 constexpr double speed_v0 = 5.0;              // |v0|, m/s
@@ -84,6 +91,22 @@ std::string band_of(int cells) {
   const double delta = crossing_ratio(cells);
   return delta < 0.1 ? "negligible" : delta < 1.0 ? "transition" : "crossing";
 }
+/// The meshes of the sweep in a band, as text: "10-160", or "2560" for one.
+std::string band_meshes(const std::string& band) {
+  std::vector<int> cells;
+  for (int n : sweep_cells)
+    if (band_of(n) == band) cells.push_back(n);
+  if (cells.empty()) return "none";
+  return cells.size() == 1 ? std::to_string(cells[0]) : std::to_string(cells.front()) + "-" + std::to_string(cells.back());
+}
+/// The finest mesh of the sweep, and the finest without grid crossing (the last of the transition band).
+int finest_mesh() { return sweep_cells.back(); }
+int finest_without_crossing() {
+  int finest = sweep_cells.front();
+  for (int n : sweep_cells)
+    if (band_of(n) != "crossing") finest = n;
+  return finest;
+}
 
 /// Report helpers: one table row per claim.
 struct Claim {
@@ -101,6 +124,9 @@ std::string fixed(double value, int digits = 4) {
   text << std::setprecision(digits) << value;
   return text.str();
 }
+
+/// A fitted order for the report: "none" when the band held fewer than two finished runs (NaN).
+std::string order_text(double order) { return std::isnan(order) ? "none" : fixed(order, 3); }
 
 }  // namespace
 
@@ -144,7 +170,7 @@ int main(int argc, char** argv) {
 
   // --- Fitted orders per band (Fig. 6) -------------------------------------------------------
   std::ofstream orders(folder + "/dyka_orders.csv");
-  orders << "shape,integrator,band,order,first_cells,last_cells\n";
+  orders << "shape,integrator,band,order,first_cells,last_cells,meshes\n";
   std::map<std::string, double> order_of;
   for (const auto& shape : shapes)
     for (const auto& integrator : integrators)
@@ -157,7 +183,7 @@ int main(int argc, char** argv) {
         const double order = verification::fitted_order(cells, rms, 2);  // two meshes of the band at the least
         order_of[shape + "_" + integrator + "_" + band] = order;
         orders << shape << "," << integrator << "," << band << "," << order << "," << (cells.empty() ? 0 : cells.front()) << ","
-               << (cells.empty() ? 0 : cells.back()) << "\n";
+               << (cells.empty() ? 0 : cells.back()) << "," << cells.size() << "\n";
       }
 
   // --- Claims and checks ---------------------------------------------------------------------
@@ -204,30 +230,36 @@ int main(int argc, char** argv) {
       add(list, {"The predictor-corrector is more accurate than forward Euler (Fig. 6, " + shape + ", meshes without crossing)",
                  "NPC below FE on " + std::to_string(npc_better) + " of " + std::to_string(meshes) + " meshes", npc_better == meshes, false});
     }
+    // Grid crossing: the finest mesh (in the crossing band) against the finest without crossing.
+    const int fine_cells = finest_mesh(), coarse_cells = finest_without_crossing();
+    const std::string fine_text = std::to_string(fine_cells), coarse_text = std::to_string(coarse_cells);
     for (const auto& shape : shapes)
       for (const auto& integrator : integrators) {
         const double light = order_of[shape + "_" + integrator + "_negligible"];
-        const auto& coarse = result(sweep_name(shape, integrator, 1280));
-        const auto& fine = result(sweep_name(shape, integrator, 5120));
-        const std::string measured = fine.failed ? "the 5120-cell run stopped: " + fine.failure
-                                                 : "RMS/v0 " + fixed(coarse.rms / speed_v0) + " at 1280 cells, " + fixed(fine.rms / speed_v0) +
-                                                       " at 5120 (order " + fixed(light, 3) + " without crossing)";
-        add(list, {"Grid crossing spoils the solution: the error at 5120 cells exceeds the error at 1280 (" + shape + ", " + integrator + ")",
+        const auto& coarse = result(sweep_name(shape, integrator, coarse_cells));
+        const auto& fine = result(sweep_name(shape, integrator, fine_cells));
+        const std::string measured = fine.failed ? "the " + fine_text + "-cell run stopped: " + fine.failure
+                                                 : "RMS/v0 " + fixed(coarse.rms / speed_v0) + " at " + coarse_text + " cells, " +
+                                                       fixed(fine.rms / speed_v0) + " at " + fine_text + " (order " + fixed(light, 3) + " without crossing)";
+        add(list, {"Grid crossing spoils the solution: the error at " + fine_text + " cells exceeds the error at " + coarse_text + " (" + shape + ", " +
+                       integrator + ")",
                    measured, fine.failed || fine.rms > coarse.rms, false});
       }
     for (const auto& integrator : integrators) {
-      const auto& linear = result(sweep_name("linear", integrator, 5120));
-      const auto& ugimp = result(sweep_name("ugimp", integrator, 5120));
-      const auto& lme = result(sweep_name("lme", integrator, 5120));
+      const auto& linear = result(sweep_name("linear", integrator, fine_cells));
+      const auto& ugimp = result(sweep_name("ugimp", integrator, fine_cells));
+      const auto& lme = result(sweep_name("lme", integrator, fine_cells));
+      const auto& ugimp_coarse = result(sweep_name("ugimp", integrator, coarse_cells));
+      const auto& lme_coarse = result(sweep_name("lme", integrator, coarse_cells));
       const std::string linear_text = linear.failed ? "stopped (" + linear.failure.substr(linear.failure.find(": ") + 2) + ")"
                                                     : "RMS/v0 " + fixed(linear.rms / speed_v0);
-      add(list, {"uGIMP and LME withstand grid crossing better than linear shape functions (5120 cells, " + integrator + ")",
+      add(list, {"uGIMP and LME withstand grid crossing better than linear shape functions (" + fine_text + " cells, " + integrator + ")",
                  "linear " + linear_text + "; uGIMP RMS/v0 " + fixed(ugimp.rms / speed_v0) + ", LME " + fixed(lme.rms / speed_v0),
                  !ugimp.failed && !lme.failed && (linear.failed || (ugimp.rms < linear.rms && lme.rms < linear.rms)), false});
-      add(list, {"... and stay accurate through it: their error at 5120 cells is below their error at 1280 (" + integrator + ")",
-                 "uGIMP " + fixed(result(sweep_name("ugimp", integrator, 1280)).rms / speed_v0) + " -> " + fixed(ugimp.rms / speed_v0) +
-                     ", LME " + fixed(result(sweep_name("lme", integrator, 1280)).rms / speed_v0) + " -> " + fixed(lme.rms / speed_v0),
-                 ugimp.rms < result(sweep_name("ugimp", integrator, 1280)).rms && lme.rms < result(sweep_name("lme", integrator, 1280)).rms, false});
+      add(list, {"... and stay accurate through it: their error at " + fine_text + " cells is below their error at " + coarse_text + " (" + integrator + ")",
+                 "uGIMP " + fixed(ugimp_coarse.rms / speed_v0) + " -> " + fixed(ugimp.rms / speed_v0) + ", LME " + fixed(lme_coarse.rms / speed_v0) +
+                     " -> " + fixed(lme.rms / speed_v0),
+                 !ugimp.failed && !lme.failed && ugimp.rms < ugimp_coarse.rms && lme.rms < lme_coarse.rms, false});
     }
     sections.push_back({"Fig. 6: error at point A against the number of cells (`dyka_fig6`)", list});
   }
@@ -312,12 +344,14 @@ int main(int argc, char** argv) {
     for (const auto& claim : list) report << "| " << claim.claim << " | " << claim.measured << " | " << verdict(claim) << " |\n";
     report << "\n";
   }
-  report << "Fitted orders of convergence (GSL least squares on log RMS against log cells, per band of paper/08_test_cases.md):\n\n"
-         << "| shape | integrator | negligible (10-160) | transition (320-1280) | crossing (2560-5120) |\n|---|---|---|---|---|\n";
+  report << "Fitted orders of convergence (GSL least squares on log RMS against log cells, per band of paper/08_test_cases.md; "
+            "none where the band holds fewer than two finished runs):\n\n"
+         << "| shape | integrator | negligible (" << band_meshes("negligible") << ") | transition (" << band_meshes("transition")
+         << ") | crossing (" << band_meshes("crossing") << ") |\n|---|---|---|---|---|\n";
   for (const auto& shape : shapes)
     for (const auto& integrator : integrators)
-      report << "| " << shape << " | " << integrator << " | " << fixed(order_of[shape + "_" + integrator + "_negligible"], 3) << " | "
-             << fixed(order_of[shape + "_" + integrator + "_transition"], 3) << " | " << fixed(order_of[shape + "_" + integrator + "_crossing"], 3)
+      report << "| " << shape << " | " << integrator << " | " << order_text(order_of[shape + "_" + integrator + "_negligible"]) << " | "
+             << order_text(order_of[shape + "_" + integrator + "_transition"]) << " | " << order_text(order_of[shape + "_" + integrator + "_crossing"])
              << " |\n";
   report << "\n";
   std::printf("dyka_suite: %zu runs, hard checks %s\n", results.size(), hard_failure ? "FAILED" : "passed");

@@ -1,12 +1,13 @@
 # Fig. 6: RMS of v_A against the number of cells, one panel per shape function, FE and NPC,
 # the background shaded by the grid-crossing ratio of paper/08_test_cases.md (light: negligible; middle:
-# transition; dark: crossing), the fitted order of each band printed on the panel.
+# transition; dark: crossing), the fitted order of each band printed on the panel ('1 mesh': a band with
+# one finished run has no order; 'stopped': none finished).
 # gnuplot -e "data='...'; out='...'; orders='shape,integrator,band,order rows as text'" dyka_fig6.gp
 load dir."/common.gp"
 w = 12; h = 4
 sweep = data.'/dyka_sweep.csv'
 band1 = 0.1 / (3.298e-5 / (0.5 * 0.1333)); band2 = 1.0 / (3.298e-5 / (0.5 * 0.1333))
-order_of(shape, integrator, band) = system(sprintf("awk -F, '$1==\"%s\" && $2==\"%s\" && $3==\"%s\" {if ($4 == \"nan\" || $4 == \"-nan\") printf \"stopped\"; else printf \"%%.2f\", $4}' %s", shape, integrator, band, orders))
+order_of(shape, integrator, band) = system(sprintf("awk -F, '$1==\"%s\" && $2==\"%s\" && $3==\"%s\" {if ($4 != \"nan\" && $4 != \"-nan\") printf \"%%.2f\", $4; else if ($7 == 1) printf \"1 mesh\"; else printf \"stopped\"}' %s", shape, integrator, band, orders))
 panel(shape, title) = sprintf("set title '%s'; set object 1 rect from 7,1e-3 to band1,10 behind fc rgb '#f4f4f4' fs solid noborder; set object 2 rect from band1,1e-3 to band2,10 behind fc rgb '#dcdcdc' fs solid noborder; set object 3 rect from band2,1e-3 to 8000,10 behind fc rgb '#b8b8b8' fs solid noborder; set label 1 sprintf('FE  %%s | %%s | %%s', order_of('%s','fe','negligible'), order_of('%s','fe','transition'), order_of('%s','fe','crossing')) at graph 0.03, graph 0.1 tc rgb '#d62728'; set label 2 sprintf('NPC %%s | %%s | %%s', order_of('%s','npc','negligible'), order_of('%s','npc','transition'), order_of('%s','npc','crossing')) at graph 0.03, graph 0.04 tc rgb '#1f77b4'; plot sweep using (strcol(1) eq '%s' && strcol(2) eq 'fe' && strcol(12) eq 'ok' ? $3 : NaN):8 with linespoints pt 7 lc rgb '#d62728' title 'FE', sweep using (strcol(1) eq '%s' && strcol(2) eq 'npc' && strcol(12) eq 'ok' ? $3 : NaN):8 with linespoints pt 5 lc rgb '#1f77b4' title 'NPC', sweep using (strcol(1) eq '%s' && strcol(12) eq 'failed' ? $3 : NaN):(5) with points pt 2 ps 2 lc rgb 'black' title 'run stopped (unstable)'", title, shape, shape, shape, shape, shape, shape, shape, shape, shape)
 draw = "set multiplot layout 1,3 title 'Fig. 6: RMS of v_A (Eq. 43) / |v_0| against the number of cells; fitted orders per band: negligible | transition | crossing'; set logscale xy; set xrange [7:8000]; set yrange [0.02:10]; set xlabel 'cells'; set ylabel 'RMS / |v_0|'; set key top right; ".panel('linear','linear (Q4)')."; ".panel('ugimp','uGIMP')."; ".panel('lme','LME, γ = 3')."; unset multiplot"
 load dir."/output.gp"
