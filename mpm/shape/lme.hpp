@@ -105,6 +105,41 @@ LmePartition lme_partition(int count, const Vector<Dim>* offsets, double beta, c
   return {largest, sum};
 }
 
+/// Eq. (36) after every exponent of Eq. (40) has moved by a linear function of its offset,
+/// \f$ f_I \leftarrow f_I + t_I + c \f$ with \f$ t_I = \mathbf a \cdot (\mathbf x - \mathbf x_I) \f$ (cell units) and c the
+/// same for every node, which cancels from the N_I of Eq. (35) and from r and J: \f$ w_I \leftarrow w_I e^{t_I} \f$,
+/// without exponentials, \f$ e^{t} \f$ being its Taylor polynomial of degree 5,
+/// \f[ e^{t} \approx 1 + t + \tfrac{t^2}{2} + \tfrac{t^3}{6} + \tfrac{t^4}{24} + \tfrac{t^5}{120} , \qquad
+///     \text{relative remainder} \le \tfrac{t^6}{720} e^{|t|} < 6 \cdot 10^{-18} \text{ for } |t| \le 4 \cdot 10^{-3} , \f]
+/// below the rounding of exp() itself and of the exponent it would be given (about 1e-15 relative).
+/// Call only when series_is_exact(a, D): then \f$ |t_I| \le |\mathbf a| D / 2 \le 4 \cdot 10^{-3} \f$ for every
+/// neighbour (\f$ |\mathbf x - \mathbf x_I| \le R = D/2 \f$). Reads `before`, writes `after` (they may be the same
+/// array); returns the new \f$ \sum_I w_I \f$. Two uses:
+/// - a Newton step \f$ \boldsymbol\lambda \leftarrow \boldsymbol\lambda + \mathbf s \f$: \f$ \mathbf a = \mathbf s \f$, c = 0;
+/// - the particle moved by \f$ \boldsymbol\delta \f$ cells since its last shape functions, and its multiplier
+///   from \f$ \boldsymbol\lambda \f$ to the start \f$ \boldsymbol\lambda' \f$: with beta constant,
+///   \f$ f_I(\mathbf x + \boldsymbol\delta h, \boldsymbol\lambda') - f_I(\mathbf x, \boldsymbol\lambda)
+///   = (\boldsymbol\lambda' - \boldsymbol\lambda - 2\beta\boldsymbol\delta) \cdot (\mathbf x + \boldsymbol\delta h - \mathbf x_I)/h + c \f$
+///   (expand \f$ |\mathbf d + \boldsymbol\delta|^2 \f$ in Eq. (40)), so the last N_I serve as weights.
+template <int Dim>
+double lme_weights_moved(int count, const Vector<Dim>* offsets, const Vector<Dim>& exponent_slope, const double* before,
+                         double* after) {
+  double sum = 0.0;
+  for (int I = 0; I < count; ++I) {
+    const double t = exponent_slope.dot(offsets[I]);
+    after[I] = before[I] * (1.0 + t * (1.0 + t * (1.0 / 2.0 + t * (1.0 / 6.0 + t * (1.0 / 24.0 + t * (1.0 / 120.0))))));
+    sum += after[I];
+  }
+  return sum;
+}
+
+/// Whether lme_weights_moved is exact to rounding for the slope a: \f$ |\mathbf a| D / 2 \le 4 \cdot 10^{-3} \f$,
+/// D the neighbourhood's diameter (2 R / h), tested on squares.
+template <int Dim>
+bool series_is_exact(const Vector<Dim>& exponent_slope, double diameter) {
+  return exponent_slope.squaredNorm() * (diameter * diameter) <= 6.4e-5;
+}
+
 /// The gradient and Hessian of log Z with respect to lambda, from the weights of lme_partition.
 template <int Dim>
 struct LmeMoments {
@@ -162,9 +197,10 @@ inline void lme_values(int count, double weight_sum, double* weights) {
 template <int Dim>
 void lme_gradients(int count, const double* values, const Matrix<Dim>& inverse_hessian, const Vector<Dim>& residual,
                    double h, Vector<Dim>* offsets_then_gradients) {
+  const Matrix<Dim> per_length = inverse_hessian / h;  // one division, not one per node
   for (int I = 0; I < count; ++I) {
     const Vector<Dim> offset = offsets_then_gradients[I];
-    offsets_then_gradients[I] = -(values[I] / h) * (inverse_hessian * (offset - residual));
+    offsets_then_gradients[I] = -values[I] * (per_length * (offset - residual));
   }
 }
 
@@ -195,12 +231,17 @@ struct LmeSolution {
 /// Newton on r(lambda) = 0, Eq. (38), with J of Eq. (37), from `lambda`: lambda <- lambda + t s with
 /// s = -J^{-1} r (safeguarded_newton_step). t = 1 where the full step is certainly safe (full_step_is_safe:
 /// near the root, i.e. almost always from a warm start); elsewhere t halves from 1 until log Z has dropped
-/// by at least 1e-4 of the first-order prediction t r.s (armijo_step_length). Stops when |r| <= tolerance;
-/// leaves the weights of the last lambda in `weights`. `diameter`: that of the neighbourhood, 2 R / h.
+/// by at least 1e-4 of the first-order prediction t r.s (armijo_step_length). A step so small that
+/// exp() is its Taylor series to rounding (series_is_exact) updates the weights without exponentials
+/// (lme_weights_moved). Stops when |r| <= tolerance; leaves the weights of the last lambda in
+/// `weights`. `start`: the weights at `lambda`, already in `weights` (lme_partition, or the particle's
+/// last shape functions moved by lme_weights_moved, whose shift m is unknown: NaN).
+/// `diameter`: that of the neighbourhood, 2 R / h.
 template <int Dim>
-LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offsets, double beta, Vector<Dim> lambda, double diameter,
-                            double tolerance, int max_iterations, double* weights) {
-  LmeSolution<Dim> at{lambda, lme_partition(count, offsets, beta, lambda, weights), {}, 0, nullptr};
+LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offsets, double beta, Vector<Dim> lambda,
+                                      const LmePartition& start, double diameter, double tolerance, int max_iterations,
+                                      double* weights) {
+  LmeSolution<Dim> at{lambda, start, {}, 0, nullptr};
   at.moments = lme_moments(count, offsets, weights, at.partition.weight_sum);
   while (at.moments.residual.squaredNorm() > tolerance * tolerance) {  // |r| > tol, without a square root
     if (at.iterations == max_iterations) {
@@ -209,9 +250,13 @@ LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offsets, dou
     }
     const Vector<Dim> step = safeguarded_newton_step(at.moments.residual, at.moments.hessian, at.lambda);
     double t = 1.0;
-    if (full_step_is_safe(step.norm(), diameter)) {
+    if (series_is_exact(step, diameter)) {
+      at.partition.weight_sum = lme_weights_moved(count, offsets, step, weights, weights);
+    } else if (full_step_is_safe(step, diameter)) {
       at.partition = lme_partition(count, offsets, beta, Vector<Dim>(at.lambda + step), weights);
     } else {
+      // The line search compares log Z along the step: from weights computed afresh, whose shift m is known.
+      at.partition = lme_partition(count, offsets, beta, at.lambda, weights);
       const double log_z = at.partition.log_z();
       t = armijo_step_length(log_z, at.moments.residual.dot(step), [&](double trial) {
         at.partition = lme_partition(count, offsets, beta, Vector<Dim>(at.lambda + trial * step), weights);
@@ -278,13 +323,17 @@ class LmeShape {
     lambda_.assign(particle_count, Vector<Dim>::Zero());
     multiplier_slope_.assign(particle_count, Matrix<Dim>::Zero());
     evaluated_at_.assign(particle_count, Vector<Dim>::Zero());
+    last_count_.assign(particle_count, 0);
+    last_nodes_.assign(static_cast<size_t>(particle_count) * capacity_, -1);
+    last_values_.assign(static_cast<size_t>(particle_count) * capacity_, 0.0);
   }
 
   /// The particle's lambda (1/length) of its last successful evaluation: Eqs. (35)-(36).
   const Vector<Dim>& lagrange_multiplier(int particle) const { return lambda_[particle]; }
 
   /// N_I(x) and grad N_I(x) for every node within the support radius of x: the neighbours, lambda*
-  /// by Newton from the particle's last multiplier moved to x (predicted_multiplier), then Eq. (35) and Eq. (41).
+  /// by Newton from the particle's last multiplier moved to x (predicted_multiplier) and the weights
+  /// there (start_weights), then Eq. (35) and Eq. (41).
   /// \throws ShapeFailure if x is outside the grid, or if Newton does not converge; the
   /// particle's multiplier is then left as it was.
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
@@ -293,8 +342,11 @@ class LmeShape {
     Vector<Dim>* offsets = gradients;  // the offsets (x - x_I)/h live where the gradients will go
     const int count = lme_neighbours(grid_, radius_squared_, capacity_, particle, x, nodes, offsets);
     const double beta = beta_in_cell_units(count, offsets);
-    const LmeSolution<Dim> solution = solve_lme_multiplier(count, offsets, beta, predicted_multiplier(particle, x),
-                                                           diameter_, options_.newton_tolerance, options_.max_iterations, values);
+    const Vector<Dim> moved = (x - evaluated_at_[particle]) / h;  // cells, since the last evaluation
+    const Vector<Dim> start = predicted_multiplier(particle, moved);
+    const LmePartition start_partition = start_weights(particle, moved, count, nodes, offsets, beta, start, values);
+    const LmeSolution<Dim> solution = solve_lme_multiplier(count, offsets, beta, start, start_partition, diameter_,
+                                                           options_.newton_tolerance, options_.max_iterations, values);
     if (solution.failure) throw not_converged(particle, solution.iterations, solution.moments, solution.failure);
     if (!positive_definite(solution.moments.hessian)) {
       std::ostringstream cause;
@@ -308,6 +360,7 @@ class LmeShape {
     lambda_[particle] = solution.lambda / h;
     multiplier_slope_[particle] = lme_multiplier_slope(beta, inverse_hessian);
     evaluated_at_[particle] = x;
+    remember_shape_functions(particle, count, nodes, values);
     diagnostics_.record(count, solution.iterations);
     return count;
   }
@@ -318,11 +371,45 @@ class LmeShape {
   /// Newton's start, lambda h: the particle's last lambda*, moved along lme_multiplier_slope to x when
   /// that change is a step Newton would take in full (full_step_is_safe); otherwise the last lambda* as it
   /// is (a long jump, as between the points of a test, or the first evaluation, where the slope is 0).
-  Vector<Dim> predicted_multiplier(int particle, const Vector<Dim>& x) const {
-    const double h = grid_.spacing();
-    const Vector<Dim> change = multiplier_slope_[particle] * ((x - evaluated_at_[particle]) / h);
-    const Vector<Dim> last = lambda_[particle] * h;
-    return full_step_is_safe(change.norm(), diameter_) ? Vector<Dim>(last + change) : last;
+  /// `moved`: the particle's move since its last evaluation, in cells.
+  Vector<Dim> predicted_multiplier(int particle, const Vector<Dim>& moved) const {
+    const Vector<Dim> change = multiplier_slope_[particle] * moved;
+    const Vector<Dim> last = lambda_[particle] * grid_.spacing();
+    return full_step_is_safe(change, diameter_) ? Vector<Dim>(last + change) : last;
+  }
+
+  /// Eq. (36) at Newton's start, into `weights`: the particle's last shape functions moved to x and
+  /// `start` by lme_weights_moved, without exponentials, when it has the same neighbours, beta is
+  /// constant and the move is within the series' reach (particles move a small fraction of a cell per
+  /// step); by lme_partition otherwise (the first evaluation, a neighbour gained or lost, a long jump).
+  LmePartition start_weights(int particle, const Vector<Dim>& moved, int count, const int* nodes, const Vector<Dim>* offsets,
+                             double beta, const Vector<Dim>& start, double* weights) const {
+    const size_t first = static_cast<size_t>(particle) * capacity_;
+    if (options_.beta_rule == LmeOptions::BetaRule::grid_spacing && same_neighbours(particle, count, nodes)) {
+      const Vector<Dim> slope = start - lambda_[particle] * grid_.spacing() - 2.0 * beta * moved;  // moved: delta
+      if (series_is_exact(slope, diameter_)) {
+        return {std::numeric_limits<double>::quiet_NaN(), lme_weights_moved(count, offsets, slope, &last_values_[first], weights)};
+      }
+    }
+    return lme_partition(count, offsets, beta, start, weights);
+  }
+
+  /// Whether `nodes` are the particle's neighbours at its last evaluation (a loop: std::equal calls memcmp,
+  /// whose set-up costs more than comparing a few numbers).
+  bool same_neighbours(int particle, int count, const int* nodes) const {
+    if (last_count_[particle] != count) return false;
+    const int* last = &last_nodes_[static_cast<size_t>(particle) * capacity_];
+    for (int I = 0; I < count; ++I)
+      if (nodes[I] != last[I]) return false;
+    return true;
+  }
+
+  /// Keeps the particle's neighbours and shape functions for start_weights at its next evaluation.
+  void remember_shape_functions(int particle, int count, const int* nodes, const double* values) {
+    const size_t first = static_cast<size_t>(particle) * capacity_;
+    last_count_[particle] = count;
+    std::copy(nodes, nodes + count, &last_nodes_[first]);
+    std::copy(values, values + count, &last_values_[first]);
   }
 
   /// beta h^2: gamma, or gamma (h / hbar)^2 under the authors' rule. Under that rule beta varies
@@ -352,6 +439,9 @@ class LmeShape {
   std::vector<Vector<Dim>> lambda_;  ///< per particle, 1/length: the warm start
   std::vector<Matrix<Dim>> multiplier_slope_;  ///< per particle, d(lambda* h)/d(x/h) where it was last evaluated
   std::vector<Vector<Dim>> evaluated_at_;      ///< per particle, where it was last evaluated
+  std::vector<int> last_count_;                ///< per particle, its neighbours there (0: none yet)
+  std::vector<int> last_nodes_;                ///< per particle, capacity() slots: those neighbours
+  std::vector<double> last_values_;            ///< per particle, capacity() slots: its N_I there
   ShapeDiagnostics diagnostics_;
 };
 
@@ -836,6 +926,58 @@ TEST_CASE("Eqs. (37)-(38) and Eq. (40): r and J are the gradient and Hessian of 
   REQUIRE(close.residual.squaredNorm() <= 1e-6 * second.trace());  // the one-pass branch
   REQUIRE(at.residual.squaredNorm() > 1e-6 * printed.trace());       // ... and above, the covariance branch
   CHECK((covariance - close.hessian).norm() <= 1e-14);
+}
+
+TEST_CASE("Eq. (36) moved without exponentials: the series weights equal exp()'s to rounding, after a Newton step and after the particle moved") {
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {10, 10});
+  const double radius_squared = -std::log(1e-6) / 3.0, beta = 3.0, diameter = 2.0 * std::sqrt(radius_squared);
+  int nodes[16], moved_nodes[16];
+  Vector<2> offsets[16], moved_offsets[16];
+  double series[16], direct[16];
+  const int count = lme_neighbours(plane, radius_squared, 16, 0, Vector<2>(4.4, 5.7), nodes, offsets);
+  REQUIRE(count >= 12);
+  const Vector<2> lambda(0.3, -0.7);
+  // The shape functions of two weight lists: the weights over their sum.
+  auto largest_difference = [&](int n, double series_sum, double direct_sum) {
+    double worst = 0.0;
+    for (int I = 0; I < n; ++I) worst = std::max(worst, std::abs(series[I] / series_sum - direct[I] / direct_sum) / (direct[I] / direct_sum));
+    return worst;
+  };
+  // A Newton step as long as the series allows, |s| D / 2 = 4e-3 (a little less, for the test's own rounding).
+  const Vector<2> step = Vector<2>(0.6, -0.8) * (0.999 * 8e-3 / diameter);
+  REQUIRE(series_is_exact(step, diameter));
+  CHECK_FALSE(series_is_exact(Vector<2>(step * 1.01), diameter));
+  lme_partition(count, offsets, beta, lambda, series);
+  const double stepped = lme_weights_moved(count, offsets, step, series, series);
+  const LmePartition exact = lme_partition(count, offsets, beta, Vector<2>(lambda + step), direct);
+  // exp()'s own weights carry the rounding of their exponents, up to beta R^2 = 13.8 in size: about
+  // 14 eps = 3e-15 relative. A series of degree 3 would be off by t^4/24 ~ 1e-11: the test tells the degree.
+  CHECK(largest_difference(count, stepped, exact.weight_sum) <= 1e-14);
+  // The particle moved by delta = (1e-3, -2e-3) cells (the same neighbours), its multiplier to
+  // lambda' = lambda + 2 beta delta + (1e-3, 1e-3) (nearly as predicted_multiplier moves it): from its old
+  // shape functions, with the slope lambda' - lambda - 2 beta delta = (1e-3, 1e-3).
+  const Vector<2> delta(1e-3, -2e-3), moved_lambda = lambda + 2.0 * beta * delta + Vector<2>(1e-3, 1e-3);
+  const LmePartition old = lme_partition(count, offsets, beta, lambda, series);
+  for (int I = 0; I < count; ++I) series[I] /= old.weight_sum;  // the last N_I
+  REQUIRE(lme_neighbours(plane, radius_squared, 16, 0, Vector<2>(4.4 + delta[0], 5.7 + delta[1]), moved_nodes, moved_offsets) == count);
+  REQUIRE(std::equal(nodes, nodes + count, moved_nodes));
+  const Vector<2> slope = moved_lambda - lambda - 2.0 * beta * delta;
+  REQUIRE(series_is_exact(slope, diameter));
+  const double moved_sum = lme_weights_moved(count, moved_offsets, slope, series, series);
+  const LmePartition moved_exact = lme_partition(count, moved_offsets, beta, moved_lambda, direct);
+  CHECK(largest_difference(count, moved_sum, moved_exact.weight_sum) <= 1e-14);
+  // Through LmeShape: a particle moved in small steps gives the shape functions of a fresh evaluation
+  // (exponentials only) at the same point, to the Newton tolerance.
+  LmeShape<2> walked(plane), fresh(plane);
+  walked.initialise(1);
+  fresh.initialise(1);
+  double values[16], reference[16];
+  Vector<2> gradients[16];
+  Vector<2> at(4.4, 5.7);
+  for (int k = 0; k < 200; ++k, at += Vector<2>(2e-4, 1e-4)) walked.evaluate(0, at, nodes, values, gradients);
+  const int n = walked.evaluate(0, at, nodes, values, gradients);
+  REQUIRE(fresh.evaluate(0, at, moved_nodes, reference, moved_offsets) == n);
+  for (int I = 0; I < n; ++I) CHECK(values[I] == doctest::Approx(reference[I]).epsilon(1e-9));
 }
 
 TEST_CASE("Eq. (39): grad N_I = N_I (grad f_I - sum_J N_J grad f_J), with the total derivatives of f_I by finite differences") {

@@ -46,8 +46,13 @@ Vector<Dim> safeguarded_newton_step(const Vector<Dim>& r, Matrix<Dim> J, const V
 /// |s| D e^{2 |s| D} s^T J s (the weights move by at most e^{t |s| D}), so with s = -J^{-1} r,
 /// log Z(lambda + s) - log Z(lambda) <= -(1/2 - |s| D e^{2|s|D} / 6) r.J^{-1} r <= -0.27 r.J^{-1} r, which
 /// passes Armijo's -1e-4 r.J^{-1} r. Warm-started Newton (the particle moved a little since the last
-/// step) is almost always there: one exp per neighbour and iteration, no log.
-inline bool full_step_is_safe(double step_length, double diameter) { return step_length * diameter <= 0.5; }
+/// step) is almost always there: one exp per neighbour and iteration, no log. Tested as
+/// \f$ |s|^2 D^2 \le 1/4 \f$: a square root would lengthen the chain of dependent operations that
+/// each evaluation is.
+template <int Dim>
+bool full_step_is_safe(const Vector<Dim>& step, double diameter) {
+  return step.squaredNorm() * (diameter * diameter) <= 0.25;
+}
 
 /// Armijo backtracking for a descent step s from lambda with slope r.s < 0: t halves from 1 until
 /// trial_log_z(t) = log Z(lambda + t s) <= log_z + 1e-4 t slope + rounding. Returns t, or 0 when 60
@@ -86,8 +91,8 @@ TEST_CASE("LME Newton safeguards: the capped step, the damped step, Armijo on a 
   CHECK(armijo_step_length(1.0, -12.0, [&](double t) { return quartic(1.0 - 3.0 * t); }) == 0.5);
   // No decrease anywhere along the step: gives up with 0.
   CHECK(armijo_step_length(1.0, -4.0, [](double) { return 2.0; }) == 0.0);
-  CHECK(full_step_is_safe(0.1, 4.0));
-  CHECK(!full_step_is_safe(0.2, 4.0));
+  CHECK(full_step_is_safe(Vector<2>(0.06, 0.08), 4.0));   // |s| D = 0.4
+  CHECK(!full_step_is_safe(Vector<2>(0.12, 0.16), 4.0));  // |s| D = 0.8
 }
 
 }  // namespace mpm
