@@ -31,7 +31,7 @@ def compare(old_rows, new_rows):
     """(largest relative change, row, column, problem or None)"""
     if len(old_rows) != len(new_rows):
         return math.inf, -1, -1, f"{len(old_rows)} rows before, {len(new_rows)} now"
-    columns = max((len(row) for row in old_rows), default=0)
+    columns = max((len(row) for row in old_rows + new_rows), default=0)  # a file may have gained a column
     scale = [0.0] * columns
     for row in old_rows + new_rows:
         for k, cell in enumerate(row):
