@@ -2,19 +2,20 @@
 /// What a shape function tells about its own work: stencil sizes and, for LME, Newton iterations.
 ///
 /// The stencils are computed on every core at once, so each thread counts into its own slot
-/// (a cache line apart, so that the threads do not slow each other down); the totals add the slots.
+/// (worker_index(); a cache line apart, so that the threads do not slow each other down); the totals
+/// add the slots.
 #pragma once
-#include <omp.h>
-
 #include <algorithm>
 #include <array>
+
+#include "mpm/core/parallel.hpp"
 
 namespace mpm {
 
 class ShapeDiagnostics {
  public:
   void record(int neighbours, int newton_iterations = 0) {
-    Slot& slot = slots_[std::min(omp_get_thread_num(), slot_count - 1)];
+    Slot& slot = slots_[std::min(worker_index(), slot_count - 1)];
     ++slot.evaluations;
     slot.neighbours_total += neighbours;
     slot.neighbours_max = std::max(slot.neighbours_max, neighbours);
