@@ -147,17 +147,9 @@ struct LmeMoments {
   Matrix<Dim> hessian;   ///< J, Eq. (37)
 };
 
-/// Eqs. (37) and (38), with \f$ p_I = w_I / \sum_J w_J \f$ the shape functions of Eq. (35) at this lambda:
-/// \f[ r(x, \lambda) = \frac{\partial \log Z}{\partial \lambda} = \sum_I p_I (x - x_I), \qquad
-///     J(x, \lambda) = \frac{\partial r}{\partial \lambda} = \sum_I p_I (x - x_I) \otimes (x - x_I) - r \otimes r . \f]
-/// Near the solution (\f$ |r|^2 \le 10^{-6} \operatorname{tr} \sum_I p_I (x - x_I) \otimes (x - x_I) \f$, i.e. almost
-/// always from a warm start) J is Eq. (37) as written, in the same pass as r: subtracting the tiny
-/// \f$ r \otimes r \f$ loses nothing. Elsewhere J is computed as the covariance of the offsets under p,
-/// \f$ J = \sum_I p_I (x - x_I - r) \otimes (x - x_I - r) \f$, which is Eq. (37) without its cancellation
-/// (far from the solution, with nearly all weight on one node, Eq. (37) as written can round to 0 or
-/// below). J is symmetric and positive definite when the neighbours span the space, so log Z is
-/// convex and r = 0 has one solution. (The second pass is a function of its own, lme_covariance, and
-/// lme_moments is declared inline: GCC then inlines it into Newton's loop, 5 % faster on the Dyka bar.)
+/// Eq. (37) without its cancellation, for lme_moments far from the solution: the covariance of the
+/// offsets under \f$ p_I = w_I \cdot \f$ `inverse_sum`, about their mean r (`residual`),
+/// \f[ J = \sum_I p_I (x - x_I - r) \otimes (x - x_I - r) . \f]
 template <int Dim>
 Matrix<Dim> lme_covariance(int count, const Vector<Dim>* offsets, const double* weights, double inverse_sum,
                            const Vector<Dim>& residual) {
@@ -169,6 +161,17 @@ Matrix<Dim> lme_covariance(int count, const Vector<Dim>* offsets, const double* 
   return J * inverse_sum;
 }
 
+/// Eqs. (37) and (38), with \f$ p_I = w_I / \sum_J w_J \f$ the shape functions of Eq. (35) at this lambda:
+/// \f[ r(x, \lambda) = \frac{\partial \log Z}{\partial \lambda} = \sum_I p_I (x - x_I), \qquad
+///     J(x, \lambda) = \frac{\partial r}{\partial \lambda} = \sum_I p_I (x - x_I) \otimes (x - x_I) - r \otimes r . \f]
+/// Near the solution (\f$ |r|^2 \le 10^{-6} \operatorname{tr} \sum_I p_I (x - x_I) \otimes (x - x_I) \f$, i.e. almost
+/// always from a warm start) J is Eq. (37) as written, in the same pass as r: subtracting the tiny
+/// \f$ r \otimes r \f$ loses nothing. Elsewhere J is computed as the covariance of the offsets under p,
+/// \f$ J = \sum_I p_I (x - x_I - r) \otimes (x - x_I - r) \f$, which is Eq. (37) without its cancellation
+/// (far from the solution, with nearly all weight on one node, Eq. (37) as written can round to 0 or
+/// below). J is symmetric and positive definite when the neighbours span the space, so log Z is
+/// convex and r = 0 has one solution. (The second pass is a function of its own, lme_covariance, and
+/// lme_moments is declared inline: GCC then inlines it into Newton's loop, 5 % faster on the Dyka bar.)
 template <int Dim>
 inline LmeMoments<Dim> lme_moments(int count, const Vector<Dim>* offsets, const double* weights, double weight_sum) {
   const double inverse_sum = 1.0 / weight_sum;  // one division: p_I = w_I / sum_J w_J
@@ -262,8 +265,9 @@ inline LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offse
     } else if (full_step_is_safe(step, diameter)) {
       at.partition = lme_partition(count, offsets, beta, Vector<Dim>(at.lambda + step), weights);
     } else {
-      // The line search compares log Z along the step: from weights computed afresh, whose shift m is known.
-      at.partition = lme_partition(count, offsets, beta, at.lambda, weights);
+      // The line search compares log Z along the step: weights from the series start have no known
+      // shift m (NaN), so they are computed afresh first.
+      if (std::isnan(at.partition.largest)) at.partition = lme_partition(count, offsets, beta, at.lambda, weights);
       const double log_z = at.partition.log_z();
       t = armijo_step_length(log_z, at.moments.residual.dot(step), [&](double trial) {
         at.partition = lme_partition(count, offsets, beta, Vector<Dim>(at.lambda + trial * step), weights);
