@@ -126,8 +126,9 @@ double lme_weights_moved(int count, const Vector<Dim>* offsets, const Vector<Dim
                          double* after) {
   double sum = 0.0;
   for (int I = 0; I < count; ++I) {
-    const double t = exponent_slope.dot(offsets[I]);
-    after[I] = before[I] * (1.0 + t * (1.0 + t * (1.0 / 2.0 + t * (1.0 / 6.0 + t * (1.0 / 24.0 + t * (1.0 / 120.0))))));
+    const double t = exponent_slope.dot(offsets[I]), t2 = t * t;
+    // Estrin's grouping, (1 + t) + t^2 (1/2 + t/6) + t^4 (1/24 + t/120): three products deep instead of five.
+    after[I] = before[I] * ((1.0 + t) + t2 * ((1.0 / 2.0 + t * (1.0 / 6.0)) + t2 * (1.0 / 24.0 + t * (1.0 / 120.0))));
     sum += after[I];
   }
   return sum;
@@ -145,6 +146,7 @@ template <int Dim>
 struct LmeMoments {
   Vector<Dim> residual;  ///< r, Eq. (38)
   Matrix<Dim> hessian;   ///< J, Eq. (37)
+  double inverse_sum;    ///< \f$ 1 / \sum_I w_I \f$, by which the weights become the N_I of Eq. (35)
 };
 
 /// Eq. (37) without its cancellation, for lme_moments far from the solution: the covariance of the
@@ -183,14 +185,14 @@ inline LmeMoments<Dim> lme_moments(int count, const Vector<Dim>* offsets, const 
   }
   r *= inverse_sum;
   second *= inverse_sum;
-  if (r.squaredNorm() <= 1e-6 * second.trace()) return {r, second - r * r.transpose()};  // Eq. (37) as written
-  return {r, lme_covariance(count, offsets, weights, inverse_sum, r)};                // far from the solution
+  if (r.squaredNorm() <= 1e-6 * second.trace()) return {r, second - r * r.transpose(), inverse_sum};  // Eq. (37) as written
+  return {r, lme_covariance(count, offsets, weights, inverse_sum, r), inverse_sum};                // far from the solution
 }
 
 /// Eq. (35): the shape functions at the converged multiplier, in place of the weights,
-/// \f[ N_I^*(x) = \frac{\exp\left[ -\beta |x - x_I|^2 + \lambda^* \cdot (x - x_I) \right]}{Z(x, \lambda^*)} . \f]
-inline void lme_values(int count, double weight_sum, double* weights) {
-  const double inverse_sum = 1.0 / weight_sum;
+/// \f[ N_I^*(x) = \frac{\exp\left[ -\beta |x - x_I|^2 + \lambda^* \cdot (x - x_I) \right]}{Z(x, \lambda^*)} , \f]
+/// the weights times `inverse_sum`, \f$ 1 / \sum_I w_I \f$ (lme_moments has it).
+inline void lme_values(int count, double inverse_sum, double* weights) {
   for (int I = 0; I < count; ++I) weights[I] *= inverse_sum;
 }
 
@@ -202,11 +204,12 @@ inline void lme_values(int count, double weight_sum, double* weights) {
 /// while for the residual \f$ |r| \le \f$ tol h that Newton leaves it keeps \f$ \sum_I \nabla N_I = 0 \f$ and
 /// \f$ \sum_I x_I \otimes \nabla N_I = I \f$ exact up to rounding (they would otherwise be off by
 /// \f$ |J^{-1} r| \f$). Cell units in, physical out: `offsets` are (x - x_I)/h, J is in cell units, and
-/// the results (written over `offsets`) are in 1/length. `inverse_hessian`: \f$ (J^*)^{-1} \f$, in cell units.
+/// the results (written over `offsets`) are in 1/length. `inverse_hessian`: \f$ (J^*)^{-1} \f$, in cell units;
+/// `inverse_spacing`: 1/h.
 template <int Dim>
 void lme_gradients(int count, const double* values, const Matrix<Dim>& inverse_hessian, const Vector<Dim>& residual,
-                   double h, Vector<Dim>* offsets_then_gradients) {
-  const Matrix<Dim> per_length = inverse_hessian / h;  // one division, not one per node
+                   double inverse_spacing, Vector<Dim>* offsets_then_gradients) {
+  const Matrix<Dim> per_length = inverse_hessian * inverse_spacing;
   for (int I = 0; I < count; ++I) {
     const Vector<Dim> offset = offsets_then_gradients[I];
     offsets_then_gradients[I] = -values[I] * (per_length * (offset - residual));
@@ -319,6 +322,7 @@ class LmeShape {
     }
     capacity_ = lattice_points_in_ball_bound<Dim>(std::sqrt(radius_squared_));
     diameter_ = 2.0 * std::sqrt(radius_squared_);
+    inverse_spacing_ = 1.0 / grid.spacing();
   }
 
   /// An upper bound of the neighbours of any point: the most lattice points a ball of radius R can
@@ -340,7 +344,7 @@ class LmeShape {
   }
 
   /// The particle's lambda (1/length) of its last successful evaluation: Eqs. (35)-(36).
-  const Vector<Dim>& lagrange_multiplier(int particle) const { return lambda_[particle]; }
+  Vector<Dim> lagrange_multiplier(int particle) const { return lambda_[particle] * inverse_spacing_; }
 
   /// N_I(x) and grad N_I(x) for every node within the support radius of x: the neighbours, lambda*
   /// by Newton from the particle's last multiplier moved to x (predicted_multiplier) and the weights
@@ -349,11 +353,10 @@ class LmeShape {
   /// particle's multiplier is then left as it was.
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
-    const double h = grid_.spacing();
     Vector<Dim>* offsets = gradients;  // the offsets (x - x_I)/h live where the gradients will go
     const int count = lme_neighbours(grid_, radius_squared_, capacity_, particle, x, nodes, offsets);
     const double beta = beta_in_cell_units(count, offsets);
-    const Vector<Dim> moved = (x - evaluated_at_[particle]) / h;  // cells, since the last evaluation
+    const Vector<Dim> moved = (x - evaluated_at_[particle]) * inverse_spacing_;  // cells, since the last evaluation
     const Vector<Dim> start = predicted_multiplier(particle, moved);
     const LmePartition start_partition = start_weights(particle, moved, count, nodes, offsets, beta, start, values);
     const LmeSolution<Dim> solution = solve_lme_multiplier(count, offsets, beta, start, start_partition, diameter_,
@@ -366,9 +369,9 @@ class LmeShape {
       throw ShapeFailure(particle, cause.str());
     }
     const Matrix<Dim> inverse_hessian = solution.moments.hessian.inverse();
-    lme_values(count, solution.partition.weight_sum, values);
-    lme_gradients(count, values, inverse_hessian, solution.moments.residual, h, gradients);
-    lambda_[particle] = solution.lambda / h;
+    lme_values(count, solution.moments.inverse_sum, values);
+    lme_gradients(count, values, inverse_hessian, solution.moments.residual, inverse_spacing_, gradients);
+    lambda_[particle] = solution.lambda;
     multiplier_slope_[particle] = lme_multiplier_slope(beta, inverse_hessian);
     evaluated_at_[particle] = x;
     remember_shape_functions(particle, count, nodes, values);
@@ -385,7 +388,7 @@ class LmeShape {
   /// `moved`: the particle's move since its last evaluation, in cells.
   Vector<Dim> predicted_multiplier(int particle, const Vector<Dim>& moved) const {
     const Vector<Dim> change = multiplier_slope_[particle] * moved;
-    const Vector<Dim> last = lambda_[particle] * grid_.spacing();
+    const Vector<Dim>& last = lambda_[particle];
     return full_step_is_safe(change, diameter_) ? Vector<Dim>(last + change) : last;
   }
 
@@ -397,7 +400,7 @@ class LmeShape {
                              double beta, const Vector<Dim>& start, double* weights) const {
     const size_t first = static_cast<size_t>(particle) * capacity_;
     if (options_.beta_rule == LmeOptions::BetaRule::grid_spacing && same_neighbours(particle, count, nodes)) {
-      const Vector<Dim> slope = start - lambda_[particle] * grid_.spacing() - 2.0 * beta * moved;  // moved: delta
+      const Vector<Dim> slope = start - lambda_[particle] - 2.0 * beta * moved;  // moved: delta
       if (series_is_exact(slope, diameter_)) {
         return {std::numeric_limits<double>::quiet_NaN(), lme_weights_moved(count, offsets, slope, &last_values_[first], weights)};
       }
@@ -446,8 +449,9 @@ class LmeShape {
   LmeOptions options_;
   double radius_squared_ = 0.0;  ///< (R/h)^2 = -ln(tol)/gamma
   double diameter_ = 0.0;        ///< 2R/h, the neighbourhood's diameter (Newton's full_step_is_safe)
+  double inverse_spacing_ = 0.0;  ///< 1/h: multiplied by, where cell units meet lengths
   int capacity_ = 0;
-  std::vector<Vector<Dim>> lambda_;  ///< per particle, 1/length: the warm start
+  std::vector<Vector<Dim>> lambda_;  ///< per particle, lambda h (cell units): the warm start
   std::vector<Matrix<Dim>> multiplier_slope_;  ///< per particle, d(lambda* h)/d(x/h) where it was last evaluated
   std::vector<Vector<Dim>> evaluated_at_;      ///< per particle, where it was last evaluated
   std::vector<int> last_count_;                ///< per particle, its neighbours there (0: none yet)
