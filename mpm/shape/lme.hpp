@@ -141,12 +141,24 @@ bool series_is_exact(const Vector<Dim>& exponent_slope, double diameter) {
   return exponent_slope.squaredNorm() * (diameter * diameter) <= 6.4e-5;
 }
 
-/// The gradient and Hessian of log Z with respect to lambda, from the weights of lme_partition.
+/// The gradient r and Hessian J of log Z with respect to lambda (Eqs. (37)-(38)), from the weights of
+/// lme_partition, held as sums of the weights: \f$ S_0 = \sum_I w_I \f$, \f$ S_1 = \sum_I w_I (x - x_I) \f$ and
+/// \f$ S_0^2 J \f$, so that \f$ r = S_1 / S_0 \f$. In this form Newton's test \f$ |r| \le \f$ tol
+/// (\f$ |S_1|^2 \le \mathrm{tol}^2 S_0^2 \f$) and its step \f$ -J^{-1} r = -S_0 (S_0^2 J)^{-1} S_1 \f$ need no
+/// division by S_0: an iteration waits on one division (the inverse) instead of two in a row.
 template <int Dim>
 struct LmeMoments {
-  Vector<Dim> residual;  ///< r, Eq. (38)
-  Matrix<Dim> hessian;   ///< J, Eq. (37)
-  double inverse_sum;    ///< \f$ 1 / \sum_I w_I \f$, by which the weights become the N_I of Eq. (35)
+  double weight_sum;           ///< \f$ S_0 = \sum_I w_I \f$
+  Vector<Dim> first;           ///< \f$ S_1 = \sum_I w_I (x - x_I) \f$
+  Matrix<Dim> scaled_hessian;  ///< \f$ S_0^2 J \f$
+  Vector<Dim> residual() const { return first / weight_sum; }                        ///< r, Eq. (38)
+  Matrix<Dim> hessian() const { return scaled_hessian / (weight_sum * weight_sum); }  ///< J, Eq. (37)
+  /// \f$ J^{-1} \f$, as \f$ S_0^2 (S_0^2 J)^{-1} \f$.
+  Matrix<Dim> inverse_hessian() const { return (weight_sum * weight_sum) * scaled_hessian.inverse(); }
+  /// Whether \f$ |r| \le \f$ `tolerance`, as \f$ |S_1|^2 \le \mathrm{tol}^2 S_0^2 \f$.
+  bool converged(double tolerance) const {
+    return first.squaredNorm() <= (tolerance * tolerance) * (weight_sum * weight_sum);
+  }
 };
 
 /// Eq. (37) without its cancellation, for lme_moments far from the solution: the covariance of the
@@ -166,6 +178,8 @@ Matrix<Dim> lme_covariance(int count, const Vector<Dim>* offsets, const double* 
 /// Eqs. (37) and (38), with \f$ p_I = w_I / \sum_J w_J \f$ the shape functions of Eq. (35) at this lambda:
 /// \f[ r(x, \lambda) = \frac{\partial \log Z}{\partial \lambda} = \sum_I p_I (x - x_I), \qquad
 ///     J(x, \lambda) = \frac{\partial r}{\partial \lambda} = \sum_I p_I (x - x_I) \otimes (x - x_I) - r \otimes r . \f]
+/// Returned as sums (LmeMoments): with \f$ S_2 = \sum_I w_I (x - x_I) \otimes (x - x_I) \f$, Eq. (37) times \f$ S_0^2 \f$ is
+/// \f$ S_0^2 J = S_0 S_2 - S_1 \otimes S_1 \f$.
 /// Near the solution (\f$ |r|^2 \le 10^{-6} \operatorname{tr} \sum_I p_I (x - x_I) \otimes (x - x_I) \f$, i.e. almost
 /// always from a warm start) J is Eq. (37) as written, in the same pass as r: subtracting the tiny
 /// \f$ r \otimes r \f$ loses nothing. Elsewhere J is computed as the covariance of the offsets under p,
@@ -176,22 +190,23 @@ Matrix<Dim> lme_covariance(int count, const Vector<Dim>* offsets, const double* 
 /// lme_moments is declared inline: GCC then inlines it into Newton's loop, 5 % faster on the Dyka bar.)
 template <int Dim>
 inline LmeMoments<Dim> lme_moments(int count, const Vector<Dim>* offsets, const double* weights, double weight_sum) {
-  const double inverse_sum = 1.0 / weight_sum;  // one division: p_I = w_I / sum_J w_J
-  Vector<Dim> r = Vector<Dim>::Zero();
+  Vector<Dim> first = Vector<Dim>::Zero();
   Matrix<Dim> second = Matrix<Dim>::Zero();
   for (int I = 0; I < count; ++I) {
-    r += weights[I] * offsets[I];
+    first += weights[I] * offsets[I];
     second += weights[I] * offsets[I] * offsets[I].transpose();
   }
-  r *= inverse_sum;
-  second *= inverse_sum;
-  if (r.squaredNorm() <= 1e-6 * second.trace()) return {r, second - r * r.transpose(), inverse_sum};  // Eq. (37) as written
-  return {r, lme_covariance(count, offsets, weights, inverse_sum, r), inverse_sum};                // far from the solution
+  // |r|^2 <= 1e-6 tr(S_2 / S_0), multiplied by S_0^2: Eq. (37) as written.
+  if (first.squaredNorm() <= 1e-6 * second.trace() * weight_sum)
+    return {weight_sum, first, weight_sum * second - first * first.transpose()};
+  const double inverse_sum = 1.0 / weight_sum;  // far from the solution
+  return {weight_sum, first,
+          (weight_sum * weight_sum) * lme_covariance(count, offsets, weights, inverse_sum, Vector<Dim>(first * inverse_sum))};
 }
 
 /// Eq. (35): the shape functions at the converged multiplier, in place of the weights,
 /// \f[ N_I^*(x) = \frac{\exp\left[ -\beta |x - x_I|^2 + \lambda^* \cdot (x - x_I) \right]}{Z(x, \lambda^*)} , \f]
-/// the weights times `inverse_sum`, \f$ 1 / \sum_I w_I \f$ (lme_moments has it).
+/// the weights times `inverse_sum`, \f$ 1 / \sum_I w_I \f$.
 inline void lme_values(int count, double inverse_sum, double* weights) {
   for (int I = 0; I < count; ++I) weights[I] *= inverse_sum;
 }
@@ -256,12 +271,13 @@ inline LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offse
                                       double* weights) {
   LmeSolution<Dim> at{lambda, start, {}, 0, nullptr};
   at.moments = lme_moments(count, offsets, weights, at.partition.weight_sum);
-  while (at.moments.residual.squaredNorm() > tolerance * tolerance) {  // |r| > tol, without a square root
+  while (!at.moments.converged(tolerance)) {
     if (at.iterations == max_iterations) {
       at.failure = "";
       return at;
     }
-    const Vector<Dim> step = safeguarded_newton_step(at.moments.residual, at.moments.hessian, at.lambda);
+    const Vector<Dim> step =
+        safeguarded_newton_step(at.moments.weight_sum, at.moments.first, at.moments.scaled_hessian, at.lambda);
     double t = 1.0;
     if (series_is_exact(step, diameter)) {
       at.partition.weight_sum = lme_weights_moved(count, offsets, step, weights, weights);
@@ -272,7 +288,7 @@ inline LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offse
       // shift m (NaN), so they are computed afresh first.
       if (std::isnan(at.partition.largest)) at.partition = lme_partition(count, offsets, beta, at.lambda, weights);
       const double log_z = at.partition.log_z();
-      t = armijo_step_length(log_z, at.moments.residual.dot(step), [&](double trial) {
+      t = armijo_step_length(log_z, at.moments.residual().dot(step), [&](double trial) {
         at.partition = lme_partition(count, offsets, beta, Vector<Dim>(at.lambda + trial * step), weights);
         return at.partition.log_z();
       });
@@ -362,15 +378,16 @@ class LmeShape {
     const LmeSolution<Dim> solution = solve_lme_multiplier(count, offsets, beta, start, start_partition, diameter_,
                                                            options_.newton_tolerance, options_.max_iterations, values);
     if (solution.failure) throw not_converged(particle, solution.iterations, solution.moments, solution.failure);
-    if (!positive_definite(solution.moments.hessian)) {
+    if (!positive_definite(solution.moments.scaled_hessian)) {
       std::ostringstream cause;
       cause << "LME Hessian J is singular at convergence (x on the edge of the convex hull of its neighbours): det(J)/h^"
-            << 2 * Dim << " = " << solution.moments.hessian.determinant();
+            << 2 * Dim << " = " << solution.moments.hessian().determinant();
       throw ShapeFailure(particle, cause.str());
     }
-    const Matrix<Dim> inverse_hessian = solution.moments.hessian.inverse();
-    lme_values(count, solution.moments.inverse_sum, values);
-    lme_gradients(count, values, inverse_hessian, solution.moments.residual, inverse_spacing_, gradients);
+    const Matrix<Dim> inverse_hessian = solution.moments.inverse_hessian();
+    const double inverse_sum = 1.0 / solution.moments.weight_sum;  // alongside the inverse, not after it
+    lme_values(count, inverse_sum, values);
+    lme_gradients(count, values, inverse_hessian, Vector<Dim>(solution.moments.first * inverse_sum), inverse_spacing_, gradients);
     lambda_[particle] = solution.lambda;
     multiplier_slope_[particle] = lme_multiplier_slope(beta, inverse_hessian);
     evaluated_at_[particle] = x;
@@ -440,7 +457,7 @@ class LmeShape {
   ShapeFailure not_converged(int particle, int iterations, const LmeMoments<Dim>& moments, const char* why) const {
     std::ostringstream cause;
     cause.precision(3);
-    cause << "LME Newton did not converge: " << iterations << " iterations, |r|/h = " << moments.residual.norm()
+    cause << "LME Newton did not converge: " << iterations << " iterations, |r|/h = " << moments.residual().norm()
           << ", gamma = " << options_.gamma << why;
     return ShapeFailure(particle, cause.str());
   }
@@ -757,7 +774,7 @@ TEST_CASE("LME warm start: d lambda*/dx = 2 beta I - J^-1 by finite differences,
     const Vector<2> lambda = multiplier_at(x);
     const int count = lme_neighbours(plane, radius_squared, 64, 0, x, nodes, offsets);
     const LmePartition z = lme_partition(count, offsets, options.gamma, lambda, values);
-    const Matrix<2> slope = lme_multiplier_slope(options.gamma, Matrix<2>(lme_moments(count, offsets, values, z.weight_sum).hessian.inverse()));
+    const Matrix<2> slope = lme_multiplier_slope(options.gamma, Matrix<2>(lme_moments(count, offsets, values, z.weight_sum).inverse_hessian()));
     for (int axis = 0; axis < 2; ++axis) {
       const Vector<2> step = Vector<2>::Unit(axis) * delta * h;
       const Vector<2> difference = (multiplier_at(x + step) - multiplier_at(x - step)) / (2.0 * delta);  // per cell moved
@@ -913,16 +930,16 @@ TEST_CASE("Eqs. (37)-(38) and Eq. (40): r and J are the gradient and Hessian of 
   const LmeMoments<2> at = moments(lambda);
   for (int k = 0; k < 2; ++k) {
     const Vector<2> e = step * Vector<2>::Unit(k);
-    CHECK(at.residual[k] == doctest::Approx((log_z(lambda + e) - log_z(lambda - e)) / (2.0 * step)).epsilon(1e-8));
-    const Vector<2> column = (moments(lambda + e).residual - moments(lambda - e).residual) / (2.0 * step);
-    CHECK((at.hessian.col(k) - column).norm() <= 1e-8);
+    CHECK(at.residual()[k] == doctest::Approx((log_z(lambda + e) - log_z(lambda - e)) / (2.0 * step)).epsilon(1e-8));
+    const Vector<2> column = (moments(lambda + e).residual() - moments(lambda - e).residual()) / (2.0 * step);
+    CHECK((at.hessian().col(k) - column).norm() <= 1e-8);
   }
   // Eq. (37) as printed, sum p (x - x_I) (x) (x - x_I) - r (x) r, equals the covariance form to rounding.
   const LmePartition z = lme_partition(count, offsets, beta, lambda, w);
   Matrix<2> printed = Matrix<2>::Zero();
   for (int I = 0; I < count; ++I) printed += w[I] / z.weight_sum * offsets[I] * offsets[I].transpose();
-  printed -= at.residual * at.residual.transpose();
-  CHECK((printed - at.hessian).norm() <= 1e-14);
+  printed -= at.residual() * at.residual().transpose();
+  CHECK((printed - at.hessian()).norm() <= 1e-14);
   // Near the root lme_moments takes Eq. (37) as written, in one pass: J equals the covariance by hand.
   LmeShape<2> lme(plane);
   lme.initialise(1);
@@ -935,12 +952,17 @@ TEST_CASE("Eqs. (37)-(38) and Eq. (40): r and J are the gradient and Hessian of 
   const LmePartition zn = lme_partition(count, offsets, beta, near, w);
   Matrix<2> covariance = Matrix<2>::Zero(), second = Matrix<2>::Zero();
   for (int I = 0; I < count; ++I) {
-    covariance += w[I] / zn.weight_sum * (offsets[I] - close.residual) * (offsets[I] - close.residual).transpose();
+    covariance += w[I] / zn.weight_sum * (offsets[I] - close.residual()) * (offsets[I] - close.residual()).transpose();
     second += w[I] / zn.weight_sum * offsets[I] * offsets[I].transpose();
   }
-  REQUIRE(close.residual.squaredNorm() <= 1e-6 * second.trace());  // the one-pass branch
-  REQUIRE(at.residual.squaredNorm() > 1e-6 * printed.trace());       // ... and above, the covariance branch
-  CHECK((covariance - close.hessian).norm() <= 1e-14);
+  REQUIRE(close.residual().squaredNorm() <= 1e-6 * second.trace());  // the one-pass branch
+  REQUIRE(at.residual().squaredNorm() > 1e-6 * printed.trace());       // ... and above, the covariance branch
+  CHECK((covariance - close.hessian()).norm() <= 1e-14);
+  // The sums behind them: r = S_1 / S_0, and the test |r| <= tol on them, either side of |r|.
+  CHECK((close.first / close.weight_sum - close.residual()).norm() == 0.0);
+  CHECK(close.converged(1.0001 * close.residual().norm()));
+  CHECK(!close.converged(0.9999 * close.residual().norm()));
+  CHECK((at.inverse_hessian() * at.hessian() - Matrix<2>::Identity()).norm() <= 1e-13);
 }
 
 TEST_CASE("Eq. (36) moved without exponentials: the series weights equal exp()'s to rounding, after a Newton step and after the particle moved") {

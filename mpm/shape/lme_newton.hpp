@@ -21,19 +21,27 @@ bool positive_definite(const Matrix<Dim>& J) {
   return J(0, 0) > 0.0 && J.determinant() > 0.0;
 }
 
-/// The Newton step -J^{-1} r, no longer than max(1, |lambda|). Far from the solution J can be nearly
+/// The Newton step -J^{-1} r, no longer than max(1, |lambda|), from r and J as sums of the weights
+/// (LmeMoments in mpm/shape/lme.hpp): \f$ S_0 \f$ (`weight_sum`), \f$ S_1 = S_0 r \f$ (`first`) and
+/// \f$ S_0^2 J \f$ (`scaled_hessian`), the step being \f$ -S_0 (S_0^2 J)^{-1} S_1 \f$. Far from the solution J can be nearly
 /// singular, e.g. a warm start with lambda h ~ 100 left by a point at the grid edge, and the full
 /// step would throw lambda where every weight but one underflows; the cap lets lambda at most double,
 /// or move by 1, per iteration, and the line search does the rest. If rounding has left J not
 /// positive definite, the step of the authors' damped matrix J + |r| I (dimensionless here,
 /// paper/09_choices.md) is used; failing that, steepest descent -r.
 template <int Dim>
-Vector<Dim> safeguarded_newton_step(const Vector<Dim>& r, Matrix<Dim> J, const Vector<Dim>& lambda) {
-  if (!positive_definite(J)) J += r.norm() * Matrix<Dim>::Identity();
-  Vector<Dim> step = -r;
-  if (positive_definite(J)) {
-    const Vector<Dim> newton = -(J.inverse() * r);
-    if (newton.allFinite()) step = newton;
+Vector<Dim> safeguarded_newton_step(double weight_sum, const Vector<Dim>& first, const Matrix<Dim>& scaled_hessian,
+                                    const Vector<Dim>& lambda) {
+  Vector<Dim> step = -weight_sum * (scaled_hessian.inverse() * first);
+  if (!positive_definite(scaled_hessian) || !step.allFinite()) {  // rare: r and J themselves
+    const Vector<Dim> r = first / weight_sum;
+    Matrix<Dim> J = scaled_hessian / (weight_sum * weight_sum);
+    if (!positive_definite(J)) J += r.norm() * Matrix<Dim>::Identity();
+    step = -r;
+    if (positive_definite(J)) {
+      const Vector<Dim> newton = -(J.inverse() * r);
+      if (newton.allFinite()) step = newton;
+    }
   }
   const double longest_squared = std::max(1.0, lambda.squaredNorm());  // |s| <= max(1, |lambda|), compared squared
   const double length_squared = step.squaredNorm();
@@ -75,13 +83,15 @@ TEST_CASE("LME Newton safeguards: the capped step, the damped step, Armijo on a 
   Matrix<2> J;
   J << 4.0, 0.0, 0.0, 1.0;
   const Vector<2> r(2.0, 1.0);
-  const Vector<2> capped = safeguarded_newton_step<2>(r, J, Vector<2>::Zero());
+  const Vector<2> capped = safeguarded_newton_step<2>(1.0, r, J, Vector<2>::Zero());
   CHECK(capped.norm() == doctest::Approx(1.0));
   CHECK(capped[1] / capped[0] == doctest::Approx(2.0));
-  CHECK(safeguarded_newton_step<2>(r, J, Vector<2>(3.0, 4.0)) == Vector<2>(-0.5, -1.0));  // |lambda| = 5: no cap
+  CHECK(safeguarded_newton_step<2>(1.0, r, J, Vector<2>(3.0, 4.0)) == Vector<2>(-0.5, -1.0));  // |lambda| = 5: no cap
+  // The same r and J as sums with S_0 = 4: S_1 = 4 r, S_0^2 J = 16 J.
+  CHECK(safeguarded_newton_step<2>(4.0, Vector<2>(4.0 * r), Matrix<2>(16.0 * J), Vector<2>(3.0, 4.0)) == Vector<2>(-0.5, -1.0));
   // Not positive definite: J + |r| I. J = diag(-1, 1), |r| = sqrt(5): J + sqrt(5) I = diag(1.236, 3.236).
   J << -1.0, 0.0, 0.0, 1.0;
-  const Vector<2> damped = safeguarded_newton_step<2>(r, J, Vector<2>(10.0, 0.0));
+  const Vector<2> damped = safeguarded_newton_step<2>(1.0, r, J, Vector<2>(10.0, 0.0));
   CHECK(damped[0] == doctest::Approx(-2.0 / (std::sqrt(5.0) - 1.0)));
   CHECK(damped[1] == doctest::Approx(-1.0 / (std::sqrt(5.0) + 1.0)));
   // Armijo on f(l) = l^4 from l = 1 with the step -1 (slope -4): t = 1 gives f = 0, accepted.
