@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <tuple>
 #include <vector>
 
 #include "mpm/core/types.hpp"
@@ -106,15 +107,35 @@ inline void set_zero(double& value) { value = 0.0; }
 template <class Derived>
 void set_zero(Eigen::MatrixBase<Derived>& value) { value.setZero(); }
 
-/// Scatter into the nodes (P2G) for particles [0, count): body(p, field) adds particle p's share
-/// into field[I] for the nodes I of its stencil. Thread 0 adds into `field` itself, thread t > 0 into
-/// copies[t - 1] (zero, and the size of field); the copies are then added to field node by node in
-/// thread order and zeroed again. Without copies it is the serial loop.
-template <class T, class Body>
-void scatter_to_nodes(int count, std::vector<T>& field, std::vector<std::vector<T>>& copies, Body body) {
-  const int threads = std::min(threads_for(count), static_cast<int>(copies.size()) + 1);
+/// A nodal field that the particles scatter into (P2G), with its zeroed copies, one per thread
+/// beyond the first, each the size of the field.
+template <class T>
+struct ScatterTarget {
+  std::vector<T>& field;
+  std::vector<std::vector<T>>& copies;
+};
+
+/// Adds the copies of `target` to its field node by node for the nodes of `block`, in thread
+/// order, and zeroes them again.
+template <class T>
+void gather_copies(ScatterTarget<T>& target, int copies_used, Block block) {
+  for (int copy = 0; copy < copies_used; ++copy)
+    for (int node = block.begin; node < block.end; ++node) {
+      target.field[node] += target.copies[copy][node];
+      set_zero(target.copies[copy][node]);
+    }
+}
+
+/// Scatter into the nodes (P2G) for particles [0, count), into one or more nodal fields in the same
+/// pass over the particles: body(p, field...) adds particle p's share into field[I] of each target for
+/// the nodes I of its stencil. Thread 0 adds into the fields themselves, thread t > 0 into their
+/// copies[t - 1]; the copies are then added to the fields node by node in thread order and zeroed
+/// again. Without copies it is the serial loop.
+template <class Body, class... T>
+void scatter_to_nodes(int count, Body body, ScatterTarget<T>... targets) {
+  const int threads = std::min({threads_for(count), (static_cast<int>(targets.copies.size()) + 1)...});
   if (threads == 1) {  // no parallel region (see parallel_for_blocks)
-    for (int p = 0; p < count; ++p) body(p, field.data());
+    for (int p = 0; p < count; ++p) body(p, targets.field.data()...);
     return;
   }
   int blocks = 1;
@@ -122,21 +143,23 @@ void scatter_to_nodes(int count, std::vector<T>& field, std::vector<std::vector<
   {
     const int thread = omp_get_thread_num();
     const Block block = block_of(count, thread, omp_get_num_threads());
-    T* target = thread == 0 ? field.data() : copies[thread - 1].data();
-    for (int p = block.begin; p < block.end; ++p) body(p, target);
+    for (int p = block.begin; p < block.end; ++p)
+      body(p, (thread == 0 ? targets.field.data() : targets.copies[thread - 1].data())...);
     if (thread == 0) blocks = omp_get_num_threads();
   }
   if (blocks == 1) return;
-  const int nodes = static_cast<int>(field.size());
+  const int nodes = static_cast<int>(std::get<0>(std::forward_as_tuple(targets...)).field.size());
 #pragma omp parallel num_threads(blocks)
   {
     const Block block = block_of(nodes, omp_get_thread_num(), omp_get_num_threads());
-    for (int copy = 0; copy + 1 < blocks; ++copy)
-      for (int node = block.begin; node < block.end; ++node) {
-        field[node] += copies[copy][node];
-        set_zero(copies[copy][node]);
-      }
+    (gather_copies(targets, blocks - 1, block), ...);
   }
+}
+
+/// The same for one field: body(p, field).
+template <class T, class Body>
+void scatter_to_nodes(int count, std::vector<T>& field, std::vector<std::vector<T>>& copies, Body body) {
+  scatter_to_nodes(count, body, ScatterTarget<T>{field, copies});
 }
 
 TEST_CASE("Parallel loops: blocks cover every item once; sums and scatters equal the serial loop") {
@@ -159,6 +182,22 @@ TEST_CASE("Parallel loops: blocks cover every item once; sums and scatters equal
   std::vector<std::vector<double>> copies(1, std::vector<double>(10, 0.0));
   scatter_to_nodes(count, field, copies, [](int p, double* f) { f[p % 10] += 1.0; });
   for (int node = 0; node < 10; ++node) CHECK(field[node] == count / 10);
+  for (double left : copies[0]) CHECK(left == 0.0);
+  // Two fields in one pass, of different types: each gets its own sum, the copies are left zero.
+  std::vector<Vector<2>> vectors(10, Vector<2>::Zero());
+  std::vector<std::vector<Vector<2>>> vector_copies(1, std::vector<Vector<2>>(10, Vector<2>::Zero()));
+  scatter_to_nodes(
+      count,
+      [](int p, double* f, Vector<2>* g) {
+        f[p % 10] += 2.0;
+        g[p % 5] += Vector<2>(1.0, double(p % 3));
+      },
+      ScatterTarget<double>{field, copies}, ScatterTarget<Vector<2>>{vectors, vector_copies});
+  for (int node = 0; node < 10; ++node) CHECK(field[node] == 3 * (count / 10));
+  long ones = 0, residues = 0;  // the sums over p with p % 5 == 0: count / 5 ones, and sum of p % 3
+  for (int p = 0; p < count; p += 5) ++ones, residues += p % 3;
+  CHECK(vectors[0] == Vector<2>(double(ones), double(residues)));
+  for (const Vector<2>& left : vector_copies[0]) CHECK(left.isZero(0.0));
   for (double left : copies[0]) CHECK(left == 0.0);
   // Inside parallel_for_blocks each block's thread finds its own index in worker_index().
   std::array<int, max_threads> seen;

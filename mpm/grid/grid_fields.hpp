@@ -15,10 +15,10 @@ struct GridFields {
   std::vector<Vector<Dim>> nodal_velocity;     ///< v_I (FE: p_I/m_I; NPC: predictor, then corrected)
   std::vector<Vector<Dim>> nodal_force;        ///< f_I = f_I^int + f_I^ext, Eqs. (14)-(15)
   std::vector<Vector<Dim>> reaction;           ///< force taken by the fixed degrees of freedom
-  /// Zeroed copies of a scalar and a vector nodal field, one per thread beyond the first: the
+  /// Zeroed copies of the fields the particles scatter into, one per thread beyond the first: the
   /// threads of a particle-to-grid scatter add into them (scatter_to_nodes, mpm/core/parallel.hpp).
-  std::vector<std::vector<double>> scalar_copies;
-  std::vector<std::vector<Vector<Dim>>> vector_copies;
+  std::vector<std::vector<double>> mass_copies;
+  std::vector<std::vector<Vector<Dim>>> momentum_copies, velocity_copies, force_copies;
 
   explicit GridFields(int node_count = 0)
       : nodal_mass(node_count, 0.0),
@@ -31,8 +31,9 @@ struct GridFields {
 
   /// Allocates the copies for `threads` threads (once per run, before the first step).
   void prepare_threads(int threads) {
-    scalar_copies.assign(threads - 1, std::vector<double>(size(), 0.0));
-    vector_copies.assign(threads - 1, std::vector<Vector<Dim>>(size(), Vector<Dim>::Zero()));
+    mass_copies.assign(threads - 1, std::vector<double>(size(), 0.0));
+    for (auto* copies : {&momentum_copies, &velocity_copies, &force_copies})
+      copies->assign(threads - 1, std::vector<Vector<Dim>>(size(), Vector<Dim>::Zero()));
   }
 
   void reset() {

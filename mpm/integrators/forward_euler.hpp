@@ -21,15 +21,15 @@ struct ForwardEuler {
 
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
   /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle. The steps, as in the code:
-  /// 1. P2G: the lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13) (\ref lumped_nodal_mass), and the
-  ///    nodal momentum \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p \f$ (\ref nodal_momentum).
+  /// 1. P2G: the lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and the nodal momentum
+  ///    \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p \f$, in one pass over the particles (\ref nodal_mass_and_momentum).
   /// 2. Essential boundary conditions: the fixed components of \f$ \mathbf p_I \f$ are set to zero
   ///    (\ref impose_fixed_velocity).
   /// 3. Nodal velocity \f$ \mathbf v_I^k = \mathbf p_I / m_I \f$ (\ref nodal_velocity_from_momentum).
   /// 4. Update stress first (USF): strain rate, Eq. (16); density, Eq. (17); stress, Eq. (3)
   ///    (\ref update_strain_density_stress).
   /// 5. Nodal forces \f$ \mathbf f_I = \mathbf f_I^{int} + \mathbf f_I^{ext} \f$, Eqs. (14)-(15)
-  ///    (\ref add_internal_force, \ref add_body_force); the fixed components become reactions (\ref store_reactions).
+  ///    (\ref add_nodal_forces); the fixed components become reactions (\ref store_reactions).
   /// 6. Momentum balance, Eq. (12): \f$ \mathbf p_I \mathrel{+}= \Delta t\, \mathbf f_I \f$ (\ref update_nodal_momentum).
   /// 7. G2P, Eqs. (19)-(22): \f$ \mathbf v_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf f_I / m_I \f$,
   ///    \f$ \mathbf x_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf p_I / m_I \f$ with the updated momentum
@@ -40,8 +40,7 @@ struct ForwardEuler {
     grid.reset();
     timers.lap(Phase::grid);
     // 1. P2G: lumped mass, Eq. (13), and momentum p_I = sum_p N_Ip m_p v_p.
-    lumped_nodal_mass(particles, stencils, grid);
-    nodal_momentum(particles, stencils, grid);
+    nodal_mass_and_momentum(particles, stencils, grid);
     timers.lap(Phase::p2g);
     // 2. Essential boundary conditions on the momentum.
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
@@ -52,8 +51,7 @@ struct ForwardEuler {
     update_strain_density_stress(stencils, grid.nodal_velocity, model.material, dt, particles);
     timers.lap(Phase::stress);
     // 5. Nodal forces, Eqs. (14)-(15); the fixed components become reactions.
-    add_internal_force(particles, stencils, grid);
-    add_body_force(particles, stencils, body_force, grid);
+    add_nodal_forces(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
     timers.lap(Phase::forces);
     // 6. Momentum balance, Eq. (12): p_I += dt f_I.

@@ -27,15 +27,15 @@ struct NewmarkPredictorCorrector {
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
   /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle. The steps of the
   /// algorithm, as in the code:
-  /// 1. Lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13) (\ref lumped_nodal_mass).
-  /// 2. Velocity predictor by projection, Eqs. (26)-(29):
-  ///    \f$ \mathbf v_I^{pred} = \sum_p N_{Ip} m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) / m_I \f$
-  ///    (\ref nodal_velocity_predictor).
+  /// 1. Lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and
+  /// 2. the velocity predictor by projection, Eqs. (26)-(29),
+  ///    \f$ \mathbf v_I^{pred} = \sum_p N_{Ip} m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) / m_I \f$,
+  ///    in one pass over the particles (\ref nodal_mass_and_velocity_predictor).
   /// 3. Essential boundary conditions overwrite the predictor (\ref impose_fixed_velocity).
   /// 4. Strain rate with the predicted velocity, Eq. (16), and strain increment
   ///    \f$ \Delta t\, \dot{\boldsymbol\varepsilon}_p \f$ (\ref update_strain_density_stress).
   /// 5. Density, Eq. (17), and stress, Eq. (3), in the same call.
-  /// 6. New nodal forces \f$ \mathbf f_I^{k+1} \f$, Eqs. (14)-(15) (\ref add_internal_force, \ref add_body_force);
+  /// 6. New nodal forces \f$ \mathbf f_I^{k+1} \f$, Eqs. (14)-(15) (\ref add_nodal_forces);
   ///    the fixed components become reactions (\ref store_reactions).
   /// 7. Corrector, Eq. (30): \f$ \mathbf v_I^{k+1} = \mathbf v_I^{pred} + \gamma\,\Delta t\, \mathbf f_I^{k+1} / m_I \f$
   ///    (\ref newmark_corrector).
@@ -49,10 +49,8 @@ struct NewmarkPredictorCorrector {
             Particles<Dim>& particles, GridFields<Dim>& grid, PhaseTimers& timers) const {
     grid.reset();
     timers.lap(Phase::grid);
-    // Step 1. Lumped nodal mass, Eq. (13).
-    lumped_nodal_mass(particles, stencils, grid);
-    // Step 2. Velocity predictor by projection, Eqs. (26)-(29).
-    nodal_velocity_predictor(particles, stencils, newmark_gamma, dt, grid);
+    // Steps 1-2. Lumped nodal mass, Eq. (13), and velocity predictor by projection, Eqs. (26)-(29).
+    nodal_mass_and_velocity_predictor(particles, stencils, newmark_gamma, dt, grid);
     timers.lap(Phase::p2g);
     // Step 3. Essential boundary conditions overwrite the predictor.
     impose_fixed_velocity(model.fixed, grid.nodal_velocity);
@@ -62,8 +60,7 @@ struct NewmarkPredictorCorrector {
     update_strain_density_stress(stencils, grid.nodal_velocity, model.material, dt, particles);
     timers.lap(Phase::stress);
     // Step 6. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
-    add_internal_force(particles, stencils, grid);
-    add_body_force(particles, stencils, body_force, grid);
+    add_nodal_forces(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
     timers.lap(Phase::forces);
     // Step 7. Corrector, Eq. (30): v_I += gamma dt f_I / m_I.

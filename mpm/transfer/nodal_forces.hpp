@@ -23,50 +23,58 @@
 
 namespace mpm {
 
-/// Eq. (14): \f$ \mathbf f_I^{int} = -\sum_p \boldsymbol\sigma_p \nabla N_{Ip}\, \frac{m_p}{\rho_p} \f$,
-/// with the particle volume V_p = m_p / rho_p of the current density.
+/// Eqs. (14)-(15), in one pass over the stencils: the internal force of the stresses, Eq. (14),
+/// \f$ \mathbf f_I^{int} = -\sum_p \boldsymbol\sigma_p \nabla N_{Ip}\, \frac{m_p}{\rho_p} \f$, with the particle
+/// volume V_p = m_p / rho_p of the current density, and the body-force part of Eq. (15),
+/// \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b_p \f$, with b_p the body force per unit mass at each
+/// particle (loading/body_force.hpp; no tractions in this project's scenes; Eq. (11)'s surface term is
+/// not implemented):
+/// \f[ \mathbf f_I = \sum_p \left( N_{Ip}\, m_p \mathbf b_p - \boldsymbol\sigma_p \nabla N_{Ip}\, V_p \right) . \f]
 template <int Dim>
-void add_internal_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  scatter_to_nodes(particles.size(), grid.nodal_force, grid.vector_copies, [&](int p, Vector<Dim>* nodal_force) {
+void add_nodal_forces(const Particles<Dim>& particles, const Stencils<Dim>& stencils,
+                      const ParticleBodyForces<Dim>& body_force, GridFields<Dim>& grid) {
+  scatter_to_nodes(particles.size(), grid.nodal_force, grid.force_copies, [&](int p, Vector<Dim>* nodal_force) {
     const Matrix<Dim> volume_stress = particles.volume(p) * particles.stress[p];
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_force[stencils.node[k]] -= volume_stress * stencils.gradient[k];
-  });
-}
-
-/// Eq. (15), body-force part: \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b_p \f$, with b_p the body
-/// force per unit mass at each particle (loading/body_force.hpp; no tractions in this project's
-/// scenes; Eq. (11)'s surface term is not implemented).
-template <int Dim>
-void add_body_force(const Particles<Dim>& particles, const Stencils<Dim>& stencils,
-                    const ParticleBodyForces<Dim>& body_force, GridFields<Dim>& grid) {
-  if (body_force.all_zero) return;
-  scatter_to_nodes(particles.size(), grid.nodal_force, grid.vector_copies, [&](int p, Vector<Dim>* nodal_force) {
-    const Vector<Dim> force = particles.mass[p] * body_force.per_unit_mass[p];
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_force[stencils.node[k]] += stencils.value[k] * force;
+    const Vector<Dim> weight =  // m_p b_p (per_unit_mass is not filled when every b_p is zero)
+        body_force.all_zero ? Vector<Dim>::Zero() : Vector<Dim>(particles.mass[p] * body_force.per_unit_mass[p]);
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
+      nodal_force[stencils.node[k]] += stencils.value[k] * weight - volume_stress * stencils.gradient[k];
   });
 }
 
 TEST_CASE("Eq. (9), Eq. (10), Eqs. (14)-(15): nodal forces on the worked example: the internal force by hand, the body force sums to the weight") {
   testing::WorkedExample example;
-  add_internal_force(example.particles, example.stencils, example.fields);
+  const ParticleBodyForces<1> none{{Vector<1>(0.0), Vector<1>(0.0)}, true, true};
+  add_nodal_forces(example.particles, example.stencils, none, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(5.0));
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(-25.0));
   CHECK(example.fields.nodal_force[2][0] == doctest::Approx(20.0));
+  // Gravity alone (no stress): the nodal forces sum to the weight.
+  example.particles.stress[0].setZero();
+  example.particles.stress[1].setZero();
   example.fields.reset();
   const ParticleBodyForces<1> gravity{{Vector<1>(-9.81), Vector<1>(-9.81)}, false, true};
-  add_body_force(example.particles, example.stencils, gravity, example.fields);
+  add_nodal_forces(example.particles, example.stencils, gravity, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-9.81 * 1.5));
   CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
         doctest::Approx(-9.81 * 6.0));
   // A different b_p per particle: the nodal forces still sum to sum_p m_p b_p (partition of unity).
   example.fields.reset();
   const ParticleBodyForces<1> field{{Vector<1>(2.0), Vector<1>(-1.0)}, false, false};
-  add_body_force(example.particles, example.stencils, field, example.fields);
+  add_nodal_forces(example.particles, example.stencils, field, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(0.75 * 2.0 * 2.0));
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(0.25 * 2.0 * 2.0 - 0.5 * 4.0 * 1.0));
   CHECK(example.fields.nodal_force[2][0] == doctest::Approx(-0.5 * 4.0 * 1.0));
   CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
         doctest::Approx(example.particles.mass[0] * 2.0 - example.particles.mass[1]));
+  // Both at once: the internal force by hand plus the body force of the line above.
+  example.particles.stress[0](0, 0) = 10.0;
+  example.particles.stress[1](0, 0) = -20.0;
+  example.fields.reset();
+  add_nodal_forces(example.particles, example.stencils, field, example.fields);
+  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(5.0 + 3.0));
+  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(-25.0 - 1.0));
+  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(20.0 - 2.0));
 }
 
 }  // namespace mpm

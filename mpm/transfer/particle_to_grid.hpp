@@ -15,21 +15,22 @@
 
 namespace mpm {
 
-/// Eq. (13), lumped: \f$ m_I = \sum_J m_{IJ} = \sum_p N_{Ip}\, m_p \f$ (by the partition of unity).
+/// P2G of forward Euler, in one pass over the stencils: the lumped mass of Eq. (13),
+/// \f$ m_I = \sum_J m_{IJ} = \sum_p N_{Ip}\, m_p \f$ (by the partition of unity), and the nodal momentum of
+/// Eqs. (21)-(22), \f$ \mathbf p_I = \sum_p N_{Ip}\, m_p \mathbf v_p \f$.
 template <int Dim>
-void lumped_nodal_mass(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  scatter_to_nodes(particles.size(), grid.nodal_mass, grid.scalar_copies, [&](int p, double* nodal_mass) {
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_mass[stencils.node[k]] += stencils.value[k] * particles.mass[p];
-  });
-}
-
-/// Nodal momentum of Eqs. (21)-(22): \f$ \mathbf p_I = \sum_p N_{Ip}\, m_p \mathbf v_p \f$.
-template <int Dim>
-void nodal_momentum(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  scatter_to_nodes(particles.size(), grid.nodal_momentum, grid.vector_copies, [&](int p, Vector<Dim>* nodal_momentum) {
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      nodal_momentum[stencils.node[k]] += stencils.value[k] * particles.mass[p] * particles.velocity[p];
-  });
+void nodal_mass_and_momentum(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
+  scatter_to_nodes(
+      particles.size(),
+      [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum) {
+        for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
+          const double weighted_mass = stencils.value[k] * particles.mass[p];  // N_Ip m_p
+          nodal_mass[stencils.node[k]] += weighted_mass;
+          nodal_momentum[stencils.node[k]] += weighted_mass * particles.velocity[p];
+        }
+      },
+      ScatterTarget<double>{grid.nodal_mass, grid.mass_copies},
+      ScatterTarget<Vector<Dim>>{grid.nodal_momentum, grid.momentum_copies});
 }
 
 /// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere.
@@ -41,25 +42,31 @@ void nodal_velocity_from_momentum(GridFields<Dim>& grid) {
                                     : Vector<Dim>::Zero();
 }
 
+/// P2G of the predictor-corrector, in one pass over the stencils: the lumped mass of Eq. (13) and
 /// Eqs. (27)-(29), the Newmark velocity predictor built by mass-weighted projection: Eq. (26)'s
 /// \f$ \mathbf v_I^k + (1-\gamma)\Delta t\, \mathbf a_I^k \f$ with both nodal terms projected from the particles
 /// by Eq. (27), which is Eq. (28), gathered into
-/// \f[ \mathbf v_I^{pred} = \frac{1}{m_I}\sum_p N_{Ip}\, m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) \f]
+/// \f[ \mathbf v_I^{pred} = \frac{1}{m_I}\sum_p N_{Ip}\, m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) . \f]
 /// Also leaves \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p^k \f$ in nodal_momentum (the projected
 /// velocity p_I/m_I of the literal reading of Eq. (33)).
 template <int Dim>
-void nodal_velocity_predictor(const Particles<Dim>& particles, const Stencils<Dim>& stencils, double newmark_gamma,
-                              double dt, GridFields<Dim>& grid) {
-  scatter_to_nodes(particles.size(), grid.nodal_momentum, grid.vector_copies, [&](int p, Vector<Dim>* nodal_momentum) {
-    const Vector<Dim> momentum = particles.mass[p] * particles.velocity[p];
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k) nodal_momentum[stencils.node[k]] += stencils.value[k] * momentum;
-  });
-  scatter_to_nodes(particles.size(), grid.nodal_velocity, grid.vector_copies, [&](int p, Vector<Dim>* nodal_velocity) {
-    const Vector<Dim> momentum = particles.mass[p] * particles.velocity[p];
-    const Vector<Dim> predicted = momentum + (1.0 - newmark_gamma) * dt * particles.mass[p] * particles.acceleration[p];
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      nodal_velocity[stencils.node[k]] += stencils.value[k] * predicted;  // divided by m_I below
-  });
+void nodal_mass_and_velocity_predictor(const Particles<Dim>& particles, const Stencils<Dim>& stencils, double newmark_gamma,
+                                       double dt, GridFields<Dim>& grid) {
+  scatter_to_nodes(
+      particles.size(),
+      [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum, Vector<Dim>* nodal_velocity) {
+        const Vector<Dim> momentum = particles.mass[p] * particles.velocity[p];
+        const Vector<Dim> predicted = momentum + (1.0 - newmark_gamma) * dt * particles.mass[p] * particles.acceleration[p];
+        for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
+          const int node = stencils.node[k];
+          nodal_mass[node] += stencils.value[k] * particles.mass[p];
+          nodal_momentum[node] += stencils.value[k] * momentum;
+          nodal_velocity[node] += stencils.value[k] * predicted;  // divided by m_I below
+        }
+      },
+      ScatterTarget<double>{grid.nodal_mass, grid.mass_copies},
+      ScatterTarget<Vector<Dim>>{grid.nodal_momentum, grid.momentum_copies},
+      ScatterTarget<Vector<Dim>>{grid.nodal_velocity, grid.velocity_copies});
   for (int node = 0; node < grid.size(); ++node)
     grid.nodal_velocity[node] = grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_velocity[node] / grid.nodal_mass[node])
                                                             : Vector<Dim>::Zero();
@@ -68,11 +75,10 @@ void nodal_velocity_predictor(const Particles<Dim>& particles, const Stencils<Di
 TEST_CASE("Eq. (8), Eq. (13), Eqs. (21)-(22), Eqs. (26)-(29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
-  lumped_nodal_mass(example.particles, example.stencils, grid);
+  nodal_mass_and_momentum(example.particles, example.stencils, grid);
   CHECK(grid.nodal_mass[0] == doctest::Approx(1.5));
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
   CHECK(grid.nodal_mass[2] == doctest::Approx(2.0));
-  nodal_momentum(example.particles, example.stencils, grid);
   nodal_velocity_from_momentum(grid);
   CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-1.5));
   CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.0));
@@ -83,8 +89,8 @@ TEST_CASE("Eq. (8), Eq. (13), Eqs. (21)-(22), Eqs. (26)-(29): P2G on the worked 
   // (0.25*2*(1 + 0.05*8) + 0.5*4*(-1)) / 2.5 = (0.7 - 2) / 2.5 = -0.52.
   example.particles.acceleration[0] = Vector<1>(8.0);
   grid.reset();
-  lumped_nodal_mass(example.particles, example.stencils, grid);
-  nodal_velocity_predictor(example.particles, example.stencils, 0.5, 0.1, grid);
+  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.5, 0.1, grid);
+  CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
   CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.52));
   CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-1.5));
 }
