@@ -3,7 +3,7 @@
 # ratios are comparable (the machine may be shared and noisy: compare ratios, not absolute numbers).
 #
 # Writes results/bench/:
-#   speed.csv     the targets of issue 9 (Dyka bar at 640 cells; soil block), particle-steps/s, one thread, best of 3,
+#   speed.csv     the targets of issue 9 (Dyka bar at 640 cells; soil block), particle-steps/s, one thread, best of 7 interleaved rounds,
 #                 and each shape's cost relative to linear with the same integrator
 #   scaling.csv   time per particle-step against particles: Dyka bar 40..20480 cells (1D) and a soil
 #                 block from 100 to 1e6 particles (2D), per shape and integrator, on 1 and on all cores;
@@ -46,13 +46,6 @@ run() {
     'BEGIN{printf "%d,%d,%d,%.4e,%.4e,%d%s\n", p, s, th, b / (p * s), p * s / b, rss, sh}'
 }
 
-# best_of N NAME SCENE THREADS OVERRIDES...: run N times, the row of the fastest (a shared machine only
-# ever slows a run down, so the fastest of a few is the closest to what the code can do)
-best_of() {
-  local times=$1; shift
-  for ((k = 0; k < times; ++k)); do run "$@"; done | sort -t, -k4 -g | head -1
-}
-
 # A second of work first, discarded: the first short runs after an idle spell were measured up to 30 %
 # slower (the processor's clock, the binary's pages), and the targets' runs last a quarter of a second.
 run warm_up "$root/scenes/dyka_bar.toml" 1 --set 'solver.shape="lme"' --set 'grid.cells=[640]' >/dev/null
@@ -60,23 +53,31 @@ run warm_up "$root/scenes/dyka_bar.toml" 1 --set 'solver.shape="lme"' --set 'gri
 # ---- 1. The targets: one thread, Dyka bar at 640 cells (200 us) and the soil block at 1 m cells ----
 speed=$out/speed.csv
 echo "scene,shape,integrator,particles,steps,threads,seconds_per_particle_step,particle_steps_per_second,max_resident_kib,$(echo $phases | tr ' ' ','),relative_to_linear" >"$speed"
+# Every configuration once per round, 7 rounds, the fastest run of each kept: interleaved, so that a busy
+# spell of the shared machine slows every configuration alike instead of the few that ran during it
+# (three runs of each in a row had given linear + FE on the Dyka bar anything from 2.6e7 to 3.9e7 in
+# successive runs of `make bench --targets`).
+configurations=()
 for integrator in fe npc; do
   for scene in dyka_bar soil_block; do
-    linear=""
-    for shape in linear ugimp lme; do
-      extra=()
-      if [[ $scene == dyka_bar ]]; then
-        extra=(--set grid.cells=[640])
-      else
-        extra=(--set grid.cells=[10,10])
-      fi
-      row=$(best_of 3 "target_${scene}_${shape}_$integrator" "$root/scenes/$scene.toml" 1 --set "solver.shape=\"$shape\"" \
-        --set "solver.integrator=\"$integrator\"" "${extra[@]}")
-      cost=$(echo "$row" | cut -d, -f4)
-      [[ $shape == linear ]] && linear=$cost
-      echo "$scene,$shape,$integrator,$row,$(awk -v a="$cost" -v b="$linear" 'BEGIN{printf "%.3f", a / b}')" >>"$speed"
-    done
+    for shape in linear ugimp lme; do configurations+=("$scene $shape $integrator"); done
   done
+done
+rounds=7
+for ((round = 0; round < rounds; ++round)); do
+  for configuration in "${configurations[@]}"; do
+    read -r scene shape integrator <<<"$configuration"
+    cells='[640]'; [[ $scene == soil_block ]] && cells='[10,10]'
+    run "target_${scene}_${shape}_$integrator" "$root/scenes/$scene.toml" 1 --set "solver.shape=\"$shape\"" \
+      --set "solver.integrator=\"$integrator\"" --set "grid.cells=$cells" >>"$runs/target_${scene}_${shape}_$integrator.rows"
+  done
+done
+for configuration in "${configurations[@]}"; do
+  read -r scene shape integrator <<<"$configuration"
+  row=$(sort -t, -k4 -g "$runs/target_${scene}_${shape}_$integrator.rows" | head -1)
+  cost=$(echo "$row" | cut -d, -f4)
+  [[ $shape == linear ]] && linear=$cost
+  echo "$scene,$shape,$integrator,$row,$(awk -v a="$cost" -v b="$linear" 'BEGIN{printf "%.3f", a / b}')" >>"$speed"
 done
 echo "bench: targets done in $(( $(date +%s) - start )) s"
 if [[ $only_targets == --targets ]]; then column -s, -t "$speed" | cut -c1-200; exit 0; fi
