@@ -148,6 +148,7 @@ void scatter_to_nodes(int count, Body body, ScatterTarget<T>... targets) {
     if (thread == 0) blocks = omp_get_num_threads();
   }
   if (blocks == 1) return;
+  // The nodes of the first target: every target is a nodal field of the same grid.
   const int nodes = static_cast<int>(std::get<0>(std::forward_as_tuple(targets...)).field.size());
 #pragma omp parallel num_threads(blocks)
   {
