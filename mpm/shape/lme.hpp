@@ -250,6 +250,8 @@ Matrix<Dim> lme_multiplier_slope(double beta, const Matrix<Dim>& inverse_hessian
 template <int Dim>
 using LmeThirdMoments = std::array<Matrix<Dim>, static_cast<size_t>(Dim)>;
 
+/// The third moments T_a of LmeThirdMoments, from the shape functions `values` (N_I) and the `offsets`
+/// (x - x_I)/h of the point where they were evaluated.
 template <int Dim>
 LmeThirdMoments<Dim> lme_third_moments(int count, const Vector<Dim>* offsets, const double* values) {
   LmeThirdMoments<Dim> third;
