@@ -162,18 +162,18 @@ struct LmeMoments {
   }
 };
 
-/// Eq. (37) without its cancellation, for lme_moments far from the solution: the covariance of the
-/// offsets under \f$ p_I = w_I \cdot \f$ `inverse_sum`, about their mean r (`residual`),
-/// \f[ J = \sum_I p_I (x - x_I - r) \otimes (x - x_I - r) . \f]
+/// Eq. (37) without its cancellation, for lme_moments far from the solution, as LmeMoments holds it
+/// (times \f$ S_0 \f$ here, \f$ S_0^2 \f$ there): the spread of the offsets about their mean r (`residual`) under the
+/// weights,
+/// \f[ S_0 J = \sum_I w_I (x - x_I - r) \otimes (x - x_I - r) . \f]
 template <int Dim>
-Matrix<Dim> lme_covariance(int count, const Vector<Dim>* offsets, const double* weights, double inverse_sum,
-                           const Vector<Dim>& residual) {
-  Matrix<Dim> J = Matrix<Dim>::Zero();
+Matrix<Dim> lme_covariance(int count, const Vector<Dim>* offsets, const double* weights, const Vector<Dim>& residual) {
+  Matrix<Dim> spread = Matrix<Dim>::Zero();
   for (int I = 0; I < count; ++I) {
     const Vector<Dim> centred = offsets[I] - residual;
-    J += weights[I] * centred * centred.transpose();
+    spread += weights[I] * centred * centred.transpose();
   }
-  return J * inverse_sum;
+  return spread;
 }
 
 /// Eqs. (37) and (38), with \f$ p_I = w_I / \sum_J w_J \f$ the shape functions of Eq. (35) at this lambda:
@@ -200,9 +200,7 @@ inline LmeMoments<Dim> lme_moments(int count, const Vector<Dim>* offsets, const 
   // |r|^2 <= 1e-6 tr(S_2 / S_0), multiplied by S_0^2: Eq. (37) as written.
   if (first.squaredNorm() <= 1e-6 * second.trace() * weight_sum)
     return {weight_sum, first, weight_sum * second - first * first.transpose()};
-  const double inverse_sum = 1.0 / weight_sum;  // far from the solution
-  return {weight_sum, first,
-          (weight_sum * weight_sum) * lme_covariance(count, offsets, weights, inverse_sum, Vector<Dim>(first * inverse_sum))};
+  return {weight_sum, first, weight_sum * lme_covariance(count, offsets, weights, Vector<Dim>(first / weight_sum))};  // far from it
 }
 
 /// Eq. (35): the shape functions at the converged multiplier, in place of the weights,
