@@ -830,6 +830,21 @@ TEST_CASE("LME warm start: d lambda*/dx = 2 beta I - J^-1 by finite differences,
       CHECK((difference - slope.col(axis)).norm() <= 1e-6 * (1.0 + slope.col(axis).norm()));
     }
   }
+  // lme_third_moments by hand. 1D, offsets 0.25 and -0.75 with N = 0.75 and 0.25 (they reproduce x):
+  // 0.75 * 0.25^3 + 0.25 * (-0.75)^3 = 0.01171875 - 0.10546875 = -0.09375. 2D, one offset (1, 2) with N = 1:
+  // T_0 = 1 * [1 2; 2 4], T_1 = 2 * [1 2; 2 4].
+  {
+    const Vector<1> line_offsets[2] = {Vector<1>(0.25), Vector<1>(-0.75)};
+    const double line_values[2] = {0.75, 0.25};
+    CHECK(lme_third_moments<1>(2, line_offsets, line_values)[0](0, 0) == doctest::Approx(-0.09375).epsilon(1e-15));
+    const Vector<2> one_offset[1] = {Vector<2>(1.0, 2.0)};
+    const double one_value[1] = {1.0};
+    const LmeThirdMoments<2> third = lme_third_moments<2>(1, one_offset, one_value);
+    Matrix<2> square;
+    square << 1.0, 2.0, 2.0, 4.0;
+    CHECK(third[0] == square);
+    CHECK(third[1] == Matrix<2>(2.0 * square));
+  }
   // The second-order start (lme_multiplier_curvature): the slope alone leaves an error of order |u|^2,
   // the curvature term one of order |u|^3. Halving a slanted move u thrice from 0.04 cells, the observed
   // orders are 2 and 3 (within 0.25), and the second-order error is the smaller by a factor 10 at least.
