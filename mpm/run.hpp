@@ -81,11 +81,14 @@ RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Di
     integrator.position_velocity = scene.npc_position_velocity == "corrected"   ? NewmarkPositionVelocity::corrected
                                    : scene.npc_position_velocity == "predicted" ? NewmarkPositionVelocity::predicted
                                                                                 : NewmarkPositionVelocity::projected;
+    integrator.particle_velocity =
+        scene.npc_velocity == "average" ? NewmarkParticleVelocity::average : NewmarkParticleVelocity::eq32;
     return detail::with_shape(scene, setup, integrator, monitor, partial);
   }
   ForwardEuler integrator;
   integrator.position_velocity =
       scene.fe_position_velocity == "updated" ? EulerPositionVelocity::updated : EulerPositionVelocity::start;
+  integrator.flip_fraction = scene.flip_fraction;
   return detail::with_shape(scene, setup, integrator, monitor, partial);
 }
 

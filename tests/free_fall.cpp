@@ -8,11 +8,15 @@
 /// Forward Euler (paper/02_mpm_forward_euler.md): v_I^k = v_p^k, p_I^{k+1}/m_I = v_p^k + dt g, hence
 ///   v^{k+1} = v^k + dt g,  x^{k+1} = x^k + dt (v^k + dt g)   (semi-implicit Euler), so
 ///   x^n = x0 + v0 t + g t^2/2 + g dt t/2,  t = n dt.
-/// Predictor-corrector (paper/03_predictor_corrector.md, gamma = 1/2, a_p^0 = 0): step 0 moves x by dt v0 + dt^2 g; later
-///   steps by dt v^k + (3/2) dt^2 g (predictor adds (1-gamma) dt a_p = dt g/2, corrector dt g/2, and
-///   Eq. (33) adds dt^2 g/2), so
-///   x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2   (n >= 1).
-/// Both: v^n = v0 + g t. The continuum limit x0 + v0 t + g t^2/2 is met to O(dt).
+/// Predictor-corrector (paper/03_predictor_corrector.md, a_p^0 = 0): the particle takes a_p^{k+1} = g every
+///   step, and the position update of Eq. (33) as printed (v_I^k, `projected`, the default) moves it by
+///   dt v^k + dt^2 g/2: x^n = x0 + v0 t + g t^2/2 exactly, for any gamma. The authors' array
+///   (`corrected`, v_I^{k+1} = v^k + (1-gamma) dt a_p^k + gamma dt g) moves it by dt v0 + (gamma + 1/2) dt^2 g in
+///   the first step and by dt v^k + (3/2) dt^2 g in every later one, so at gamma = 1/2
+///   x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2   (n >= 1, gamma = 1/2): an O(dt) offset.
+/// Newmark average (Eq. 23, `npc_velocity = "average"`): its first step averages a_p^0 = 0 with g, so
+///   v^n = v0 + g t - (1-gamma) g dt and, with the printed Eq. (33), x^n = x0 + v0 t + g t^2/2 - (1-gamma) g dt (t - dt).
+/// Forward Euler and Eq. (32): v^n = v0 + g t.
 #include <doctest/doctest.h>
 
 #include "tests/support.hpp"
@@ -39,9 +43,9 @@ cfl = 0.5
 end_time = 1.0
 )";
 
-template <class Expected>
-void check_fall(const std::string& integrator, Expected expected_offset) {
-  const auto scene = mpm::testing::scene_from_text(falling_particle, {"solver.integrator=\"" + integrator + "\""});
+template <class Expected, class ExpectedVelocity>
+void check_fall(const std::vector<std::string>& settings, Expected expected_offset, ExpectedVelocity velocity_offset) {
+  const auto scene = mpm::testing::scene_from_text(falling_particle, settings);
   const auto setup = mpm::build_setup<2>(scene);
   mpm::testing::Recorder<2> recorder(0);
   const auto summary = mpm::run_setup<2>(scene, setup, recorder);
@@ -53,18 +57,31 @@ void check_fall(const std::string& integrator, Expected expected_offset) {
     REQUIRE(t == doctest::Approx(n * dt).epsilon(1e-12));
     const mpm::Vector<2> exact = x0 + v0 * t + mpm::Vector<2>(0.0, 0.5 * g * t * t + expected_offset(g, dt, t));
     CHECK((recorder.position[n] - exact).norm() <= 1e-11);
-    CHECK((recorder.velocity[n] - (v0 + mpm::Vector<2>(0.0, g * t))).norm() <= 1e-11);
+    CHECK((recorder.velocity[n] - (v0 + mpm::Vector<2>(0.0, g * t + velocity_offset(g, dt)))).norm() <= 1e-11);
   }
 }
 
 }  // namespace
 
 TEST_CASE("Eqs. (19)-(22): free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
-  check_fall("fe", [](double g, double dt, double t) { return 0.5 * g * dt * t; });
+  check_fall({"solver.integrator=\"fe\""}, [](double g, double dt, double t) { return 0.5 * g * dt * t; },
+             [](double, double) { return 0.0; });
 }
 
-TEST_CASE("Eqs. (26)-(33): free fall, predictor-corrector: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2 to 1e-11 m") {
-  check_fall("npc", [](double g, double dt, double t) { return g * dt * t - 0.5 * g * dt * dt; });
+TEST_CASE("Eq. (33): free fall, predictor-corrector with Eq. (33) as printed: x^n = x0 + v0 t + g t^2/2 to 1e-11 m, gamma 0.5 and 0.6") {
+  for (const std::string gamma : {"0.5", "0.6"})
+    check_fall({"solver.integrator=\"npc\"", "solver.newmark_gamma=" + gamma}, [](double, double, double) { return 0.0; },
+               [](double, double) { return 0.0; });
+}
+
+TEST_CASE("Eq. (33): free fall, predictor-corrector with the authors' corrected v_I: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2") {
+  check_fall({"solver.integrator=\"npc\"", "solver.npc_position_velocity=\"corrected\""},
+             [](double g, double dt, double t) { return g * dt * t - 0.5 * g * dt * dt; }, [](double, double) { return 0.0; });
+}
+
+TEST_CASE("Eq. (23): free fall, Newmark average at gamma = 0.6: v^n = v0 + g t - 0.4 g dt from a_p^0 = 0, x^n offset -0.4 g dt (t - dt)") {
+  check_fall({"solver.integrator=\"npc\"", "solver.npc_velocity=\"average\"", "solver.newmark_gamma=0.6"},
+             [](double g, double dt, double t) { return -0.4 * g * dt * (t - dt); }, [](double g, double dt) { return -0.4 * g * dt; });
 }
 
 TEST_CASE("Free fall under a [body_force] formula of X and t: the same fall as under [gravity], to the last bit") {

@@ -18,6 +18,7 @@ namespace mpm {
 struct ForwardEuler {
   static constexpr const char* name = "fe";
   EulerPositionVelocity position_velocity = EulerPositionVelocity::updated;
+  double flip_fraction = 1.0;  ///< 1: FLIP, the paper's scheme; below 1 the PIC/FLIP blend (a damping)
 
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
   /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle. The steps, as in the code:
@@ -58,7 +59,7 @@ struct ForwardEuler {
     update_nodal_momentum(dt, grid);
     timers.lap(Phase::grid);
     // 7. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
-    forward_euler_particle_update(stencils, grid, dt, position_velocity, particles);
+    forward_euler_particle_update(stencils, grid, dt, position_velocity, particles, flip_fraction);
     timers.lap(Phase::g2p);
   }
 };

@@ -22,7 +22,8 @@ namespace mpm {
 struct NewmarkPredictorCorrector {
   static constexpr const char* name = "npc";
   double newmark_gamma = 0.5;
-  NewmarkPositionVelocity position_velocity = NewmarkPositionVelocity::corrected;
+  NewmarkPositionVelocity position_velocity = NewmarkPositionVelocity::projected;
+  NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32;
 
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
   /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle. The steps of the
@@ -41,8 +42,9 @@ struct NewmarkPredictorCorrector {
   ///    (\ref newmark_corrector).
   /// 8. Particle update, Eqs. (31)-(33): \f$ \mathbf a_p^{k+1} = \sum_I N_{Ip} \mathbf f_I / m_I \f$,
   ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t\, \mathbf a_p^{k+1} \f$,
-  ///    \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I^{k+1} + \tfrac12 \Delta t^2 \mathbf a_p^{k+1} \f$
-  ///    (\ref newmark_particle_update).
+  ///    \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I^k + \tfrac12 \Delta t^2 \mathbf a_p^{k+1} \f$
+  ///    (\ref newmark_particle_update); with particle_velocity = average, Eq. (23)'s
+  ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t ((1-\gamma) \mathbf a_p^k + \gamma \mathbf a_p^{k+1}) \f$ instead of Eq. (32).
   /// 9. The nodal fields are reset at the start of the next step (GridFields::reset).
   template <int Dim>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
@@ -66,8 +68,8 @@ struct NewmarkPredictorCorrector {
     // Step 7. Corrector, Eq. (30): v_I += gamma dt f_I / m_I.
     newmark_corrector(newmark_gamma, dt, grid);
     timers.lap(Phase::grid);
-    // Step 8. Particle update, Eqs. (31)-(33).
-    newmark_particle_update(stencils, grid, newmark_gamma, dt, position_velocity, particles);
+    // Step 8. Particle update, Eqs. (31)-(33) (or Eq. (23) for the velocity).
+    newmark_particle_update(stencils, grid, newmark_gamma, dt, position_velocity, particles, particle_velocity);
     timers.lap(Phase::g2p);
     // Step 9. The nodal fields are reset at the start of the next step.
   }

@@ -57,7 +57,9 @@ struct Scene {
   int lme_max_iterations = 100;
   std::string lme_beta = "grid_spacing";
   double newmark_gamma = 0.5;
-  std::string fe_position_velocity = "updated", npc_position_velocity = "corrected";
+  std::string fe_position_velocity = "updated", npc_position_velocity = "projected";
+  std::string npc_velocity = "eq32";  ///< eq32 (the paper's Eq. 32) | average (Eq. 23, the Newmark average)
+  double flip_fraction = 1.0;         ///< forward Euler's PIC/FLIP blend: 1 = FLIP (the paper's)
   RunControl control;
   // [[observer]], [output]
   std::vector<ObserverSettings> observers;
@@ -230,7 +232,10 @@ inline Scene read_scene(const SceneFile& file) {
     scene.newmark_gamma = solver.number("newmark_gamma", 0.5);
     if (!(scene.newmark_gamma >= 0.0 && scene.newmark_gamma <= 1.0)) solver.fail("newmark_gamma", "must be in [0, 1]");
     scene.fe_position_velocity = solver.text("fe_position_velocity", {"updated", "start"}, std::string("updated"));
-    scene.npc_position_velocity = solver.text("npc_position_velocity", {"corrected", "predicted", "projected"}, std::string("corrected"));
+    scene.npc_position_velocity = solver.text("npc_position_velocity", {"projected", "corrected", "predicted"}, std::string("projected"));
+    scene.npc_velocity = solver.text("npc_velocity", {"eq32", "average"}, std::string("eq32"));
+    scene.flip_fraction = solver.number("flip_fraction", 1.0);
+    if (!(scene.flip_fraction >= 0.0 && scene.flip_fraction <= 1.0)) solver.fail("flip_fraction", "must be in [0, 1] (1: FLIP, 0: PIC)");
     scene.control.energy_growth_limit = solver.number("energy_growth_limit", 10.0);
     if (scene.control.energy_growth_limit < 0.0) solver.fail("energy_growth_limit", "must be >= 0 (0: no check)");
     solver.reject_unknown_keys();

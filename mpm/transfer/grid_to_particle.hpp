@@ -30,29 +30,45 @@ enum class EulerPositionVelocity {
 /// \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \sum_I N_{Ip} \mathbf f_I / m_I \f$ and
 /// \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf p_I / m_I \f$.
 /// Expects nodal_velocity = v_I^k and nodal_momentum = p_I^{k+1} (after update_nodal_momentum).
+///
+/// With flip_fraction \f$ \alpha < 1 \f$ the velocity is the PIC/FLIP blend of Brackbill's FLIP and
+/// Zhu and Bridson (2005), a standard damping of explicit MPM (paper/10_integrator_analysis.md):
+/// \f[ \mathbf v_p^{k+1} = \alpha \left(\mathbf v_p^k + \Delta t \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}\right)
+///     + (1-\alpha) \sum_I N_{Ip} \frac{\mathbf p_I^{k+1}}{m_I} . \f]
+/// \f$ \alpha = 1 \f$ (the paper's scheme) is bit for bit the pure FLIP increment.
 template <int Dim>
 void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double dt,
-                                   EulerPositionVelocity position_velocity, Particles<Dim>& particles) {
+                                   EulerPositionVelocity position_velocity, Particles<Dim>& particles,
+                                   double flip_fraction = 1.0) {
   parallel_for(particles.size(), [&](int p) {
-    Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
+    Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero(), updated_velocity = Vector<Dim>::Zero();
     for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
       const int node = stencils.node[k];
       if (grid.nodal_mass[node] <= 0.0) continue;
+      const Vector<Dim> updated_velocity_I = grid.nodal_momentum[node] / grid.nodal_mass[node];
       acceleration += stencils.value[k] * grid.nodal_force[node] / grid.nodal_mass[node];
-      velocity += stencils.value[k] * (position_velocity == EulerPositionVelocity::updated
-                                           ? Vector<Dim>(grid.nodal_momentum[node] / grid.nodal_mass[node])
-                                           : grid.nodal_velocity[node]);
+      updated_velocity += stencils.value[k] * updated_velocity_I;
+      velocity += stencils.value[k] * (position_velocity == EulerPositionVelocity::updated ? updated_velocity_I
+                                                                                           : grid.nodal_velocity[node]);
     }
-    particles.velocity[p] += dt * acceleration;
+    const Vector<Dim> flip_velocity = particles.velocity[p] + dt * acceleration;
+    particles.velocity[p] = flip_fraction == 1.0 ? flip_velocity
+                                                 : Vector<Dim>(flip_fraction * flip_velocity + (1.0 - flip_fraction) * updated_velocity);
     particles.position[p] += dt * velocity;
   });
 }
 
 /// Which nodal velocity enters the position update Eq. (33) of the predictor-corrector (paper/09_choices.md).
 enum class NewmarkPositionVelocity {
-  corrected,  ///< the authors' code: v_I^{k+1} from Eq. (30) (default)
-  predicted,  ///< v_I^{pred} of Eq. (29)
-  projected   ///< the literal Eq. (33): v_I^k = sum_p N_Ip m_p v_p^k / m_I
+  projected,  ///< the literal Eq. (33): v_I^k = sum_p N_Ip m_p v_p^k / m_I (default: free fall exact)
+  corrected,  ///< the authors' code: v_I^{k+1} from Eq. (30) (an O(dt) position error under a constant force)
+  predicted   ///< v_I^{pred} of Eq. (29)
+};
+
+/// How the predictor-corrector updates the particle velocity (paper/10_integrator_analysis.md).
+enum class NewmarkParticleVelocity {
+  eq32,    ///< Eq. (32) as printed: the new acceleration only (the paper's scheme; first order, dissipative)
+  average  ///< Eq. (23)'s Newmark average of the old and new accelerations (second order, no numerical damping)
 };
 
 /// Eqs. (31)-(33), the particle update of the predictor-corrector. Eq. (32) increments v_p with the
@@ -61,10 +77,14 @@ enum class NewmarkPositionVelocity {
 /// \f[ \mathbf a_p^{k+1} = \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
 ///     \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \sum_I N_{Ip} \frac{\mathbf f_I}{m_I}, \qquad
 ///     \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I + \tfrac12 \Delta t^2 \sum_I N_{Ip} \frac{\mathbf f_I}{m_I} \f]
+/// With NewmarkParticleVelocity::average the velocity follows Eq. (23) instead,
+/// \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t \left((1-\gamma)\,\mathbf a_p^k + \gamma\, \mathbf a_p^{k+1}\right) \f$,
+/// with \f$ \mathbf a_p^k \f$ the acceleration the particle stored in the step before.
 /// Expects nodal_velocity = the corrected v_I^{k+1} and nodal_momentum = sum_p N_Ip m_p v_p^k.
 template <int Dim>
 void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double newmark_gamma, double dt,
-                             NewmarkPositionVelocity position_velocity, Particles<Dim>& particles) {
+                             NewmarkPositionVelocity position_velocity, Particles<Dim>& particles,
+                             NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32) {
   parallel_for(particles.size(), [&](int p) {
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
     for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
@@ -77,8 +97,11 @@ void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim
       acceleration += stencils.value[k] * nodal_acceleration_I;
       velocity += stencils.value[k] * nodal_velocity_I;
     }
+    const Vector<Dim> old_acceleration = particles.acceleration[p];
     particles.acceleration[p] = acceleration;
-    particles.velocity[p] += dt * acceleration;
+    particles.velocity[p] += particle_velocity == NewmarkParticleVelocity::eq32
+                                 ? Vector<Dim>(dt * acceleration)
+                                 : Vector<Dim>(dt * ((1.0 - newmark_gamma) * old_acceleration + newmark_gamma * acceleration));
     particles.position[p] += dt * velocity + 0.5 * dt * dt * acceleration;
   });
 }
@@ -115,6 +138,43 @@ TEST_CASE("Eq. (18), Eqs. (19)-(22), Eqs. (31)-(33): G2P on the worked example b
   newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::predicted, predicted);
   // v_I - gamma dt a_I = (0.9, -0.5, -1.1): x = 0.25 + 0.1 (0.675 - 0.125) + 0.005 = 0.31
   CHECK(predicted.position[0][0] == doctest::Approx(0.31));
+  Particles<1> projected = example.particles;
+  newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::projected, projected);
+  // p_I/m_I = (2, 0, -2): x = 0.25 + 0.1 (0.75 * 2) + 0.005 (1) = 0.405
+  CHECK(projected.position[0][0] == doctest::Approx(0.405));
+}
+
+TEST_CASE("Eq. (23): the Newmark average of the particle velocity by hand, at gamma = 0.6 (where gamma and 1 - gamma differ)") {
+  testing::WorkedExample example;
+  auto& grid = example.fields;
+  grid.nodal_mass = {1.5, 2.5, 2.0};
+  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(4.0)};  // a_I = 2, -2, 2: p0 gets a = 1
+  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
+  grid.nodal_momentum = {Vector<1>(3.0), Vector<1>(0.0), Vector<1>(-4.0)};
+  Particles<1> particles = example.particles;
+  particles.acceleration[0] = Vector<1>(-3.0);  // a_p^k
+  const double v0 = particles.velocity[0][0];
+  newmark_particle_update(example.stencils, grid, 0.6, 0.1, NewmarkPositionVelocity::projected, particles,
+                          NewmarkParticleVelocity::average);
+  // v = v0 + 0.1 (0.4 (-3) + 0.6 (1)) = v0 - 0.06; Eq. (32) would give v0 + 0.1
+  CHECK(particles.velocity[0][0] == doctest::Approx(v0 - 0.06));
+  CHECK(particles.acceleration[0][0] == doctest::Approx(1.0));
+}
+
+TEST_CASE("Eqs. (19)-(22): the PIC/FLIP blend of forward Euler by hand, and flip_fraction = 1 bit for bit FLIP") {
+  testing::WorkedExample example;
+  auto& grid = example.fields;
+  grid.nodal_mass = {1.5, 2.5, 2.0};
+  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(4.0)};
+  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
+  grid.nodal_momentum = {Vector<1>(3.0), Vector<1>(0.0), Vector<1>(-4.0)};  // p_I/m_I = 2, 0, -2
+  Particles<1> flip = example.particles, blend = example.particles;
+  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::updated, flip, 1.0);
+  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::updated, blend, 0.8);
+  // p0: FLIP 1.1 (above); PIC sum N p_I/m_I = 0.75 * 2 + 0.25 * 0 = 1.5; blend 0.8 * 1.1 + 0.2 * 1.5 = 1.18
+  CHECK(flip.velocity[0][0] == doctest::Approx(1.1));
+  CHECK(blend.velocity[0][0] == doctest::Approx(1.18));
+  CHECK(blend.position[0][0] == flip.position[0][0]);
 }
 
 }  // namespace mpm
