@@ -46,50 +46,54 @@ inline LmeOptions lme_options(const io::Scene& scene) {
   return options;
 }
 
-namespace detail {
-
-template <int Dim, class Shape, class Integrator>
-RunSummary simulate(const io::Scene& scene, const Setup<Dim>& setup, Shape shape, Integrator integrator,
-                    Monitor<Dim>& monitor, RunSummary* partial) {
-  Simulation<Dim, Shape, Integrator> simulation(setup.model, setup.particles, std::move(shape), integrator, scene.control);
-  try {
-    return simulation.run(monitor);
-  } catch (const SimulationFailure&) {
-    if (partial) *partial = simulation.summary();
-    throw;
-  }
+/// The scene's predictor-corrector, with its options.
+inline NewmarkPredictorCorrector npc_integrator(const io::Scene& scene) {
+  NewmarkPredictorCorrector integrator;
+  integrator.newmark_gamma = scene.newmark_gamma;
+  integrator.position_velocity = scene.npc_position_velocity == "corrected"   ? NewmarkPositionVelocity::corrected
+                                 : scene.npc_position_velocity == "predicted" ? NewmarkPositionVelocity::predicted
+                                                                              : NewmarkPositionVelocity::projected;
+  integrator.particle_velocity =
+      scene.npc_velocity == "average" ? NewmarkParticleVelocity::average : NewmarkParticleVelocity::eq32;
+  return integrator;
 }
 
-template <int Dim, class Integrator>
-RunSummary with_shape(const io::Scene& scene, const Setup<Dim>& setup, Integrator integrator, Monitor<Dim>& monitor,
-                      RunSummary* partial) {
-  const Grid<Dim>& grid = setup.model.grid;
-  if (scene.shape == "ugimp") return simulate(scene, setup, UgimpShape<Dim>(grid), integrator, monitor, partial);
-  if (scene.shape == "lme") return simulate(scene, setup, LmeShape<Dim>(grid, lme_options(scene)), integrator, monitor, partial);
-  return simulate(scene, setup, LinearShape<Dim>(grid), integrator, monitor, partial);
+/// The scene's forward Euler, with its options.
+inline ForwardEuler fe_integrator(const io::Scene& scene) {
+  ForwardEuler integrator;
+  integrator.position_velocity =
+      scene.fe_position_velocity == "updated" ? EulerPositionVelocity::updated : EulerPositionVelocity::start;
+  integrator.flip_fraction = scene.flip_fraction;
+  return integrator;
 }
 
-}  // namespace detail
+/// Calls visit(shape, integrator) with the scene's shape function and integrator, each built once:
+/// the one place where the scene's choice becomes a type.
+template <int Dim, class Visitor>
+auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit) {
+  auto with_shape = [&](auto integrator) {
+    if (scene.shape == "ugimp") return visit(UgimpShape<Dim>(grid), integrator);
+    if (scene.shape == "lme") return visit(LmeShape<Dim>(grid, lme_options(scene)), integrator);
+    return visit(LinearShape<Dim>(grid), integrator);
+  };
+  if (scene.integrator == "npc") return with_shape(npc_integrator(scene));
+  return with_shape(fe_integrator(scene));
+}
 
 /// Runs the scene's setup with the scene's shape function and integrator.
 /// \throws SimulationFailure when the method fails; `partial` then holds what was done.
 template <int Dim>
 RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor, RunSummary* partial = nullptr) {
-  if (scene.integrator == "npc") {
-    NewmarkPredictorCorrector integrator;
-    integrator.newmark_gamma = scene.newmark_gamma;
-    integrator.position_velocity = scene.npc_position_velocity == "corrected"   ? NewmarkPositionVelocity::corrected
-                                   : scene.npc_position_velocity == "predicted" ? NewmarkPositionVelocity::predicted
-                                                                                : NewmarkPositionVelocity::projected;
-    integrator.particle_velocity =
-        scene.npc_velocity == "average" ? NewmarkParticleVelocity::average : NewmarkParticleVelocity::eq32;
-    return detail::with_shape(scene, setup, integrator, monitor, partial);
-  }
-  ForwardEuler integrator;
-  integrator.position_velocity =
-      scene.fe_position_velocity == "updated" ? EulerPositionVelocity::updated : EulerPositionVelocity::start;
-  integrator.flip_fraction = scene.flip_fraction;
-  return detail::with_shape(scene, setup, integrator, monitor, partial);
+  return with_method<Dim>(scene, setup.model.grid, [&](auto shape, auto integrator) {
+    Simulation<Dim, decltype(shape), decltype(integrator)> simulation(setup.model, setup.particles, std::move(shape),
+                                                                       integrator, scene.control);
+    try {
+      return simulation.run(monitor);
+    } catch (const SimulationFailure&) {
+      if (partial) *partial = simulation.summary();
+      throw;
+    }
+  });
 }
 
 // The runs are compiled once, for Dim = 1 and 2, in mpm/run_1d.cpp and mpm/run_2d.cpp (the library

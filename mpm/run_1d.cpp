@@ -2,8 +2,10 @@
 /// The runs of 1D scenes, compiled once (mpm/run.hpp declares them extern): Simulation<1, Shape,
 /// Integrator> for every shape function and integrator.
 #include "mpm/run.hpp"
+#include "mpm/stability.hpp"
 
 namespace mpm {
 template Setup<1> build_setup<1>(const io::Scene&);
 template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
+template StabilityLimits stability_limits<1>(const io::Scene&, double);
 }  // namespace mpm

@@ -2,8 +2,10 @@
 /// The runs of 2D scenes, compiled once (mpm/run.hpp declares them extern): Simulation<2, Shape,
 /// Integrator> for every shape function and integrator.
 #include "mpm/run.hpp"
+#include "mpm/stability.hpp"
 
 namespace mpm {
 template Setup<2> build_setup<2>(const io::Scene&);
 template RunSummary run_setup<2>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
+template StabilityLimits stability_limits<2>(const io::Scene&, double);
 }  // namespace mpm

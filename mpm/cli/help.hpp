@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mpm/cli/shape_command.hpp"
+#include "mpm/cli/stability_command.hpp"
 #include "mpm/io/scene_keys.hpp"
 
 namespace mpm::cli {
@@ -84,7 +85,7 @@ inline std::string scene_keys_help() {
 /// `mpm --help`
 inline std::string main_help() {
   return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") +
-         run_usage + "\n" + shape_usage() + "\n" + plot_usage + "\n" + scene_keys_help() + "\n" + exit_codes;
+         run_usage + "\n" + shape_usage() + "\n" + plot_usage + "\n" + stability_usage() + "\n" + scene_keys_help() + "\n" + exit_codes;
 }
 
 /// The help of one command ("run", "shape", "plot"); the main help for any other.
@@ -92,6 +93,7 @@ inline std::string command_help(const std::string& command) {
   if (command == "run") return std::string(run_usage) + "\n" + scene_keys_help() + "\n" + exit_codes;
   if (command == "shape") return shape_usage() + "\n" + exit_codes;
   if (command == "plot") return std::string(plot_usage) + "\n" + exit_codes;
+  if (command == "stability") return stability_usage() + "\n" + exit_codes;
   return main_help();
 }
 
@@ -111,7 +113,7 @@ TEST_CASE("mpm help: every scene key with its default and unit, and the exit cod
     CHECK(line.find(key.fallback ? key.fallback : key.optional ? "none" : "required") != std::string::npos);
     CHECK(line.find(std::string("  ") + key.unit + "  ") != std::string::npos);
   }
-  for (const std::string command : {"run", "shape", "plot", ""})
+  for (const std::string command : {"run", "shape", "plot", "stability", ""})
     CHECK(command_help(command).find("  3  the method failed") != std::string::npos);
   CHECK(command_help("shape").find("--tol T            LME support tolerance, in (0, 1) (default 1e-06)") != std::string::npos);
   CHECK(asks_for_help({"--dim", "1", "-h"}));

@@ -13,7 +13,9 @@
 ///   mpm plot RUN_DIR
 ///       Draws the run's observers (beside exact.csv when the scene names an exact solution) and
 ///       energy balance into RUN_DIR/observers.png and energy.png (mpm/cli/plot_command.hpp).
-///   mpm --help, mpm run --help, mpm shape --help, mpm plot --help (mpm/cli/help.hpp)
+///   mpm stability [--shape S] [--integrator I] [--newmark-gamma G] [--npc-velocity V] [--ppc N] [--lme-gamma G] [--dim D] ...
+///       Prints the largest stable CFL of a method from its own linearised step (mpm/cli/stability_command.hpp).
+///   mpm --help, mpm run --help, mpm shape --help, mpm plot --help, mpm stability --help (mpm/cli/help.hpp)
 ///   mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
 ///             [--particle-size S] [--tol T]
 ///       Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of
@@ -34,11 +36,13 @@
 #include "mpm/cli/help.hpp"
 #include "mpm/cli/plot_command.hpp"
 #include "mpm/cli/shape_command.hpp"
+#include "mpm/cli/stability_command.hpp"
 #include "mpm/io/exact_series.hpp"
 #include "mpm/io/run_writer.hpp"
 #include "mpm/io/scene_resolved.hpp"
 #include "mpm/io/scene_warnings.hpp"
 #include "mpm/run.hpp"
+#include "mpm/stability.hpp"
 
 namespace {
 
@@ -48,6 +52,7 @@ const char* usage =
     "       mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
     "                 [--particle-size S] [--tol T]\n"
     "       mpm plot RUN_DIR\n"
+    "       mpm stability [--shape S] [--integrator I] [--newmark-gamma G] [--npc-velocity V] [--ppc N] [--lme-gamma G] [--dim D]\n"
     "       mpm --help | mpm COMMAND --help\n";
 
 template <int Dim>
@@ -155,7 +160,8 @@ int run_command(const std::vector<std::string>& arguments) {
   if (folder.empty()) folder = "runs/" + std::filesystem::path(scene_path).stem().string();
   try {
     const mpm::io::Scene scene = mpm::load_scene(scene_path, overrides, budget);
-    for (const auto& warning : mpm::io::scene_warnings(scene_path, overrides, scene)) std::cerr << warning << "\n";
+    for (const auto& warning : mpm::io::scene_warnings(scene_path, overrides, scene, mpm::scene_cfl_limit(scene)))
+      std::cerr << warning << "\n";
     if (print_scene) {
       mpm::io::print_resolved_scene(scene, std::cout);
       return 0;
@@ -184,6 +190,7 @@ int main(int argc, char** argv) {
     if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);
     if (arguments[0] == "run") return run_command(rest);
     if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
+    if (arguments[0] == "stability") return mpm::cli::stability_command(rest, std::cout, std::cerr);
   } catch (const std::bad_alloc&) {
     std::cerr << "failure: out of memory (the scene's estimate was below --max-memory; please report it)\n";
     return 3;

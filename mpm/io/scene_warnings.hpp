@@ -2,7 +2,8 @@
 /// Warnings for a scene that is valid but suspicious: `warning: FILE:LINE: KEY: what and why`, on
 /// stderr before the run; a warning never stops a run (errors do: mpm/io/scene.hpp).
 ///   - an observer outside every [[body]] (the particle nearest to it is observed instead);
-///   - a CFL above the measured stability limit of the chosen shape function and integrator;
+///   - a CFL above the stability limit of the chosen method, from its own linearised step (mpm/stability.hpp:
+///     the caller computes it and passes it in, so that reading a scene needs no solver);
 ///   - LME next to rigid margin nodes behind a fixed face (it gives way there).
 /// uGIMP needs no warning at a wall: its particle domain is clipped at the grid's edge
 /// (mpm/shape/ugimp.hpp), so it runs whether or not there are margin cells.
@@ -11,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -18,38 +20,6 @@
 #include "mpm/io/scene_file.hpp"
 
 namespace mpm::io {
-
-/// The largest CFL of Eq. (42) for which a method stays stable, as measured.
-struct StabilityLimit {
-  const char* shape;
-  double lme_gamma;  ///< for shape "lme"; 0 otherwise
-  double forward_euler, predictor_corrector;
-};
-
-/// Measured by verification/dyka_stability.sh (`make figures`, results/data/dyka_stability.csv): the
-/// largest CFL for which the Dyka bar (scenes/dyka_bar.toml, 40 cells) stays bounded to 200 us, found
-/// by bisection on the exit code to 0.008 (reported in results/report.md, "where methods fail").
-/// Each unstable run was stopped by the solver's energy-growth check. 1D numbers: in 2D the limits are
-/// lower (the soil block, LME gamma 3 with NPC: 1.35), so a CFL above them is unstable in 2D too.
-inline const std::vector<StabilityLimit>& measured_stability_limits() {
-  static const std::vector<StabilityLimit> limits = {
-      {"linear", 0.0, 2.00, 1.42}, {"ugimp", 0.0, 2.00, 1.42}, {"lme", 1.0, 3.21, 2.27},
-      {"lme", 3.0, 2.03, 1.44},    {"lme", 5.0, 2.00, 1.42},
-  };
-  return limits;
-}
-
-/// The measured limit of a method; for LME the entry of the smallest measured gamma >= lme_gamma (the
-/// limit falls as gamma grows, so this errs on the safe side), the largest measured gamma above it.
-inline const StabilityLimit& stability_limit(const std::string& shape, double lme_gamma) {
-  const StabilityLimit* chosen = nullptr;
-  for (const auto& limit : measured_stability_limits()) {
-    if (shape != limit.shape) continue;
-    if (shape != "lme" || limit.lme_gamma >= lme_gamma - 1e-12) return limit;
-    chosen = &limit;  // the largest measured gamma so far
-  }
-  return *chosen;
-}
 
 /// `FILE:LINE` of a key given by its full path ("solver.cfl", "observer[0].position"): `--set(n):1` if
 /// an override set it, the line of its table if the scene leaves it to its default.
@@ -68,8 +38,9 @@ inline std::string location_of(const SceneFile& file, const std::string& full_ke
   return file.path + ":" + std::to_string(line);
 }
 
-/// The warnings of a validated scene, one line each.
-inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scene& scene) {
+/// The warnings of a validated scene, one line each; cfl_limit is the method's largest stable CFL (NaN: not known).
+inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scene& scene,
+                                               double cfl_limit = std::numeric_limits<double>::quiet_NaN()) {
   std::vector<std::string> warnings;
   auto warn = [&](const std::string& key, const std::string& what) {
     warnings.push_back("warning: " + location_of(file, key) + ": " + key + ": " + what);
@@ -89,25 +60,15 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
       warn("observer[" + std::to_string(k) + "].position",
            "lies outside every [[body]]: the particle nearest to it at t = 0 is observed instead");
   }
-  {  // Eq. (42) takes c = sqrt(E/rho); in 2D the P-wave speed sqrt(M/rho) is faster, so the effective CFL is larger.
-    const double nu = scene.poisson_ratio;
-    const double stiffening = dim == 2 ? std::sqrt((1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu))) : 1.0;
-    const double effective = scene.control.cfl * stiffening;
-    const StabilityLimit& limit = stability_limit(scene.shape, scene.lme_gamma);
-    const bool npc = scene.integrator == "npc";
-    const double largest = npc ? limit.predictor_corrector : limit.forward_euler;
-    if (effective > largest) {
-      char what[400];
-      std::snprintf(what, sizeof what,
-                    "%g%s is above the measured stability limit %.2f of %s%s with %s (Dyka bar, 40 cells: "
-                    "verification/dyka_stability.sh); expect the run to stop with energy growth (exit 3)",
-                    scene.control.cfl,
-                    stiffening != 1.0 ? (" (" + std::to_string(effective) + " with the P-wave speed)").c_str() : "",
-                    largest, scene.shape.c_str(),
-                    scene.shape == "lme" ? (" gamma " + std::to_string(limit.lme_gamma).substr(0, 3)).c_str() : " shapes",
-                    npc ? "the predictor-corrector" : "forward Euler");
-      warn("solver.cfl", what);
-    }
+  if (scene.control.cfl > cfl_limit) {  // false when the limit is NaN
+    char what[400];
+    std::snprintf(what, sizeof what,
+                  "%g is above the stability limit %.3f of %s shapes with %s%s, from the method's own linearised step "
+                  "(`mpm stability`, paper/10_integrator_analysis.md); expect the run to stop with energy growth (exit 3)",
+                  scene.control.cfl, cfl_limit, scene.shape.c_str(),
+                  scene.integrator == "npc" ? "the predictor-corrector" : "forward Euler",
+                  scene.integrator == "npc" && scene.npc_velocity == "average" ? " (Newmark average)" : "");
+    warn("solver.cfl", what);
   }
   const char* faces[2][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}};
   for (const auto& fixed : scene.fixed) {
@@ -125,35 +86,30 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
 
 /// The warnings of a scene read from `path` with `overrides` (already validated into `scene`).
 inline std::vector<std::string> scene_warnings(const std::string& path, const std::vector<std::string>& overrides,
-                                               const Scene& scene) {
+                                               const Scene& scene, double cfl_limit) {
   SceneFile file = parse_scene_file(path);
   for (size_t k = 0; k < overrides.size(); ++k) apply_override(file, overrides[k], static_cast<int>(k) + 1);
-  return scene_warnings(file, scene);
+  return scene_warnings(file, scene, cfl_limit);
 }
 
-TEST_CASE("Scene warnings: the measured stability limits, and each warning at its key and line") {
-  CHECK(stability_limit("linear", 3.0).predictor_corrector == 1.42);
-  CHECK(stability_limit("lme", 1.0).forward_euler == 3.21);
-  CHECK(stability_limit("lme", 2.0).forward_euler == 2.03);  // between measured gammas: the larger gamma's
-  CHECK(stability_limit("lme", 0.8).forward_euler == 3.21);
-  CHECK(stability_limit("lme", 8.0).forward_euler == 2.00);
-
+TEST_CASE("Scene warnings: the CFL above the method's limit, and each warning at its key and line") {
   const std::string base =
       "[grid]\nlength = [1.0]\ncells = [10]\nmargin_min = [2]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
       "[[body]]\nmin = [0.0]\nmax = [1.0]\n[[fixed]]\nface = \"xmax\"\ncomponents = [\"x\"]\n"
       "[[observer]]\nname = \"A\"\nposition = [0.0]\n[solver]\nend_time = 1.0\n";
-  auto warnings_of = [](const std::string& text, const std::vector<std::string>& overrides = {}) {
+  auto warnings_of = [](const std::string& text, const std::vector<std::string>& overrides = {},
+                        double cfl_limit = std::numeric_limits<double>::quiet_NaN()) {
     SceneFile file = parse_scene_text(text, "w.toml");
     for (size_t k = 0; k < overrides.size(); ++k) apply_override(file, overrides[k], static_cast<int>(k) + 1);
-    return scene_warnings(file, read_scene(file));
+    return scene_warnings(file, read_scene(file), cfl_limit);
   };
   CHECK(warnings_of(base).empty());
-  auto cfl = warnings_of(base + "cfl = 2.1\n");
+  auto cfl = warnings_of(base + "cfl = 2.1\n", {}, 2.0);
   REQUIRE(cfl.size() == 1);
-  CHECK(cfl[0].rfind("warning: w.toml:19: solver.cfl: 2.1 is above the measured stability limit 2.00 of linear shapes with forward Euler", 0) == 0);
-  CHECK(warnings_of(base + "cfl = 2.0\n").empty());
-  CHECK(warnings_of(base + "cfl = 1.43\nintegrator = \"npc\"\n").size() == 1);
-  CHECK(warnings_of(base + "cfl = 3.0\nshape = \"lme\"\nlme_gamma = 1.0\n").empty());
+  CHECK(cfl[0].rfind("warning: w.toml:19: solver.cfl: 2.1 is above the stability limit 2.000 of linear shapes with forward Euler", 0) == 0);
+  CHECK(warnings_of(base + "cfl = 2.0\n", {}, 2.0).empty());
+  CHECK(warnings_of(base + "cfl = 2.1\n").empty());  // no limit known: no warning
+  CHECK(warnings_of(base + "cfl = 1.43\nintegrator = \"npc\"\n", {}, 1.414).size() == 1);
   auto observer = warnings_of(base, {"observer[0].position=[-0.1]"});
   REQUIRE(observer.size() == 1);
   CHECK(observer[0].rfind("warning: --set(1):1: observer[0].position: lies outside every [[body]]", 0) == 0);
@@ -163,14 +119,6 @@ TEST_CASE("Scene warnings: the measured stability limits, and each warning at it
   // uGIMP is clipped at the grid's edge: at a fixed face it needs no margin, and gets no warning either way.
   CHECK(warnings_of(base + "shape = \"ugimp\"\n").empty());
   CHECK(warnings_of(base + "shape = \"ugimp\"\n", {"grid.margin_max=[1]"}).empty());
-  // 2D, nu = 0.3: Eq. (42)'s CFL 1.3 is 1.52 with the P-wave speed, above LME gamma 3's 1.44 with NPC.
-  const std::string block =
-      "dimension = 2\n[grid]\nlength = [1.0, 1.0]\ncells = [2, 2]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
-      "poisson_ratio = 0.3\n[[body]]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[solver]\nend_time = 1.0\nshape = \"lme\"\n"
-      "integrator = \"npc\"\ncfl = 1.3\n";
-  auto block_warnings = warnings_of(block);
-  REQUIRE(block_warnings.size() == 1);
-  CHECK(block_warnings[0].find("1.3 (1.508") != std::string::npos);
 }
 
 }  // namespace mpm::io

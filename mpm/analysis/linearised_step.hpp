@@ -1,0 +1,116 @@
+/// \file
+/// The code's own step, linearised about rest: the matrix \f$ \mathbf S \f$ with
+/// \f$ \mathbf z^{k+1} = \mathbf S\, \mathbf z^k \f$ for the particle state
+/// \f$ \mathbf z = (\mathbf v_p, \boldsymbol\varepsilon_p, \mathbf a_p)_p \f$ (the stress is Hooke's law of the strain, Eq. (3)), built column by column by applying the real
+/// Integrator::step() to unit perturbations of a body at rest (paper/10_integrator_analysis.md).
+///
+/// About rest every term of the step is linear in \f$ \mathbf z \f$ except two that multiply a perturbation by
+/// another (the volume \f$ m_p/\rho_p \f$ of Eq. (17) times the stress of the strain, the moved positions of the next
+/// stencils): central differences \f$ (\mathbf S(\epsilon \mathbf e_j) - \mathbf S(-\epsilon \mathbf e_j)) / 2\epsilon \f$
+/// cancel the first; the stencils stay at the rest positions, which is the linearisation of the second.
+/// The step is stable while the spectral radius \f$ \rho(\mathbf S) \le 1 \f$.
+#pragma once
+#include <Eigen/Dense>
+#include <algorithm>
+#include <vector>
+
+#include "mpm/core/phase_timers.hpp"
+#include "mpm/grid/grid_fields.hpp"
+#include "mpm/loading/body_force.hpp"
+#include "mpm/model.hpp"
+#include "mpm/particles/particles.hpp"
+#include "mpm/particles/stencils.hpp"
+
+namespace mpm {
+
+/// Unknowns per particle of the linearised step: v (Dim), the in-plane strain (Dim (Dim + 1) / 2) and a (Dim).
+template <int Dim>
+constexpr int linearised_states_per_particle() {
+  return Dim + Dim * (Dim + 1) / 2 + Dim;
+}
+
+namespace detail {
+
+/// Adds amount to unknown `state` of the particle state (its layout: linearised_states_per_particle()).
+template <int Dim>
+void perturb_state(Particles<Dim>& particles, int state, double amount) {
+  const int per_particle = linearised_states_per_particle<Dim>(), p = state / per_particle;
+  int local = state % per_particle;
+  if (local < Dim) {
+    particles.velocity[p][local] += amount;
+    return;
+  }
+  local -= Dim;
+  if (local < Dim * (Dim + 1) / 2) {
+    const int row = local < Dim ? local : 0, column = local < Dim ? local : 1;  // xx, yy, then xy
+    particles.strain[p](row, column) += amount;
+    if (row != column) particles.strain[p](column, row) += amount;
+    return;
+  }
+  particles.acceleration[p][local - Dim * (Dim + 1) / 2] += amount;
+}
+
+/// The particle state as one vector, in the layout of perturb_state().
+template <int Dim>
+Eigen::VectorXd state_vector(const Particles<Dim>& particles) {
+  const int per_particle = linearised_states_per_particle<Dim>();
+  Eigen::VectorXd state(particles.size() * per_particle);
+  for (int p = 0; p < particles.size(); ++p) {
+    int k = p * per_particle;
+    for (int axis = 0; axis < Dim; ++axis) state[k++] = particles.velocity[p][axis];
+    for (int axis = 0; axis < Dim; ++axis) state[k++] = particles.strain[p](axis, axis);
+    if (Dim == 2) state[k++] = particles.strain[p](0, Dim - 1);
+    for (int axis = 0; axis < Dim; ++axis) state[k++] = particles.acceleration[p][axis];
+  }
+  return state;
+}
+
+}  // namespace detail
+
+/// The linearised step matrix of `integrator` with time step dt, for the body `rest` (at rest:
+/// zero velocity, stress and acceleration), its stencils from `shape` at the rest positions and no body force.
+template <int Dim, class Shape, class Integrator>
+Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<Dim>& rest, Shape& shape,
+                                       const Integrator& integrator, double dt) {
+  Particles<Dim> particles = rest;
+  shape.initialise(particles);
+  Stencils<Dim> stencils;
+  stencils.resize(particles.size(), shape.capacity());
+  compute_stencils(shape, particles.position, stencils);
+  ParticleBodyForces<Dim> no_body_force;
+  no_body_force.per_unit_mass.assign(particles.size(), Vector<Dim>::Zero());
+  GridFields<Dim> grid(model.grid.node_count());
+  grid.prepare_threads(1);
+  PhaseTimers timers;
+  const int size = particles.size() * linearised_states_per_particle<Dim>();
+  const double perturbation = 1e-6;
+  Eigen::MatrixXd step(size, size);
+  for (int column = 0; column < size; ++column) {
+    Eigen::VectorXd response[2];
+    for (int side = 0; side < 2; ++side) {
+      particles = rest;
+      detail::perturb_state(particles, column, side == 0 ? perturbation : -perturbation);
+      integrator.step(model, stencils, no_body_force, dt, particles, grid, timers);
+      response[side] = detail::state_vector(particles);
+    }
+    step.col(column) = (response[0] - response[1]) / (2.0 * perturbation);
+  }
+  return step;
+}
+
+/// \f$ \rho(\mathbf S) = \max_j |\lambda_j| \f$ (Eigen's real Schur-based eigensolver, eigenvalues only).
+inline double spectral_radius(const Eigen::MatrixXd& step) {
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(step, false);
+  return solver.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+/// The largest \f$ \Omega = \omega\Delta t \f$ among the modes of a step whose modes all keep their energy
+/// (\f$ |\lambda| = 1 \f$, forward Euler): \f$ \lambda + \lambda^{-1} = 2 - \Omega^2 \f$, so \f$ \Omega = \sqrt{2 - 2\,\mathrm{Re}\,\lambda} \f$.
+inline double highest_mode_omega_dt(const Eigen::MatrixXd& energy_keeping_step) {
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(energy_keeping_step, false);
+  double highest = 0.0;
+  for (const auto& eigenvalue : solver.eigenvalues()) highest = std::max(highest, std::sqrt(std::max(0.0, 2.0 - 2.0 * eigenvalue.real())));
+  return highest;
+}
+
+}  // namespace mpm

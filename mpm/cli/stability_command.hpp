@@ -1,0 +1,196 @@
+/// \file
+/// `mpm stability`: the largest stable CFL of a method, from the spectral radius of the code's own
+/// linearised step on a uniform body held at its walls (mpm/stability.hpp, paper/10_integrator_analysis.md).
+///
+///   $ build/bin/mpm stability --shape linear --integrator npc --newmark-gamma 0.75
+///   dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,highest_mode,cfl_limit,cfl_limit_from_modes
+///   1,linear,3,npc,eq32,0.75,1,1,0,64,192,1,1.63299...,1.63299...
+#pragma once
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mpm/stability.hpp"
+
+namespace mpm::cli {
+
+struct StabilityRequest {
+  int dimension = 1, ppc = 1, cells = 0;
+  std::string shape = "linear", integrator = "fe", npc_velocity = "eq32";
+  double newmark_gamma = 0.5, lme_gamma = 3.0, flip_fraction = 1.0, poisson_ratio = 0.0;
+};
+
+inline std::string stability_usage() {
+  const StabilityRequest defaults;
+  std::ostringstream out;
+  out << "usage: mpm stability [--shape linear|ugimp|lme] [--integrator fe|npc] [--newmark-gamma G]\n"
+         "                     [--npc-velocity eq32|average] [--flip-fraction A] [--ppc N] [--lme-gamma G]\n"
+         "                     [--dim 1|2] [--poisson-ratio NU] [--cells N]\n"
+         "  Prints CSV with the largest stable CFL (Eq. 42, c = sqrt(E / rho)) of a method: cfl_limit, from the spectral\n"
+         "  radius of the code's own step linearised about rest on a uniform bar (1D) or square (2D) held at its walls,\n"
+         "  and cfl_limit_from_modes, the one-mode analysis (2 for forward Euler and the Newmark average, 2/sqrt(3 - 2 gamma)\n"
+         "  for Eq. 32) divided by the body's highest mode omega_max h / c (highest_mode).\n"
+      << "  --shape S          linear | ugimp | lme (default " << defaults.shape << ")\n"
+      << "  --integrator I     fe | npc (default " << defaults.integrator << ")\n"
+      << "  --newmark-gamma G  Newmark gamma of npc, in [0, 1] (default " << defaults.newmark_gamma << ")\n"
+      << "  --npc-velocity V   eq32 | average (default " << defaults.npc_velocity << ")\n"
+      << "  --flip-fraction A  forward Euler's PIC/FLIP blend, in [0, 1] (default " << defaults.flip_fraction << ")\n"
+      << "  --ppc N            particles per cell and axis, 1 to 4 (default " << defaults.ppc << ")\n"
+      << "  --lme-gamma G      LME locality gamma (default " << defaults.lme_gamma << ")\n"
+      << "  --dim D            1 or 2 (default " << defaults.dimension << ")\n"
+      << "  --poisson-ratio NU plane strain, in [0, 0.5) (default " << defaults.poisson_ratio << ")\n"
+      << "  --cells N          cells per axis, 4 to 256, at most 1000 unknowns in all (default max(16, 64 / ppc) in 1D,\n"
+         "                     max(4, 8 / ppc) in 2D)\n";
+  return out.str();
+}
+
+/// Parses the options and prints the CSV; returns the exit code (2 with a message naming the option on bad input).
+inline int stability_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+  StabilityRequest request;
+  auto fail = [&](const std::string& option, const std::string& what) {
+    err << "error: " << option << ": " << what << "\n";
+    return 2;
+  };
+  auto read_number = [](const std::string& text, double& number) {
+    std::size_t end = 0;
+    try {
+      number = std::stod(text, &end);
+    } catch (const std::exception&) {
+      return false;
+    }
+    return end == text.size() && std::isfinite(number);
+  };
+  auto read_whole = [&](const std::string& text, int& number, int low, int high) {
+    double value = 0.0;
+    if (!read_number(text, value) || value != std::floor(value) || value < low || value > high) return false;
+    number = static_cast<int>(value);
+    return true;
+  };
+  for (size_t k = 0; k < arguments.size(); ++k) {
+    const std::string& option = arguments[k];
+    if (k + 1 >= arguments.size()) return fail(option, "needs a value");
+    const std::string value = arguments[++k];
+    const auto in = [&](double number, double low, double high) { return number >= low && number <= high; };
+    if (option == "--shape") {
+      if (value != "linear" && value != "ugimp" && value != "lme") return fail(option, "must be linear, ugimp or lme, got '" + value + "'");
+      request.shape = value;
+    } else if (option == "--integrator") {
+      if (value != "fe" && value != "npc") return fail(option, "must be fe or npc, got '" + value + "'");
+      request.integrator = value;
+    } else if (option == "--npc-velocity") {
+      if (value != "eq32" && value != "average") return fail(option, "must be eq32 or average, got '" + value + "'");
+      request.npc_velocity = value;
+    } else if (option == "--newmark-gamma") {
+      if (!read_number(value, request.newmark_gamma) || !in(request.newmark_gamma, 0.0, 1.0))
+        return fail(option, "must be a number in [0, 1], got '" + value + "'");
+    } else if (option == "--flip-fraction") {
+      if (!read_number(value, request.flip_fraction) || !in(request.flip_fraction, 0.0, 1.0))
+        return fail(option, "must be a number in [0, 1], got '" + value + "'");
+    } else if (option == "--lme-gamma") {
+      if (!read_number(value, request.lme_gamma) || !(request.lme_gamma > 0.0))
+        return fail(option, "must be a number > 0, got '" + value + "'");
+    } else if (option == "--poisson-ratio") {
+      if (!read_number(value, request.poisson_ratio) || !(request.poisson_ratio >= 0.0 && request.poisson_ratio < 0.5))
+        return fail(option, "must be a number in [0, 0.5), got '" + value + "'");
+    } else if (option == "--ppc") {
+      if (!read_whole(value, request.ppc, 1, 4)) return fail(option, "must be a whole number from 1 to 4, got '" + value + "'");
+    } else if (option == "--cells") {
+      if (!read_whole(value, request.cells, 4, 256)) return fail(option, "must be a whole number from 4 to 256, got '" + value + "'");
+    } else if (option == "--dim") {
+      if (value != "1" && value != "2") return fail(option, "must be 1 or 2, got '" + value + "'");
+      request.dimension = value == "1" ? 1 : 2;
+    } else {
+      return fail(option,
+                  "unknown option; allowed: --shape --integrator --newmark-gamma --npc-velocity --flip-fraction --ppc "
+                  "--lme-gamma --dim --poisson-ratio --cells");
+    }
+  }
+  StabilityBody body;
+  body.dimension = request.dimension;
+  body.cells = request.cells;
+  body.ppc = request.ppc;
+  body.poisson_ratio = request.poisson_ratio;
+  if (stability_unknowns(body) > 1000)
+    return fail(request.cells > 0 ? "--cells" : "--ppc",
+                "the body would have " + std::to_string(stability_unknowns(body)) +
+                    " unknowns, more than 1000 (the step matrix is dense; its eigenvalues cost their cube): fewer cells or particles");
+  std::ostringstream number;
+  number << std::setprecision(17);
+  auto setting = [&](const std::string& key, double value) {
+    number.str("");
+    number << value;
+    return "solver." + key + "=" + number.str();
+  };
+  body.method = {"solver.shape=\"" + request.shape + "\"", "solver.integrator=\"" + request.integrator + "\"",
+                 "solver.npc_velocity=\"" + request.npc_velocity + "\"", setting("newmark_gamma", request.newmark_gamma),
+                 setting("flip_fraction", request.flip_fraction), setting("lme_gamma", request.lme_gamma)};
+  io::Scene scene;
+  try {
+    scene = stability_scene(body);
+  } catch (const SceneError& error) {  // e.g. an LME gamma too large for its support tolerance
+    err << "error: " << (error.message().find("lme_gamma") != std::string::npos ? "--lme-gamma" : "option") << ": "
+        << error.message() << "\n";
+    return 2;
+  }
+  const StabilityLimits limits = request.dimension == 1 ? stability_limits<1>(scene) : stability_limits<2>(scene);
+  out << "dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,"
+         "highest_mode,cfl_limit,cfl_limit_from_modes\n"
+      << std::setprecision(8) << request.dimension << "," << request.shape << "," << request.lme_gamma << ","
+      << request.integrator << "," << request.npc_velocity << "," << request.newmark_gamma << "," << request.flip_fraction
+      << "," << request.ppc << "," << request.poisson_ratio << "," << stability_cells(body) << "," << limits.unknowns << ","
+      << limits.highest_mode << "," << limits.cfl_limit << "," << limits.cfl_limit_from_modes << "\n";
+  return 0;
+}
+
+TEST_CASE("mpm stability: linear shapes at 1 ppc, 2 for forward Euler and 2/sqrt(3 - 2 gamma) for Eq. (32), to 1e-3") {
+  auto limit_of = [](const std::vector<std::string>& arguments) {
+    std::ostringstream out, err;
+    REQUIRE(stability_command(arguments, out, err) == 0);
+    std::istringstream lines(out.str());
+    std::string header, row;
+    std::getline(lines, header);
+    std::getline(lines, row);
+    // cfl_limit is the 13th column
+    std::istringstream fields(row);
+    std::string field;
+    for (int column = 0; column < 13; ++column) std::getline(fields, field, ',');
+    return std::stod(field);
+  };
+  CHECK(limit_of({"--integrator", "fe"}) == doctest::Approx(2.0).epsilon(1e-3));
+  CHECK(limit_of({"--integrator", "npc"}) == doctest::Approx(std::sqrt(2.0)).epsilon(1e-3));
+  CHECK(limit_of({"--integrator", "npc", "--newmark-gamma", "0.75"}) == doctest::Approx(2.0 / std::sqrt(1.5)).epsilon(1e-3));
+  CHECK(limit_of({"--integrator", "npc", "--newmark-gamma", "0.6", "--npc-velocity", "average"}) == doctest::Approx(2.0).epsilon(1e-3));
+  std::ostringstream out, err;
+  CHECK(stability_command({"--newmark-gamma", "1.5"}, out, err) == 2);
+  CHECK(err.str().find("--newmark-gamma") != std::string::npos);
+  CHECK(stability_command({"--ppc", "0"}, out, err) == 2);
+  CHECK(stability_command({"--shape"}, out, err) == 2);
+  CHECK(stability_command({"--shape", "cubic"}, out, err) == 2);
+  CHECK(stability_command({"--lme-gamma", "50", "--shape", "lme"}, out, err) == 2);
+  CHECK(stability_command({"--dim", "2", "--cells", "12"}, out, err) == 2);  // 1008 unknowns
+  CHECK(out.str().empty());
+}
+
+TEST_CASE("scene_cfl_limit: mpm run's warning limit for a scene, 1D and 2D") {
+  const std::string bar =
+      "[grid]\nlength = [1.0]\ncells = [10]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
+      "[[body]]\nmin = [0.0]\nmax = [1.0]\n[solver]\nend_time = 1.0\nintegrator = \"npc\"\nnewmark_gamma = 0.75\n";
+  io::SceneFile file = io::parse_scene_text(bar, "bar.toml");
+  CHECK(scene_cfl_limit(io::read_scene(file)) == doctest::Approx(2.0 / std::sqrt(1.5)).epsilon(1e-3));
+  // 2D plane strain, nu = 0.3: the P-wave modulus E (1 - nu) / ((1 + nu)(1 - 2 nu)) = 1.346 E makes the highest
+  // mode faster than c = sqrt(E / rho) of Eq. (42), so the limit falls below forward Euler's 2 by about 1/sqrt(1.346)
+  const std::string block =
+      "dimension = 2\n[grid]\nlength = [1.0, 1.0]\ncells = [2, 2]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
+      "poisson_ratio = 0.3\n[[body]]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[solver]\nend_time = 1.0\n";
+  io::SceneFile block_file = io::parse_scene_text(block, "block.toml");
+  const double limit = scene_cfl_limit(io::read_scene(block_file));
+  CHECK(limit < 2.0 / std::sqrt(1.346) * 1.05);
+  CHECK(limit > 2.0 / std::sqrt(1.346) * 0.9);
+}
+
+}  // namespace mpm::cli

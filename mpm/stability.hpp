@@ -1,0 +1,148 @@
+/// \file
+/// The largest stable CFL of a method, from the spectral radius of its own linearised step
+/// (mpm/analysis/linearised_step.hpp) on a uniform body, beside the limit that the one-mode analysis
+/// (mpm/analysis/mode_analysis.hpp) predicts from the highest mode (paper/10_integrator_analysis.md).
+/// `mpm stability` prints it; `mpm run` warns with it.
+#pragma once
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "mpm/analysis/linearised_step.hpp"
+#include "mpm/analysis/mode_analysis.hpp"
+#include "mpm/run.hpp"
+
+namespace mpm {
+
+/// What the body of a stability analysis is: a uniform grid of `cells` per axis, every face fixed
+/// (a bar or square held at its walls), `ppc` particles per cell and axis at the centres of a uniform
+/// subdivision, c = 1 m/s (E = rho = 1), h = 1 m, and the method of the scene options.
+struct StabilityBody {
+  int dimension = 1;
+  int cells = 0;  ///< per axis; 0: 64 / ppc (at least 16) in 1D, 8 / ppc (at least 4) in 2D
+  int ppc = 1;
+  double poisson_ratio = 0.0;
+  std::vector<std::string> method;  ///< solver settings as scene overrides (`solver.shape="lme"`, ...)
+};
+
+inline int stability_cells(const StabilityBody& body) {
+  if (body.cells > 0) return body.cells;
+  return body.dimension == 1 ? std::max(16, 64 / body.ppc) : std::max(4, 8 / body.ppc);
+}
+
+/// The unknowns of the body's linearised step (its matrix is dense: the cost grows as their cube).
+inline long stability_unknowns(const StabilityBody& body) {
+  const long per_axis = long(stability_cells(body)) * body.ppc;
+  return (body.dimension == 1 ? per_axis : per_axis * per_axis) * (body.dimension == 1 ? 3 : 7);
+}
+
+/// The scene of a stability body (validated like any scene: a bad method setting throws SceneError naming its key).
+inline io::Scene stability_scene(const StabilityBody& body) {
+  const int cells = stability_cells(body);
+  const bool two = body.dimension == 2;
+  auto axes = [&](const std::string& value) { return "[" + value + (two ? ", " + value : "") + "]"; };
+  std::ostringstream text;
+  text << "title = \"stability\"\ndimension = " << body.dimension << "\n"
+       << "[grid]\norigin = " << axes("0.0") << "\nlength = " << axes(std::to_string(cells) + ".0")
+       << "\ncells = " << axes(std::to_string(cells)) << "\n"
+       << "[material]\nyoung_modulus = 1.0\ndensity = 1.0\npoisson_ratio = " << body.poisson_ratio << "\n"
+       << "[[body]]\nmin = " << axes("0.0") << "\nmax = " << axes(std::to_string(cells) + ".0")
+       << "\nparticles_per_cell = " << axes(std::to_string(body.ppc)) << "\n";
+  for (const char* face : {"xmin", "xmax", "ymin", "ymax"}) {
+    if (!two && face[0] == 'y') continue;
+    text << "[[fixed]]\nface = \"" << face << "\"\ncomponents = " << (two ? "[\"x\", \"y\"]" : "[\"x\"]") << "\n";
+  }
+  text << "[solver]\nend_time = 1.0\n";
+  io::SceneFile file = io::parse_scene_text(text.str(), "stability");
+  for (size_t k = 0; k < body.method.size(); ++k) io::apply_override(file, body.method[k], static_cast<int>(k) + 1);
+  return io::read_scene(file);
+}
+
+struct StabilityLimits {
+  int particles = 0, unknowns = 0;
+  double highest_mode = 0.0;          ///< \f$ \omega_{max} h / c \f$ of the semi-discrete body
+  double cfl_limit = 0.0;             ///< the largest CFL with \f$ \rho(\mathbf S) \le 1 \f$, by bisection
+  double cfl_limit_from_modes = 0.0;  ///< mode_stability_limit() / highest_mode (NaN where no analysis: a PIC/FLIP blend)
+};
+
+/// The limits of the scene's method on the scene's body (built by stability_scene()); the CFL limit by
+/// bisection to `relative_tolerance`.
+template <int Dim>
+StabilityLimits stability_limits(const io::Scene& scene, double relative_tolerance = 1e-6) {
+  use_threads(1);
+  const Setup<Dim> setup = build_setup<Dim>(scene);
+  const double wave_speed = std::sqrt(setup.model.material.young_modulus / setup.model.material.density);
+  const double cell_size = setup.model.grid.spacing();
+  auto time_step = [&](double cfl) { return cfl * cell_size / wave_speed; };
+  auto radius_at = [&](double cfl) {
+    return with_method<Dim>(scene, setup.model.grid, [&](auto shape, auto integrator) {
+      return spectral_radius(linearised_step_matrix(setup.model, setup.particles, shape, integrator, time_step(cfl)));
+    });
+  };
+  StabilityLimits limits;
+  limits.particles = setup.particles.size();
+  limits.unknowns = limits.particles * linearised_states_per_particle<Dim>();
+  // The highest mode, from forward Euler's energy-keeping step at CFL 0.1 with the scene's shape function.
+  io::Scene plain = scene;
+  plain.integrator = "fe";
+  plain.flip_fraction = 1.0;
+  const double probe_cfl = 0.1;
+  limits.highest_mode = with_method<Dim>(plain, setup.model.grid, [&](auto shape, auto integrator) {
+    return highest_mode_omega_dt(linearised_step_matrix(setup.model, setup.particles, shape, integrator, time_step(probe_cfl)));
+  }) / probe_cfl;
+  const bool analysed = scene.integrator == "npc" || scene.flip_fraction == 1.0;
+  const ModeScheme scheme = scene.integrator == "fe"            ? ModeScheme::forward_euler
+                            : scene.npc_velocity == "average" ? ModeScheme::npc_average
+                                                              : ModeScheme::npc_eq32;
+  limits.cfl_limit_from_modes = analysed ? mode_stability_limit(scheme, scene.newmark_gamma) / limits.highest_mode
+                                         : std::numeric_limits<double>::quiet_NaN();
+  // Bisection on the spectral radius, in a bracket around the prediction when it holds one.
+  const double tolerance = 1e-6;
+  auto stable = [&](double cfl) { return radius_at(cfl) <= 1.0 + tolerance; };
+  double low = 0.02, high = 4.0;
+  if (analysed && stable(0.98 * limits.cfl_limit_from_modes) && !stable(1.02 * limits.cfl_limit_from_modes)) {
+    low = 0.98 * limits.cfl_limit_from_modes;
+    high = 1.02 * limits.cfl_limit_from_modes;
+  } else if (!stable(low)) {
+    limits.cfl_limit = 0.0;
+    return limits;
+  } else if (stable(high)) {
+    limits.cfl_limit = high;
+    return limits;
+  }
+  while (high - low > relative_tolerance * high) {
+    const double middle = 0.5 * (low + high);
+    (stable(middle) ? low : high) = middle;
+  }
+  limits.cfl_limit = low;
+  return limits;
+}
+
+extern template StabilityLimits stability_limits<1>(const io::Scene&, double);
+extern template StabilityLimits stability_limits<2>(const io::Scene&, double);
+
+/// The CFL limit of a scene's method, for `mpm run`'s warning: its shape function, integrator and options,
+/// its largest particles per cell and its Poisson ratio, on a small uniform body (16 cells in 1D; 6 x 6
+/// cells, or 4 x 4 from 2 particles per cell, in 2D), to 1e-3. A small body has fewer modes than the scene,
+/// so its limit can lie a little above the scene's (2D linear NPC: 1.447 on 8 x 8 cells against 1.414 in 1D).
+inline double scene_cfl_limit(const io::Scene& scene) {
+  StabilityBody body;
+  body.dimension = scene.dimension;
+  for (const auto& settings : scene.bodies)
+    for (int ppc : settings.particles_per_cell) body.ppc = std::max(body.ppc, std::min(ppc, 4));
+  body.cells = scene.dimension == 1 ? 16 : body.ppc == 1 ? 6 : 4;
+  body.poisson_ratio = scene.poisson_ratio;
+  io::Scene uniform = stability_scene(body);
+  uniform.shape = scene.shape;
+  uniform.integrator = scene.integrator;
+  uniform.npc_velocity = scene.npc_velocity;
+  uniform.newmark_gamma = scene.newmark_gamma;
+  uniform.flip_fraction = scene.flip_fraction;
+  uniform.lme_gamma = scene.lme_gamma;
+  uniform.lme_tol = scene.lme_tol;
+  uniform.lme_beta = scene.lme_beta;
+  return (scene.dimension == 1 ? stability_limits<1>(uniform, 1e-3) : stability_limits<2>(uniform, 1e-3)).cfl_limit;
+}
+
+}  // namespace mpm
