@@ -105,7 +105,7 @@ warns() {  # warns PATTERN -- ARGS...: exit 0, and the warning on stderr
   [[ -s "$work/w/observers.csv" ]] || fail "mpm $*: a warning must not stop the run"
   rm -rf "$work/w"
 }
-warns "^warning: --set\(1\):1: solver\.cfl: 2\.1 is above the measured stability limit 2\.00 of linear" -- \
+warns "^warning: --set\(1\):1: solver\.cfl: 2\.1 is above the stability limit 2\.000 of linear shapes with forward Euler, from the method.s own linearised step" -- \
   run "$scene" --out "$work/w" --set solver.cfl=2.1 "${short[@]}"
 warns "^warning: --set\(1\):1: observer\[0\]\.position: lies outside every \[\[body\]\]" -- \
   run "$scene" --out "$work/w" --set 'observer[0].position=[-0.01]' "${short[@]}"
