@@ -20,12 +20,13 @@ series() {  # series NAME CAPTION INSET FILES... -- TITLES...
   g "out='$figures/$name'; caption='$caption'; files='${files# }'; titles='$titles'; inset=$inset" dyka_series.gp
 }
 series dyka_fig7 "Fig. 7: predictor-corrector against forward Euler (LME γ = 3, 40 cells, CFL 0.5); inset: a jump" 1 \
-  dyka_lme_fe_40 dyka_lme_npc_40 -- FE NPC
+  dyka_lme_fe_40 dyka_lme_npc_40 dyka_lme_npcavg_40 dyka_lme_feblend_40 -- FE NPC NPC-average FE+PIC/FLIP-blend
 series dyka_fig9 "Fig. 9: shape functions, forward Euler (40 cells, CFL 0.5)" 0 \
   dyka_linear_fe_40 dyka_ugimp_fe_40 dyka_lme_fe_40 -- linear uGIMP LME
 series dyka_fig10 "Fig. 10: shape functions, predictor-corrector (40 cells, CFL 0.5)" 0 \
   dyka_linear_npc_40 dyka_ugimp_npc_40 dyka_lme_npc_40 -- linear uGIMP LME
 g "out='$figures/dyka_fig8'" dyka_fig8.gp
+g "out='$figures/dyka_fair'" dyka_fair.gp
 g "out='$figures/dyka_work_precision'" dyka_work_precision.gp
 below=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f2) above=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f3)
 g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability.gp

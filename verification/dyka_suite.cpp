@@ -9,6 +9,12 @@
 // gamma 3 with forward Euler and the predictor-corrector (also Figs. 7, 9, 10 and the work-
 // precision chart); the gamma sweep of Fig. 8 (40 cells).
 //
+// FE against NPC, fairly (paper/10_integrator_analysis.md): on the meshes without grid crossing, every
+// shape also runs the predictor-corrector with the Newmark average (undamped) and forward Euler damped by
+// a PIC/FLIP blend (Zhu and Bridson 2005) whose FLIP fraction is set, mesh by mesh, so that linear + FE
+// loses the energy that linear + NPC loses by t = 200 us; and forward Euler's velocity is also compared
+// with the exact solution at t + dt/2, the time it approximates.
+//
 // The sweep stops at 2560 cells, the first mesh where particles cross cells at 1 particle per cell
 // (crossing ratio 1.27). 5120 cells (ratio 2.5) alone cost 167 of the 228 CPU-seconds of this suite,
 // which would put make figures past its 180 s on 2 cores (issues 9 and 10); what it showed, each
@@ -44,6 +50,18 @@ struct CaseSpec {
 std::string sweep_name(const std::string& shape, const std::string& integrator, int cells) {
   return "dyka_" + shape + "_" + integrator + "_" + std::to_string(cells);
 }
+/// The fair comparison's variants: "npcavg" (Eq. 23's average), "feblend" (forward Euler with a PIC/FLIP blend).
+std::string fair_name(const std::string& shape, const std::string& variant, int cells) {
+  return "dyka_" + shape + "_" + variant + "_" + std::to_string(cells);
+}
+std::vector<std::string> mesh_settings(const std::string& shape, int cells) {
+  std::vector<std::string> overrides = verification::shape_settings(shape);
+  overrides.insert(overrides.end(), {"grid.cells=[" + std::to_string(cells) + "]", "grid.margin_min=[" + std::to_string(4 + cells / 100) + "]",
+                                     "solver.lme_gamma=3.0", "output.snapshots=[]"});
+  return overrides;
+}
+std::vector<int> fair_cells();  // the meshes without grid crossing, below
+
 std::string gamma_name(const std::string& integrator, double gamma) {
   std::ostringstream name;
   name << "dyka_gamma_" << integrator << "_" << gamma;
@@ -63,6 +81,12 @@ std::vector<CaseSpec> all_cases() {
                                            "solver.integrator=\"" + integrator + "\"", "solver.lme_gamma=3.0", "output.snapshots=[]"});
         cases.push_back({sweep_name(shape, integrator, cells), overrides});
       }
+  for (int cells : fair_cells())
+    for (const auto& shape : shapes) {
+      std::vector<std::string> overrides = mesh_settings(shape, cells);
+      overrides.insert(overrides.end(), {"solver.integrator=\"npc\"", "solver.npc_velocity=\"average\""});
+      cases.push_back({fair_name(shape, "npcavg", cells), overrides});
+    }
   for (const auto& integrator : integrators)
     for (double gamma : gammas) {
       std::ostringstream value;
@@ -98,6 +122,12 @@ std::string band_meshes(const std::string& band) {
     if (band_of(n) == band) cells.push_back(n);
   if (cells.empty()) return "none";
   return cells.size() == 1 ? std::to_string(cells[0]) : std::to_string(cells.front()) + "-" + std::to_string(cells.back());
+}
+std::vector<int> fair_cells() {
+  std::vector<int> cells;
+  for (int n : sweep_cells)
+    if (band_of(n) == "negligible") cells.push_back(n);
+  return cells;
 }
 /// The finest mesh of the sweep, and the finest without grid crossing (the last of the transition band).
 int finest_mesh() { return sweep_cells.back(); }
@@ -151,17 +181,67 @@ int main(int argc, char** argv) {
   for (const auto& result : results) by_name[result.name] = &result;
   auto result = [&](const std::string& name) -> const verification::DykaResult& { return *by_name.at(name); };
 
+  // Forward Euler given the predictor-corrector's energy loss: per mesh, bisection on the FLIP fraction of
+  // linear + FE until its energy at 200 us matches linear + NPC's (to 1e-4 of it), then every shape at that fraction.
+  const std::vector<int> fair_meshes = fair_cells();
+  std::vector<double> flip_fraction(fair_meshes.size(), 1.0);
+  std::vector<std::vector<verification::DykaResult>> blends(fair_meshes.size());
+  std::vector<std::string> fair_names;
+  for (int cells : fair_meshes) fair_names.push_back("dyka_fair_" + std::to_string(cells));
+  verification::run_cases("dyka", fair_names, std::vector<bool>(fair_meshes.size(), false), cores, [&](size_t k, int threads) {
+    const int cells = fair_meshes[k];
+    const double target = result(sweep_name("linear", "npc", cells)).final_energy_ratio;
+    auto blended = [&](const std::string& shape, double fraction) {
+      std::vector<std::string> overrides = mesh_settings(shape, cells);
+      std::ostringstream setting;
+      setting << std::setprecision(17) << "solver.flip_fraction=" << fraction;
+      overrides.insert(overrides.end(), {"solver.integrator=\"fe\"", setting.str()});
+      return verification::run_dyka(scene, fair_name(shape, "feblend", cells), overrides, threads);
+    };
+    double low = 0.0, high = 1.0;  // the energy left grows with the FLIP fraction
+    for (int iteration = 0; iteration < 40; ++iteration) {
+      const double middle = 0.5 * (low + high);
+      const double energy = blended("linear", middle).final_energy_ratio;
+      if (std::abs(energy - target) <= 1e-4 * target) {
+        low = high = middle;
+        break;
+      }
+      (energy > target ? high : low) = middle;
+    }
+    flip_fraction[k] = 0.5 * (low + high);
+    for (const auto& shape : shapes) {
+      blends[k].push_back(blended(shape, flip_fraction[k]));
+      verification::write_series(blends[k].back(), folder + "/" + blends[k].back().name + ".csv");
+    }
+  });
+  for (const auto& mesh : blends)
+    for (const auto& run : mesh) by_name[run.name] = &run;
+
   // --- Data files --------------------------------------------------------------------------
   std::ofstream sweep(folder + "/dyka_sweep.csv");  // Fig. 6 and the work-precision chart
-  sweep << std::setprecision(8) << "shape,integrator,cells,h,crossing_ratio,band,rms,rms_over_v0,largest_speed_over_v0,wall_seconds,steps,status\n";
+  sweep << std::setprecision(8)
+        << "shape,integrator,cells,h,crossing_ratio,band,rms,rms_over_v0,largest_speed_over_v0,wall_seconds,steps,status,"
+           "rms_own_time_over_v0\n";
   for (const auto& shape : shapes)
     for (const auto& integrator : integrators)
       for (int cells : sweep_cells) {
         const auto& run = result(sweep_name(shape, integrator, cells));
         sweep << shape << "," << integrator << "," << cells << "," << 0.1333 / cells << "," << crossing_ratio(cells) << ","
               << band_of(cells) << "," << run.rms << "," << run.rms / speed_v0 << "," << run.largest_speed / speed_v0 << ","
-              << run.wall_seconds << "," << run.steps << "," << (run.failed ? "failed" : "ok") << "\n";
+              << run.wall_seconds << "," << run.steps << "," << (run.failed ? "failed" : "ok") << "," << run.rms_own_time / speed_v0 << "\n";
       }
+  std::ofstream fair(folder + "/dyka_fair.csv");  // FE against NPC, fairly
+  fair << std::setprecision(8)
+       << "shape,cells,fe,fe_own_time,npc,npc_average,fe_blend,flip_fraction,energy_fe,energy_npc,energy_npc_average,energy_fe_blend\n";
+  for (const auto& shape : shapes)
+    for (size_t k = 0; k < fair_meshes.size(); ++k) {
+      const int cells = fair_meshes[k];
+      const auto &fe = result(sweep_name(shape, "fe", cells)), &npc = result(sweep_name(shape, "npc", cells));
+      const auto &average = result(fair_name(shape, "npcavg", cells)), &blend = result(fair_name(shape, "feblend", cells));
+      fair << shape << "," << cells << "," << fe.rms / speed_v0 << "," << fe.rms_own_time / speed_v0 << "," << npc.rms / speed_v0 << ","
+           << average.rms / speed_v0 << "," << blend.rms / speed_v0 << "," << flip_fraction[k] << "," << fe.final_energy_ratio << ","
+           << npc.final_energy_ratio << "," << average.final_energy_ratio << "," << blend.final_energy_ratio << "\n";
+    }
   std::ofstream gamma_file(folder + "/dyka_gamma.csv");  // Fig. 8, second panel
   gamma_file << std::setprecision(8) << "gamma,rms_fe,rms_npc,rms_fe_over_v0,rms_npc_over_v0\n";
   for (double gamma : gammas)
@@ -171,7 +251,7 @@ int main(int argc, char** argv) {
   // --- Fitted orders per band (Fig. 6) -------------------------------------------------------
   std::ofstream orders(folder + "/dyka_orders.csv");
   orders << "shape,integrator,band,order,first_cells,last_cells,meshes\n";
-  std::map<std::string, double> order_of;
+  std::map<std::string, double> order_of, own_time_order_of;
   for (const auto& shape : shapes)
     for (const auto& integrator : integrators)
       for (const std::string band : {"negligible", "transition", "crossing"}) {
@@ -182,6 +262,9 @@ int main(int argc, char** argv) {
             cells.push_back(n), rms.push_back(result(sweep_name(shape, integrator, n)).rms);
         const double order = verification::fitted_order(cells, rms, 2);  // two meshes of the band at the least
         order_of[shape + "_" + integrator + "_" + band] = order;
+        std::vector<double> rms_own_time;
+        for (int n : cells) rms_own_time.push_back(result(sweep_name(shape, integrator, n)).rms_own_time);
+        own_time_order_of[shape + "_" + integrator + "_" + band] = verification::fitted_order(cells, rms_own_time, 2);
         orders << shape << "," << integrator << "," << band << "," << order << "," << (cells.empty() ? 0 : cells.front()) << ","
                << (cells.empty() ? 0 : cells.back()) << "," << cells.size() << "\n";
       }
@@ -276,6 +359,42 @@ int main(int argc, char** argv) {
                npc.largest_speed / speed_v0 <= 1.09 && fe.largest_speed / speed_v0 >= 1.3, false});
     sections.push_back({"Fig. 7: predictor-corrector against forward Euler (`dyka_fig7`)", list});
   }
+  {  // FE against NPC, fairly
+    std::vector<Claim> list;
+    double lowest_fraction = 1.0, highest_fraction = 0.0;
+    for (double fraction : flip_fraction) lowest_fraction = std::min(lowest_fraction, fraction), highest_fraction = std::max(highest_fraction, fraction);
+    const std::string meshes = std::to_string(fair_meshes.front()) + "-" + std::to_string(fair_meshes.back()) + " cells";
+    for (const auto& shape : shapes) {
+      int own_time = 0, average = 0, blend = 0;
+      double blend_gap = 0.0;  // largest |RMS(FE + blend) - RMS(NPC)| / RMS(NPC)
+      std::string own_row, average_row, blend_row;
+      for (int cells : fair_meshes) {
+        const auto &fe = result(sweep_name(shape, "fe", cells)), &npc = result(sweep_name(shape, "npc", cells));
+        const auto &npc_average = result(fair_name(shape, "npcavg", cells)), &fe_blend = result(fair_name(shape, "feblend", cells));
+        own_time += npc.rms < fe.rms_own_time;
+        average += npc.rms < npc_average.rms;
+        blend += npc.rms < fe_blend.rms;
+        blend_gap = std::max(blend_gap, std::abs(fe_blend.rms - npc.rms) / npc.rms);
+        own_row += " " + std::to_string(cells) + ": " + fixed(fe.rms_own_time / speed_v0) + " (at t: " + fixed(fe.rms / speed_v0) + ") against " +
+                   fixed(npc.rms / speed_v0) + ";";
+        average_row += " " + std::to_string(cells) + ": " + fixed(npc_average.rms / speed_v0) + " against " + fixed(npc.rms / speed_v0) + ";";
+        blend_row += " " + std::to_string(cells) + ": " + fixed(fe_blend.rms / speed_v0) + " against " + fixed(npc.rms / speed_v0) + ";";
+      }
+      const std::string count = " of " + std::to_string(fair_meshes.size()) + " meshes";
+      add(list, {"NPC is more accurate than FE with FE's velocity compared at t + dt/2, the time it approximates (" + shape + ", " + meshes + ")",
+                 "NPC below FE on " + std::to_string(own_time) + count + "; RMS/v0 of FE at t + dt/2 against NPC:" + own_row,
+                 own_time == static_cast<int>(fair_meshes.size()), false});
+      add(list, {"NPC as printed (Eq. 32, damped) is more accurate than the undamped Newmark average (" + shape + ")",
+                 "Eq. (32) below the average on " + std::to_string(average) + count + "; RMS/v0 of the average against Eq. (32):" + average_row,
+                 average == static_cast<int>(fair_meshes.size()), false});
+      add(list, {"NPC's lower RMS is more than its damping: NPC is more accurate than FE given the same energy loss by a PIC/FLIP blend (" + shape + ")",
+                 "NPC below FE + blend on " + std::to_string(blend) + count + ", the two within " + fixed(100.0 * blend_gap, 2) +
+                     " % of each other on every mesh (FLIP fraction " + fixed(lowest_fraction, 5) + "-" + fixed(highest_fraction, 5) +
+                     "); RMS/v0 of FE + blend against NPC:" + blend_row,
+                 blend == static_cast<int>(fair_meshes.size()), false});
+    }
+    sections.push_back({"FE against NPC, fairly: FE at its own time, the Newmark average, FE damped like NPC (`dyka_fair`)", list});
+  }
   {  // Fig. 8
     std::vector<Claim> list;
     double best = 1e300, worst = 0.0, best_gamma = 0.0;
@@ -353,6 +472,13 @@ int main(int argc, char** argv) {
       report << "| " << shape << " | " << integrator << " | " << order_text(order_of[shape + "_" + integrator + "_negligible"]) << " | "
              << order_text(order_of[shape + "_" + integrator + "_transition"]) << " | " << order_text(order_of[shape + "_" + integrator + "_crossing"])
              << " |\n";
+  report << "\n";
+  report << "The same orders with forward Euler's velocity compared with the exact solution at t + dt/2, the time it approximates "
+            "(the predictor-corrector's belong to t: unchanged):\n\n"
+         << "| shape | integrator | negligible | transition | crossing |\n|---|---|---|---|---|\n";
+  for (const auto& shape : shapes)
+    report << "| " << shape << " | fe | " << order_text(own_time_order_of[shape + "_fe_negligible"]) << " | "
+           << order_text(own_time_order_of[shape + "_fe_transition"]) << " | " << order_text(own_time_order_of[shape + "_fe_crossing"]) << " |\n";
   report << "\n";
   std::printf("dyka_suite: %zu runs, hard checks %s\n", results.size(), hard_failure ? "FAILED" : "passed");
   return hard_failure ? 1 : 0;

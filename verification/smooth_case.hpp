@@ -20,6 +20,10 @@ namespace verification {
 /// What a case measured: RMS errors over the particles and the sample times, normalised.
 struct SmoothResult {
   double velocity_error = std::numeric_limits<double>::quiet_NaN();  ///< RMS(v_p - v) / velocity scale
+  /// The same with v taken at the time the integrator's velocity approximates: forward Euler's particle
+  /// velocity at t is v(t + dt/2) (paper/10_integrator_analysis.md), the predictor-corrector's v(t).
+  /// NaN where the exact solution exists only at the sample times (the finite-strain bar).
+  double velocity_error_own_time = std::numeric_limits<double>::quiet_NaN();
   double stress_error = std::numeric_limits<double>::quiet_NaN();    ///< RMS(sigma_p - sigma) / stress scale
   double energy_ratio = std::numeric_limits<double>::quiet_NaN();    ///< (kinetic + strain) at the end / at t = 0
   double initial_mismatch = 0.0;  ///< largest |v_p(0) - exact v(X_p, 0)| / velocity scale: the scene's initial field checked
@@ -36,24 +40,31 @@ inline const std::vector<double>& bar_sample_fractions() {
   return fractions;
 }
 
-/// Accumulates the squared errors of every particle at every snapshot, and the energies.
+/// Accumulates the squared errors of every particle at every snapshot, and the energies. exact(particles, p,
+/// index, time, own_time) returns the squared velocity error, the squared stress error and the squared
+/// velocity error at own_time: time, plus half the next step for a staggered integrator (forward Euler), the
+/// step being the one the loop takes next, Eq. (42) from the particles as they are.
 template <int Dim, class Exact>
 struct ErrorMonitor : mpm::Monitor<Dim> {
   explicit ErrorMonitor(Exact exact_solution) : exact(std::move(exact_solution)) {}
+  bool staggered = false;  ///< forward Euler: the velocity belongs half a step later
+  double young_modulus = 0.0, cell_size = 0.0, cfl = 0.0;
   void sample(long step, double, const mpm::Particles<Dim>&, const mpm::Balances<Dim>& balances) override {
     if (step == 0) initial_energy = balances.total();
     final_energy = balances.total();
   }
   void snapshot(int index, double time, const mpm::Particles<Dim>& particles) override {
+    const double own_time = staggered ? time + 0.5 * mpm::courant_time_step(particles, young_modulus, cell_size, cfl) : time;
     for (int p = 0; p < particles.size(); ++p) {
-      const auto [velocity_error, stress_error] = exact(particles, p, index, time);
+      const auto [velocity_error, stress_error, own_time_error] = exact(particles, p, index, time, own_time);
       velocity_squares += velocity_error;
       stress_squares += stress_error;
+      own_time_squares += own_time_error;
       ++count;
     }
   }
   Exact exact;
-  double velocity_squares = 0.0, stress_squares = 0.0, initial_energy = 0.0, final_energy = 0.0;
+  double velocity_squares = 0.0, stress_squares = 0.0, own_time_squares = 0.0, initial_energy = 0.0, final_energy = 0.0;
   long count = 0;
 };
 
@@ -61,6 +72,10 @@ struct ErrorMonitor : mpm::Monitor<Dim> {
 template <int Dim, class Exact>
 SmoothResult run_and_measure(const mpm::io::Scene& scene, const mpm::Setup<Dim>& setup, ErrorMonitor<Dim, Exact>& monitor,
                              double velocity_scale, double stress_scale) {
+  monitor.staggered = scene.integrator == "fe";
+  monitor.young_modulus = scene.young_modulus;
+  monitor.cell_size = setup.model.grid.spacing();
+  monitor.cfl = scene.control.cfl;
   SmoothResult result;
   result.particles = setup.particles.size();
   const auto start = std::chrono::steady_clock::now();
@@ -76,6 +91,7 @@ SmoothResult run_and_measure(const mpm::io::Scene& scene, const mpm::Setup<Dim>&
   if (!result.failed && monitor.count > 0) {
     result.velocity_error = std::sqrt(monitor.velocity_squares / monitor.count) / velocity_scale;
     result.stress_error = std::sqrt(monitor.stress_squares / monitor.count) / stress_scale;
+    result.velocity_error_own_time = std::sqrt(monitor.own_time_squares / monitor.count) / velocity_scale;
     result.energy_ratio = monitor.final_energy / monitor.initial_energy;
   }
   return result;
@@ -87,6 +103,7 @@ struct BarCase {
   int cells = 16, particles_per_cell = 1;
   double cfl = 0.5;
   double amplitude = 1e-6;  ///< V / (omega L): the largest displacement over the bar's length
+  std::vector<std::string> settings;  ///< further scene overrides (e.g. solver.npc_velocity)
 };
 
 /// The vibrating bar's material and size, read from the scene (the exact solutions get them from there).
@@ -127,6 +144,7 @@ inline SmoothResult run_bar(const BarScene& bar, const BarCase& c, const mpm::ex
                                      "body[0].particles_per_cell=[" + std::to_string(c.particles_per_cell) + "]",
                                      "solver.integrator=\"" + c.integrator + "\"", "solver.cfl=" + std::to_string(c.cfl), end_time,
                                      "output.every=1000000000", "output.snapshots=[]"});
+  overrides.insert(overrides.end(), c.settings.begin(), c.settings.end());
   // Snapshot times exactly at fractions of T (the loop lands on them).
   mpm::io::Scene scene = mpm::load_scene(bar.path, overrides);
   scene.control.snapshot_times.clear();
@@ -137,12 +155,13 @@ inline SmoothResult run_bar(const BarScene& bar, const BarCase& c, const mpm::ex
   double mismatch = 0.0;  // the scene's formula against the exact mode, at t = 0
   for (int p = 0; p < setup.particles.size(); ++p)
     mismatch = std::max(mismatch, std::abs(setup.particles.velocity[p][0] - mode.velocity(setup.particles.reference_position[p][0], 0.0)) / V);
-  auto exact = [&mode, reference](const mpm::Particles<1>& particles, int p, int index, double time) {
+  auto exact = [&mode, reference](const mpm::Particles<1>& particles, int p, int index, double time, double own_time) {
     const double X = std::clamp(particles.reference_position[p][0], 0.0, mode.length());
     const double v = reference ? reference->velocity(X, index) : mode.velocity(X, time);
     const double s = reference ? reference->stress(X, index) : mode.stress(X, time);
     const double dv = particles.velocity[p][0] - v, ds = particles.stress[p](0, 0) - s;
-    return std::pair<double, double>{dv * dv, ds * ds};
+    const double dv_own = reference ? std::numeric_limits<double>::quiet_NaN() : particles.velocity[p][0] - mode.velocity(X, own_time);
+    return std::tuple<double, double, double>{dv * dv, ds * ds, dv_own * dv_own};
   };
   ErrorMonitor<1, decltype(exact)> monitor(exact);
   SmoothResult result = run_and_measure<1>(scene, setup, monitor, V, mode.impedance() * V);
@@ -200,14 +219,15 @@ inline SmoothResult run_manufactured(const std::string& scene_path, const Manufa
     const auto b = large_case ? large.body_force(to_pair(x), t) : small.body_force(to_pair(x), t);
     return mpm::Vector<2>(b[0], b[1]);
   };
-  auto exact = [&](const mpm::Particles<2>& particles, int p, int, double time) {
+  auto exact = [&](const mpm::Particles<2>& particles, int p, int, double time, double own_time) {
     const auto X = to_pair(particles.reference_position[p]);
     const auto v = c.large ? large.velocity(X, time) : small.velocity(X, time);
+    const auto v_own = c.large ? large.velocity(X, own_time) : small.velocity(X, own_time);
     const auto s = c.large ? large.stress(X, time) : small.stress(X, time);
     const mpm::Matrix<2>& sigma = particles.stress[p];
     const double dv = (particles.velocity[p] - mpm::Vector<2>(v[0], v[1])).squaredNorm();
     const double ds = (sigma(0, 0) - s.xx) * (sigma(0, 0) - s.xx) + (sigma(1, 1) - s.yy) * (sigma(1, 1) - s.yy) + 2.0 * (sigma(0, 1) - s.xy) * (sigma(0, 1) - s.xy);
-    return std::pair<double, double>{dv, ds};
+    return std::tuple<double, double, double>{dv, ds, (particles.velocity[p] - mpm::Vector<2>(v_own[0], v_own[1])).squaredNorm()};
   };
   ErrorMonitor<2, decltype(exact)> monitor(exact);
   return run_and_measure<2>(scene, setup, monitor, c.large ? large.velocity_scale() : small.velocity_scale(),
