@@ -15,6 +15,8 @@
 
 #include "mpm/analysis/mode_analysis.hpp"
 #include "tests/support.hpp"
+#include "verification/fitted_order.hpp"
+#include "verification/smooth_case.hpp"
 
 namespace {
 
@@ -166,4 +168,29 @@ TEST_CASE("Eq. (32), Eq. (23), Eqs. (19)-(22): the highest mode is stable just b
   CHECK(growth(predictor_corrector(0.6, mpm::NewmarkParticleVelocity::average), 2.01) >= 1e3);
   CHECK(growth(mpm::ForwardEuler{}, 1.99) <= 1e3);
   CHECK(growth(mpm::ForwardEuler{}, 2.01) >= 1e3);
+}
+
+TEST_CASE("Eq. (23): the Newmark average on the small-amplitude vibrating bar: velocity second order at fixed CFL, the period's energy to O(dt^2)") {
+  const verification::BarScene bar(mpm::testing::source_path("scenes/vibrating_bar.toml"));
+  std::vector<int> cells{32, 64, 128, 256};
+  std::vector<double> average_error, eq32_error;
+  for (int n : cells) {
+    verification::BarCase average{"linear", "npc", n, 1, 0.5, 1e-6, {"solver.npc_velocity=\"average\""}};
+    verification::BarCase eq32{"linear", "npc", n, 1, 0.5, 1e-6, {}};
+    const auto result = verification::run_bar(bar, average, nullptr);
+    REQUIRE_FALSE(result.failed);
+    average_error.push_back(result.velocity_error);
+    eq32_error.push_back(verification::run_bar(bar, eq32, nullptr).velocity_error);
+    // Omega = CFL sin(pi / 2n) of the first mode (paper/10_integrator_analysis.md): the energy after the period within Omega^2
+    const double Omega = 0.5 * std::sin(M_PI / (2.0 * n));
+    INFO(n, " cells: energy after one period ", result.energy_ratio, ", Omega^2 ", Omega * Omega);
+    CHECK(std::abs(result.energy_ratio - 1.0) <= Omega * Omega);
+  }
+  const double average_order = verification::fitted_order(cells, average_error, 3);
+  const double eq32_order = verification::fitted_order(cells, eq32_error, 3);
+  INFO("velocity error ", average_error[0], " -> ", average_error.back(), " (order ", average_order, "); Eq. (32) ", eq32_error[0], " -> ",
+       eq32_error.back(), " (order ", eq32_order, ")");
+  CHECK(average_order >= 1.8);
+  CHECK(eq32_order <= 1.2);
+  CHECK(average_error.back() < 0.1 * eq32_error.back());
 }
