@@ -132,9 +132,10 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
   io::Scene scene;
   try {
     scene = stability_scene(body);
-  } catch (const SceneError& error) {  // e.g. an LME gamma too large for its support tolerance
-    err << "error: " << (error.message().find("lme_gamma") != std::string::npos ? "--lme-gamma" : "option") << ": "
-        << error.message() << "\n";
+  } catch (const SceneError& error) {  // e.g. an LME gamma too large for its support tolerance: name the option, not the key
+    const std::string message = error.message(), key = "solver.lme_gamma: ";
+    const auto at = message.find(key);
+    err << "error: " << (at != std::string::npos ? "--lme-gamma: " + message.substr(at + key.size()) : message) << "\n";
     return 2;
   }
   const StabilityLimits limits = request.dimension == 1 ? stability_limits<1>(scene) : stability_limits<2>(scene);
