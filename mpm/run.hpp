@@ -11,6 +11,7 @@
 #include "mpm/integrators/newmark_predictor_corrector.hpp"
 #include "mpm/io/scene_budget.hpp"
 #include "mpm/io/scene_builder.hpp"
+#include "mpm/shape/bspline.hpp"
 #include "mpm/shape/lme.hpp"
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/ugimp.hpp"
@@ -73,6 +74,8 @@ template <int Dim, class Visitor>
 auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit) {
   auto with_shape = [&](auto integrator) {
     if (scene.shape == "ugimp") return visit(UgimpShape<Dim>(grid), integrator);
+    if (scene.shape == "bspline2") return visit(BsplineShape<Dim, 2>(grid), integrator);
+    if (scene.shape == "bspline3") return visit(BsplineShape<Dim, 3>(grid), integrator);
     if (scene.shape == "lme") return visit(LmeShape<Dim>(grid, lme_options(scene)), integrator);
     return visit(LinearShape<Dim>(grid), integrator);
   };

@@ -32,12 +32,12 @@ inline const char* run_usage =
 inline std::string shape_usage() {
   const ShapeRequest defaults;
   std::ostringstream out;
-  out << "usage: mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
+  out << "usage: mpm shape --dim 1|2 --kind linear|ugimp|lme|bspline2|bspline3 --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
          "                 [--particle-size S] [--tol T]\n"
          "  Evaluates a shape function on an unbounded uniform grid (nodes at multiples of the cell size) and prints\n"
          "  CSV: point,node_x[,node_y],N,dN_dx[,dN_dy], one row per node of each point's stencil.\n"
       << "  --dim D            1 or 2 (default " << defaults.dimension << ")\n"
-      << "  --kind K           linear | ugimp | lme (required)\n"
+      << "  --kind K           linear | ugimp | lme | bspline2 | bspline3 (required)\n"
          "  --at X[,Y]         a point, m; repeat for more points (at least one)\n"
       << "  --gamma G          LME locality gamma, beta = gamma / h^2 (default " << defaults.gamma << ")\n"
       << "  --cell-size H      grid spacing h, m (default " << defaults.cell_size << ")\n"

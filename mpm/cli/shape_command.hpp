@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/shape/bspline.hpp"
 #include "mpm/shape/lme.hpp"
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/ugimp.hpp"
@@ -85,6 +86,12 @@ void evaluate_request(const ShapeRequest& request, std::ostream& out) {
   } else if (request.kind == "ugimp") {
     UgimpShape<Dim> shape(grid);
     print_stencils(shape, grid, particles, out);
+  } else if (request.kind == "bspline2") {
+    BsplineShape<Dim, 2> shape(grid);
+    print_stencils(shape, grid, particles, out);
+  } else if (request.kind == "bspline3") {
+    BsplineShape<Dim, 3> shape(grid);
+    print_stencils(shape, grid, particles, out);
   } else {
     LmeOptions options;
     options.gamma = request.gamma;
@@ -146,8 +153,8 @@ inline int shape_command(const std::vector<std::string>& arguments, std::ostream
     }
   }
   if (request.dimension != 1 && request.dimension != 2) return fail("--dim", "must be 1 or 2");
-  if (request.kind != "linear" && request.kind != "ugimp" && request.kind != "lme")
-    return fail("--kind", "must be linear, ugimp or lme");
+  if (request.kind != "linear" && request.kind != "ugimp" && request.kind != "lme" && request.kind != "bspline2" && request.kind != "bspline3")
+    return fail("--kind", "must be linear, ugimp, lme, bspline2 or bspline3");
   if (!(request.cell_size > 0.0)) return fail("--cell-size", "must be > 0");
   if (!(request.gamma > 0.0)) return fail("--gamma", "must be > 0");
   if (!(request.tolerance > 0.0 && request.tolerance < 1.0)) return fail("--tol", "must be in (0, 1)");

@@ -28,14 +28,14 @@ struct StabilityRequest {
 inline std::string stability_usage() {
   const StabilityRequest defaults;
   std::ostringstream out;
-  out << "usage: mpm stability [--shape linear|ugimp|lme] [--integrator fe|npc] [--newmark-gamma G]\n"
+  out << "usage: mpm stability [--shape linear|ugimp|lme|bspline2|bspline3] [--integrator fe|npc] [--newmark-gamma G]\n"
          "                     [--npc-velocity eq32|average] [--flip-fraction A] [--ppc N] [--lme-gamma G]\n"
          "                     [--dim 1|2] [--poisson-ratio NU] [--cells N]\n"
          "  Prints CSV with the largest stable CFL (Eq. 42, c = sqrt(E / rho)) of a method: cfl_limit, from the spectral\n"
          "  radius of the code's own step linearised about rest on a uniform bar (1D) or square (2D) held at its walls,\n"
          "  and cfl_limit_from_modes, the one-mode analysis (2 for forward Euler and the Newmark average, 2/sqrt(3 - 2 gamma)\n"
          "  for Eq. 32) divided by the body's highest mode omega_max h / c (highest_mode).\n"
-      << "  --shape S          linear | ugimp | lme (default " << defaults.shape << ")\n"
+      << "  --shape S          linear | ugimp | lme | bspline2 | bspline3 (default " << defaults.shape << ")\n"
       << "  --integrator I     fe | npc (default " << defaults.integrator << ")\n"
       << "  --newmark-gamma G  Newmark gamma of npc, in [0, 1] (default " << defaults.newmark_gamma << ")\n"
       << "  --npc-velocity V   eq32 | average (default " << defaults.npc_velocity << ")\n"
@@ -77,7 +77,8 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
     const std::string value = arguments[++k];
     const auto in = [&](double number, double low, double high) { return number >= low && number <= high; };
     if (option == "--shape") {
-      if (value != "linear" && value != "ugimp" && value != "lme") return fail(option, "must be linear, ugimp or lme, got '" + value + "'");
+      if (value != "linear" && value != "ugimp" && value != "lme" && value != "bspline2" && value != "bspline3")
+        return fail(option, "must be linear, ugimp, lme, bspline2 or bspline3, got '" + value + "'");
       request.shape = value;
     } else if (option == "--integrator") {
       if (value != "fe" && value != "npc") return fail(option, "must be fe or npc, got '" + value + "'");

@@ -204,7 +204,7 @@ inline Scene read_scene(const SceneFile& file) {
   }
   {  // [solver]
     SceneReader solver(file, detail::table_or_empty(file, root, "solver", true), "solver");
-    scene.shape = solver.text("shape", {"linear", "ugimp", "lme"}, std::string("linear"));
+    scene.shape = solver.text("shape", {"linear", "ugimp", "lme", "bspline2", "bspline3"}, std::string("linear"));
     scene.lme_gamma = solver.positive("lme_gamma", 3.0);
     scene.lme_tol = solver.positive("lme_tol", 1e-6);
     if (scene.lme_tol >= 1.0) solver.fail("lme_tol", "must be in (0, 1)");

@@ -107,7 +107,8 @@ inline SceneCost estimate_cost(const Scene& scene) {
   for (int axis = 0; axis < d; ++axis)
     cost.nodes *= static_cast<double>(scene.cells[axis]) + scene.margin_min[axis] + scene.margin_max[axis] + 1.0;
   if (scene.shape == "linear") cost.nodes_per_particle = std::pow(2.0, d);
-  else if (scene.shape == "ugimp") cost.nodes_per_particle = std::pow(3.0, d);
+  else if (scene.shape == "ugimp" || scene.shape == "bspline2") cost.nodes_per_particle = std::pow(3.0, d);
+  else if (scene.shape == "bspline3") cost.nodes_per_particle = std::pow(4.0, d);
   else cost.nodes_per_particle = std::pow(2.0 * std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 2.0, d);
   const double particle_arrays = 4 + 8 + 8 + 5 * 8.0 * d + 2 * 8.0 * d * d + 8;  // Particles<Dim>
   const double stencil = 4 + cost.nodes_per_particle * (4 + 8 + 8.0 * d);         // Stencils<Dim>
