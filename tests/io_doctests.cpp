@@ -9,4 +9,7 @@
 #include "mpm/io/scene_resolved.hpp"
 #include "mpm/io/scene_warnings.hpp"
 #include "mpm/io/exact_series.hpp"
+#include "mpm/io/exact_solution.hpp"
+#include "mpm/cli/exact_command.hpp"
+#include "mpm/cli/compare_command.hpp"
 #include "mpm/io/scene_budget.hpp"

@@ -63,8 +63,13 @@ struct Scene {
   std::vector<ObserverSettings> observers;
   // [constants], [initial_field], [body_force] (io/scene_formulas.hpp)
   SceneFormulas formulas;
-  /// exact solution written beside the observers (exact.csv): "none", "dyka_bar" or "soil_column"
+  /// exact solution written beside the observers (exact.csv) and evaluated by `mpm exact` and `mpm compare`:
+  /// "none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small" or "manufactured_large"
   std::string exact = "none";
+  // [exact_parameters]
+  int exact_mode = 1;                                 ///< vibrating_bar: mode n
+  std::optional<double> exact_velocity_amplitude;     ///< vibrating_bar: V, m/s
+  std::vector<double> exact_displacement_amplitude;   ///< manufactured_small: [A]; manufactured_large: [a_x, a_y], m
   /// the resolved scene (file plus overrides) as JSON, for run.json
   std::string resolved_json;
 };
@@ -103,6 +108,40 @@ inline const toml::table& table_or_empty(const SceneFile& file, SceneReader& roo
 inline bool on_grid_line(double value, double origin, double spacing) {
   const double cells = (value - origin) / spacing;
   return std::abs(cells - std::round(cells)) < 1e-6;
+}
+
+/// A key of numbers, each a number or a formula of the scene's constants in quotes ("V", "0.05 * L"):
+/// `key = 1.5`, `key = "V"` or `key = [1.5, "a"]`. \throws SceneError naming the key.
+inline std::vector<double> constant_or_formula(SceneReader& reader, const std::string& key,
+                                               const std::map<std::string, double>& constants) {
+  std::vector<const toml::node*> entries;
+  const toml::node* node = reader.node(key);
+  if (const toml::array* array = node->as_array()) {
+    if (array->empty() || array->size() > 2) reader.fail(key, "give one or two values");
+    for (const auto& entry : *array) entries.push_back(&entry);
+  } else {
+    entries.push_back(node);
+  }
+  std::vector<double> values;
+  const FormulaVariables none{0, false};
+  for (const toml::node* entry : entries) {
+    double value = 0.0;
+    if (entry->is_floating_point() || entry->is_integer()) {
+      value = *entry->value<double>();
+    } else if (entry->is_string()) {
+      const std::string text = *entry->value<std::string>();
+      try {
+        value = Formula(text, constants, none)(nullptr, nullptr, 0.0);
+      } catch (const mu::Parser::exception_type& error) {
+        reader.fail(key, formula_problem(error, text, constants, none));
+      }
+    } else {
+      reader.fail(key, "must be a number or a formula of the constants in quotes");
+    }
+    if (!std::isfinite(value)) reader.fail(key, "must be finite, got " + SceneReader::describe(value));
+    values.push_back(value);
+  }
+  return values;
 }
 
 }  // namespace detail
@@ -254,7 +293,15 @@ inline Scene read_scene(const SceneFile& file) {
     output.reject_unknown_keys();
   }
   scene.formulas = read_scene_formulas(file, root, dim, scene.young_modulus, scene.poisson_ratio, scene.density);
-  scene.exact = root.text("exact", {"none", "dyka_bar", "soil_column"}, std::string("none"));
+  scene.exact = root.text("exact", {"none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"},
+                          std::string("none"));
+  SceneReader parameters(file, detail::table_or_empty(file, root, "exact_parameters", false), "exact_parameters");
+  scene.exact_mode = parameters.integer("mode", 1, 1, 1000);
+  if (parameters.has("velocity_amplitude"))
+    scene.exact_velocity_amplitude = detail::constant_or_formula(parameters, "velocity_amplitude", scene.formulas.constants).at(0);
+  if (parameters.has("displacement_amplitude"))
+    scene.exact_displacement_amplitude = detail::constant_or_formula(parameters, "displacement_amplitude", scene.formulas.constants);
+  parameters.reject_unknown_keys();
   auto has_fixed = [&](int axis, bool upper, int component) {
     for (const auto& fixed : scene.fixed)
       if (fixed.axis == axis && fixed.upper == upper &&
@@ -281,6 +328,46 @@ inline Scene read_scene(const SceneFile& file) {
     root.fail("exact", "'soil_column' is the 2D column on a roller base under gravity: needs dimension = 2, one [[body]] "
                        "filling [origin, origin + length], a [[fixed]] face = \"ymin\" holding \"y\", "
                        "gravity.acceleration = [0, -g], and rollers on xmin and xmax unless poisson_ratio = 0");
+  const bool manufactured = scene.exact == "manufactured_small" || scene.exact == "manufactured_large";
+  if (scene.exact == "vibrating_bar") {
+    if (!(dim == 1 && fills_box() && has_fixed(0, true, 0) && scene.gravity[0] == 0.0))
+      root.fail("exact", "'vibrating_bar' is the 1D bar free at xmin and fixed at xmax without gravity: needs dimension = 1, "
+                         "one [[body]] filling [origin, origin + length], a [[fixed]] face = \"xmax\" holding \"x\", "
+                         "and no gravity");
+    if (!scene.exact_velocity_amplitude)
+      parameters.fail("velocity_amplitude", "required by exact = \"vibrating_bar\": the velocity amplitude V (m/s) of "
+                                            "v(X, 0) = V cos((2 mode - 1) pi X / 2L)");
+  } else {
+    if (scene.exact_mode != 1) parameters.fail("mode", "only exact = \"vibrating_bar\" reads it");
+    if (scene.exact_velocity_amplitude) parameters.fail("velocity_amplitude", "only exact = \"vibrating_bar\" reads it");
+  }
+  if (manufactured) {
+    const bool small = scene.exact == "manufactured_small";
+    auto holds = [&](int axis, int component) { return has_fixed(axis, false, component) && has_fixed(axis, true, component); };
+    const bool supported = small ? holds(0, 0) && holds(0, 1) && holds(1, 0) && holds(1, 1) : holds(0, 0) && holds(1, 1);
+    if (!(dim == 2 && fills_box() && std::abs(scene.length[0] - scene.length[1]) <= 1e-9 * scene.length[0] && supported &&
+          scene.gravity[0] == 0.0 && scene.gravity[1] == 0.0))
+      root.fail("exact", "'" + scene.exact + "' is the square [origin, origin + L]^2 in plane strain without gravity: needs "
+                         "dimension = 2, equal grid lengths, one [[body]] filling the box, and " +
+                         (small ? std::string("every face fixed in x and y") : std::string("rollers on every face (xmin, xmax holding \"x\"; ymin, ymax holding \"y\")")));
+    if (scene.formulas.body_force || scene.formulas.initial_velocity || scene.formulas.initial_stress || !scene.initial_velocities.empty() ||
+        std::any_of(scene.bodies[0].velocity.begin(), scene.bodies[0].velocity.end(), [](double v) { return v != 0.0; }))
+      root.fail("exact", "'" + scene.exact + "' sets the body force and the initial velocity itself (mpm/exact/manufactured.hpp): "
+                         "give no [body_force], [initial_field], [[initial_velocity]] or body velocity");
+    const size_t count = small ? 1 : 2;
+    if (scene.exact_displacement_amplitude.size() != count)
+      parameters.fail("displacement_amplitude", small ? "required by exact = \"manufactured_small\": one amplitude A (m)"
+                                                      : "required by exact = \"manufactured_large\": [a_x, a_y] (m)");
+    const double wave_number = 3.14159265358979323846 / scene.length[0];
+    if (small && !(std::abs(scene.exact_displacement_amplitude[0]) * wave_number < 0.01))
+      parameters.fail("displacement_amplitude", "must be small: |A| pi / L < 0.01 (the small-strain solution; "
+                                                "use manufactured_large for large amplitude)");
+    if (!small && !(std::abs(scene.exact_displacement_amplitude[0]) * wave_number < 0.9 &&
+                    2.0 * std::abs(scene.exact_displacement_amplitude[1]) * wave_number < 0.9))
+      parameters.fail("displacement_amplitude", "too large: the stretches must stay positive, |a_x| pi / L < 0.9 and 2 |a_y| pi / L < 0.9");
+  } else if (!scene.exact_displacement_amplitude.empty()) {
+    parameters.fail("displacement_amplitude", "only exact = \"manufactured_small\" and \"manufactured_large\" read it");
+  }
   root.reject_unknown_keys();
   std::ostringstream json;
   json << toml::json_formatter{file.table};

@@ -34,9 +34,16 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"title", "\"untitled\"", false, "-", "name of the run (printed, written into run.json)"},
       {"dimension", "1", false, "-", "1 or 2 (2D is plane strain)"},
       {"exact", "\"none\"", false, "-",
-       "exact solution written beside the observers into exact.csv and drawn by `mpm plot`: "
-       "none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
-       "soil_column (2D column on a roller base under gravity along -y; mpm/exact/column.hpp)"},
+       "exact solution written beside the observers into exact.csv, drawn by `mpm plot`, evaluated by `mpm exact` "
+       "and `mpm compare`: none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
+       "soil_column (2D column on a roller base under gravity along -y; mpm/exact/column.hpp) | "
+       "vibrating_bar (a mode of the dyka_bar's bar; mpm/exact/vibrating_bar.hpp) | manufactured_small | "
+       "manufactured_large (2D square, its body force and initial velocity set by the solution; mpm/exact/manufactured.hpp)"},
+      {"exact_parameters.mode", "1", false, "-", "vibrating_bar: the mode n, v(X, 0) = V cos((2n - 1) pi X / 2L)"},
+      {"exact_parameters.velocity_amplitude", nullptr, false, "m/s",
+       "vibrating_bar: V, a number or a formula of the constants (\"V\")", true},
+      {"exact_parameters.displacement_amplitude", nullptr, false, "m",
+       "manufactured_small: A; manufactured_large: [a_x, a_y]; numbers or formulas of the constants", true},
       {"grid.origin", "0.0", true, "m", "lower corner of the box [origin, origin + length] the body's grid spans"},
       {"grid.length", nullptr, false, "m", "size of the box on each axis"},
       {"grid.cells", nullptr, false, "cells", "cells on each axis; cells must be square (equal length/cells)"},

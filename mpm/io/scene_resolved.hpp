@@ -85,6 +85,11 @@ inline toml::table resolved_table(const Scene& scene) {
   table.insert("title", scene.title);
   table.insert("dimension", static_cast<int64_t>(scene.dimension));
   table.insert("exact", scene.exact);
+  toml::table exact_parameters{{"mode", static_cast<int64_t>(scene.exact_mode)}};
+  if (scene.exact_velocity_amplitude) exact_parameters.insert("velocity_amplitude", *scene.exact_velocity_amplitude);
+  if (!scene.exact_displacement_amplitude.empty())
+    exact_parameters.insert("displacement_amplitude", numbers_array(scene.exact_displacement_amplitude));
+  table.insert("exact_parameters", exact_parameters);
   table.insert("grid", toml::table{{"origin", numbers_array(scene.origin)},
                                    {"length", numbers_array(scene.length)},
                                    {"cells", integers_array(scene.cells)},
