@@ -13,7 +13,12 @@
 ///   mpm plot RUN_DIR
 ///       Draws the run's observers (beside exact.csv when the scene names an exact solution) and
 ///       energy balance into RUN_DIR/observers.png and energy.png (mpm/cli/plot_command.hpp).
-///   mpm --help, mpm run --help, mpm shape --help, mpm plot --help (mpm/cli/help.hpp)
+///   mpm exact SCENE.toml --at X[,Y] (--times T0:DT:T1 | --times-file FILE) [--strain small|finite] [--set KEY=VALUE]...
+///       Prints the scene's exact solution at material points and times, without running (mpm/cli/exact_command.hpp).
+///   mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [...] [--tolerance TOL] [--plot FILE.png]
+///       Scores another code's CSV against the exact solution, Eq. (43); exit 0/1 within/above TOL
+///       (mpm/cli/compare_command.hpp).
+///   mpm --help, mpm run --help, mpm exact --help, mpm compare --help, mpm shape --help, mpm plot --help (mpm/cli/help.hpp)
 ///   mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
 ///             [--particle-size S] [--tol T]
 ///       Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of
@@ -31,6 +36,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/cli/compare_command.hpp"
+#include "mpm/cli/exact_command.hpp"
 #include "mpm/cli/help.hpp"
 #include "mpm/cli/plot_command.hpp"
 #include "mpm/cli/shape_command.hpp"
@@ -45,10 +52,14 @@ namespace {
 const char* usage =
     "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--print-scene]\n"
     "                [--max-memory BYTES|<n>G] [--max-steps N] [--force]\n"
+    "       mpm exact SCENE.toml [--set KEY=VALUE]... --at X[,Y] [--at ...] (--times T0:DT:T1 | --times-file FILE)\n"
+    "                 [--strain small|finite]\n"
+    "       mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [--column ...] [--time-column NAME]\n"
+    "                   [--tolerance TOL] [--plot FILE.png] [--set KEY=VALUE]... [--strain small|finite]\n"
     "       mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
     "                 [--particle-size S] [--tol T]\n"
     "       mpm plot RUN_DIR\n"
-    "       mpm --help | mpm COMMAND --help\n";
+    "       mpm --version | mpm --help | mpm COMMAND --help\n";
 
 template <int Dim>
 int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
@@ -182,6 +193,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
   try {  // validation refuses bad input first; this only keeps a defect from ending in a signal
     if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);
+    if (arguments[0] == "exact") return mpm::cli::exact_command(rest, std::cout, std::cerr);
+    if (arguments[0] == "compare") return mpm::cli::compare_command(rest, std::cout, std::cerr);
     if (arguments[0] == "run") return run_command(rest);
     if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
   } catch (const std::bad_alloc&) {
