@@ -88,7 +88,12 @@ expect 2 -- plot "$work/nothing"
 grep -q "^error: $work/nothing: no such folder" "$work/err" || fail "plot of a missing folder: $(cat "$work/err")"
 mkdir "$work/empty"
 expect 2 -- plot "$work/empty"
-grep -q "^error: $work/empty/observers.csv: missing" "$work/err" || fail "plot without CSVs: $(cat "$work/err")"
+grep -q "^error: $work/empty: holds neither observers.csv nor energy.csv" "$work/err" || fail "plot without CSVs: $(cat "$work/err")"
+# a folder of observers alone (another code's, say): observers.png, no energy.csv needed
+mkdir "$work/observers_only"
+printf 't,A.v_x\n0,1\n1,2\n' >"$work/observers_only/observers.csv"
+expect 0 -- plot "$work/observers_only"
+[[ -s "$work/observers_only/observers.png" && ! -e "$work/observers_only/energy.png" ]] || fail "plot of observers alone"
 expect 2 -- plot
 PATH=/nonexistent expect 3 -- plot "$work/bar"
 grep -q "^failure: gnuplot failed" "$work/err" || fail "plot without gnuplot: $(cat "$work/err")"

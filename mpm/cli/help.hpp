@@ -50,7 +50,7 @@ inline const char* plot_usage =
     "usage: mpm plot RUN_DIR\n"
     "  Draws a run's observer histories (observers.csv, with exact.csv beside them when the scene names an\n"
     "  exact solution) into RUN_DIR/observers.png and its energy balance (energy.csv) into RUN_DIR/energy.png,\n"
-    "  with gnuplot.\n";
+    "  with gnuplot. Either CSV may be missing (a folder of another code's observers.csv): what is there is drawn.\n";
 
 /// `mpm exact`'s usage, with each solution's parameters, defaults and units.
 inline const char* exact_usage =
