@@ -48,6 +48,18 @@ diff <(tail -n +2 "$work/resolved.toml") <(tail -n +2 "$work/out") >/dev/null ||
 expect 0 -- run "$scene" --out "$work/bar" --set 'exact="dyka_bar"'
 grep -q '"courant" : "max"' "$work/bar/run.json" || fail "run.json: the resolved scene lacks its defaults"
 grep -q '"exact" : "dyka_bar"' "$work/bar/run.json" || fail "run.json: the resolved scene lacks the exact key"
+# issue 18: the version (git at build time), the command line and the units, in valid JSON
+version=$("$mpm" --version) || fail "mpm --version failed"
+[[ $version =~ ^mpm\ [0-9]+\.[0-9]+\.[0-9]+\+(git\.[0-9a-f]+(-dirty)?|unknown)$ ]] || fail "mpm --version printed '$version'"
+python3 - "$work/bar/run.json" "${version#mpm }" "$scene" "$work/bar" <<'PY' || fail "run.json: version, command line or units"
+import json, sys
+run = json.load(open(sys.argv[1]))
+assert run["version"] == sys.argv[2], run["version"]
+assert run["command_line"][1:] == ["run", sys.argv[3], "--out", sys.argv[4], "--set", 'exact="dyka_bar"'], run["command_line"]
+assert all(name in run["units"] for name in run if name not in ("scene", "units", "scene_units", "column_units")), run["units"]
+assert run["units"]["final_time"] == "s" and run["scene_units"]["material.density"] == "kg/m^3"
+assert run["column_units"]["observers.csv:NAME.v_x"] == "m/s" and run["column_units"]["energy.csv:kinetic"] == "J/m^2"
+PY
 # snapshots.pvd: one DataSet per snapshot time of the scene, each file there, with the particles.
 pvd=$work/bar/snapshots.pvd
 [[ -s $pvd ]] || fail "no snapshots.pvd"

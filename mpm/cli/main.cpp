@@ -18,6 +18,8 @@
 ///   mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [...] [--tolerance TOL] [--plot FILE.png]
 ///       Scores another code's CSV against the exact solution, Eq. (43); exit 0/1 within/above TOL
 ///       (mpm/cli/compare_command.hpp).
+///   mpm --version
+///       Prints the version: the project's version and `git describe` at build time (mpm/cli/version.cmake).
 ///   mpm --help, mpm run --help, mpm exact --help, mpm compare --help, mpm shape --help, mpm plot --help (mpm/cli/help.hpp)
 ///   mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
 ///             [--particle-size S] [--tol T]
@@ -46,6 +48,7 @@
 #include "mpm/io/scene_resolved.hpp"
 #include "mpm/io/scene_warnings.hpp"
 #include "mpm/run.hpp"
+#include "mpm/version.hpp"  // generated at build time (mpm/cli/version.cmake): MPM_VERSION
 
 namespace {
 
@@ -60,6 +63,9 @@ const char* usage =
     "                 [--particle-size S] [--tol T]\n"
     "       mpm plot RUN_DIR\n"
     "       mpm --version | mpm --help | mpm COMMAND --help\n";
+
+/// The version and command line written into run.json.
+mpm::io::RunIdentity identity;
 
 template <int Dim>
 int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
@@ -81,10 +87,11 @@ int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
       writer.finish();
     } catch (const mpm::SimulationFailure& failure) {
       std::cerr << failure.message() << "\n";
-      mpm::io::write_run_json(folder + "/run.json", scene, summary, std::string("failed: ") + failure.what(), setup.particles.size());
+      mpm::io::write_run_json(folder + "/run.json", scene, summary, std::string("failed: ") + failure.what(), setup.particles.size(),
+                              identity);
       return 3;
     }
-    mpm::io::write_run_json(folder + "/run.json", scene, summary, "done", setup.particles.size());
+    mpm::io::write_run_json(folder + "/run.json", scene, summary, "done", setup.particles.size(), identity);
   } catch (const mpm::OutputFailure& failure) {
     std::cerr << failure.message() << "\n";
     return 3;
@@ -185,6 +192,16 @@ int main(int argc, char** argv) {
   if (arguments.empty()) {
     std::cerr << usage;
     return 2;
+  }
+  identity.version = MPM_VERSION;
+  identity.command_line.assign(argv, argv + argc);
+  if (arguments[0] == "--version" || arguments[0] == "version") {
+    if (arguments.size() > 1) {
+      std::cerr << "error: --version: takes no argument\n";
+      return 2;
+    }
+    std::cout << "mpm " << MPM_VERSION << "\n";
+    return 0;
   }
   if (arguments[0] == "help" || mpm::cli::asks_for_help(arguments)) {
     std::cout << mpm::cli::command_help(arguments.size() > 1 && arguments[0] == "help" ? arguments[1] : arguments[0]);
