@@ -161,6 +161,29 @@ bad "^error: $work/header_only.csv: has a header but no data row" compare "$work
 printf 't,v\n-1,0\n' >"$work/negative.csv"
 bad "^error: $work/negative.csv: t: the sample times must be >= 0" compare "$work/negative.csv" "$bar" --at 0 --column v=v_x
 
+# --- runs sample where and when asked: output.times landed on exactly; exact.csv at the material point the
+# observer names (the free end X = 0), not at its particle's centre h/2; run.json gives that particle's X.
+# The unloading front reaches X = h/2 at (L/4 - h/2)/c = 6.27 us and X = 0 at L/(4c) = 6.60 us: at t = 6.4 us
+# the exact velocity is v0 = -5 m/s at X = 0 and 0 at X = h/2.
+"$mpm" run "$bar" --out "$work/sampled" --set 'output.times=[0.0, 6.4e-6, 3.3333e-5, 2e-4]' --set 'output.snapshots=[]' >/dev/null \
+  || fail "a run with output.times"
+[[ $(cut -d, -f1 "$work/sampled/observers.csv" | tr '\n' ' ') == "t 0 6.4e-06 3.3333e-05 0.0002 " ]] ||
+  fail "output.times: observers sampled at $(cut -d, -f1 "$work/sampled/observers.csv" | tr '\n' ' ')"
+[[ $(wc -l <"$work/sampled/energy.csv") -eq 5 ]] || fail "output.times: energy.csv not sampled at the same times"
+[[ "$(sed -n 3p "$work/sampled/exact.csv")" == "6.4e-06,-5,0" ]] || fail "exact.csv at t = 6.4 us: $(sed -n 3p "$work/sampled/exact.csv")"
+ls "$work/sampled" | grep -q snapshot_ && fail "output.snapshots = []: no snapshot file"
+python3 -c "import json, sys; o = json.load(open(sys.argv[1]))['observed'][0]; assert o['name'] == 'A' and abs(o['reference_position'][0] - 0.1333 / 80) < 1e-15, o" \
+  "$work/sampled/run.json" || fail "run.json: the observed particle's reference position"
+# and mpm compare reads observers.csv as any other CSV, at the particle's reference position
+"$mpm" compare "$work/sampled/observers.csv" "$bar" --at 0.00166625 --column A.v_x=v_x >/dev/null || fail "compare observers.csv"
+bad "^error: --set\(1\):1: output.every: give output.every or output.times, not both" run "$bar" --out "$work/never" \
+  --set output.every=2 --set 'output.times=[1e-5]'
+bad "^error: --set\(1\):1: output.times: times must increase" run "$bar" --out "$work/never" --set 'output.times=[2e-5, 1e-5]'
+bad "^error: --set\(1\):1: output.times: times must lie in \[0, solver.end_time\]" run "$bar" --out "$work/never" --set 'output.times=[1.0]'
+bad "^error: --set\(1\):1: observer\[0\].position: lies outside the body \[0, 0.1333\] on x, where exact = \"dyka_bar\"" \
+  run "$bar" --out "$work/never" --set 'observer[0].position=[-0.001]'
+[[ -e "$work/never" ]] && fail "a bad run made its output folder"
+
 # --- help: both commands in mpm --help and the usage string, each with its own --help.
 "$mpm" --help | grep -q "usage: mpm exact SCENE.toml" || fail "mpm --help lacks mpm exact"
 "$mpm" --help | grep -q "usage: mpm compare RESULT.csv SCENE.toml" || fail "mpm --help lacks mpm compare"

@@ -71,6 +71,12 @@ template <int Dim>
 int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
   scene.control.threads = threads;
   const mpm::Setup<Dim> setup = mpm::build_setup<Dim>(scene);
+  identity.observed.clear();
+  for (size_t k = 0; k < setup.observed.size(); ++k) {
+    const int p = setup.observed[k];
+    const auto& X = setup.particles.reference_position[p];
+    identity.observed.push_back({scene.observers[k].name, setup.particles.id[p], std::vector<double>(X.data(), X.data() + Dim)});
+  }
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) {
@@ -81,7 +87,7 @@ int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
   try {
     try {
       mpm::io::RunWriter<Dim> writer(folder, scene, setup.observed);
-      mpm::io::ExactWriter<Dim> exact_then_writer(folder, scene, setup.particles, setup.observed, writer);
+      mpm::io::ExactWriter<Dim> exact_then_writer(folder, scene, setup.particles, writer);
       summary = mpm::run_setup<Dim>(scene, setup, exact_then_writer, &summary);
       exact_then_writer.finish();
       writer.finish();

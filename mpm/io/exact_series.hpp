@@ -1,6 +1,7 @@
 /// \file
 /// exact.csv: the exact solution the scene names (its `exact` key, mpm/io/exact_solution.hpp), small strain,
-/// at each observer's reference position and at every sample time, beside observers.csv:
+/// at the material point each observer names (its `position`, a reference position; the observed particle is
+/// the one nearest it, whose own reference position run.json gives) and at every sample time, beside observers.csv:
 ///   dyka_bar, vibrating_bar  t, then per observer NAME.v_x, NAME.sigma_xx   (paper/06_exact_bar.md, mpm/exact/bar.hpp)
 ///   soil_column              t, then per observer NAME.y, NAME.sigma_yy     (paper/07_exact_column.md, mpm/exact/column.hpp)
 ///   manufactured_*           t, then per observer NAME.v_x, NAME.v_y, NAME.sigma_xx, NAME.sigma_yy, NAME.sigma_xy
@@ -52,15 +53,9 @@ std::vector<exact::BarPiece> bar_pieces(const Scene& scene, const Particles<Dim>
 template <int Dim>
 class ExactWriter : public Monitor<Dim> {
  public:
-  ExactWriter(const std::string& folder, const Scene& scene, const Particles<Dim>& initial,
-              const std::vector<int>& observed, Monitor<Dim>& next)
-      : next_(next) {
+  ExactWriter(const std::string& folder, const Scene& scene, const Particles<Dim>& initial, Monitor<Dim>& next) : next_(next) {
     if (scene.exact == "none") return;
-    for (int p : observed) {
-      std::vector<double> point(Dim);
-      for (int axis = 0; axis < Dim; ++axis) point[axis] = initial.reference_position[p][axis];
-      reference_.push_back(point);
-    }
+    for (const auto& observer : scene.observers) reference_.push_back(observer.position);  // the material point named
     std::optional<std::vector<exact::BarPiece>> pieces;
     if (scene.exact == "dyka_bar") pieces = bar_pieces(scene, initial);
     solution_ = std::make_unique<SceneExactSolution>(scene, StrainMeasure::small, std::vector<double>{}, pieces);
@@ -105,7 +100,7 @@ class ExactWriter : public Monitor<Dim> {
 
  private:
   Monitor<Dim>& next_;
-  std::vector<std::vector<double>> reference_;  ///< each observed particle's X, in the scene's coordinates
+  std::vector<std::vector<double>> reference_;  ///< each observer's material point X, in the scene's coordinates
   std::unique_ptr<SceneExactSolution> solution_;
   std::vector<std::string> columns_;
   std::ofstream out_;

@@ -168,10 +168,19 @@ class RunWriter : public Monitor<Dim> {
   std::chrono::steady_clock::time_point last_progress_{};
 };
 
-/// Who wrote a run: the program's version (git at build time, mpm/cli/version.cmake) and its command line.
+/// The particle an observer follows: the one nearest its material point at t = 0.
+struct ObservedParticle {
+  std::string name;
+  int particle = 0;                       ///< the particle's id (snapshot_NNNN.csv's id)
+  std::vector<double> reference_position;  ///< the particle's X (m); its current x is in observers.csv
+};
+
+/// Who wrote a run and what it followed: the program's version (git at build time, mpm/cli/version.cmake),
+/// its command line, and the particle of each observer.
 struct RunIdentity {
   std::string version = "unknown";
   std::vector<std::string> command_line;
+  std::vector<ObservedParticle> observed;
 };
 
 /// `text` as a JSON string, quoted and escaped.
@@ -218,7 +227,7 @@ inline std::vector<std::pair<std::string, std::string>> column_units(int dimensi
 /// The unit of every field of run.json but the scene (whose keys' units are "scene_units").
 inline const std::vector<std::pair<std::string, std::string>>& run_json_units() {
   static const std::vector<std::pair<std::string, std::string>> units{
-      {"status", "-"}, {"version", "-"}, {"command_line", "-"}, {"particles", "-"}, {"steps", "-"}, {"final_time", "s"},
+      {"status", "-"}, {"version", "-"}, {"command_line", "-"}, {"observed", "reference_position: m"}, {"particles", "-"}, {"steps", "-"}, {"final_time", "s"},
       {"smallest_time_step", "s"}, {"largest_time_step", "s"}, {"wall_seconds", "s"}, {"particle_steps_per_second", "1/s"},
       {"largest_mass_error", "- (relative)"}, {"neighbours_mean", "nodes"}, {"neighbours_max", "nodes"},
       {"newton_iterations_mean", "-"}, {"newton_iterations_max", "-"}, {"threads", "-"}, {"phase_seconds", "s"}};
@@ -235,6 +244,14 @@ inline void write_run_json(const std::string& path, const Scene& scene, const Ru
       << "  \"version\": " << json_string(identity.version) << ",\n"
       << "  \"command_line\": [";
   for (size_t k = 0; k < identity.command_line.size(); ++k) out << (k ? ", " : "") << json_string(identity.command_line[k]);
+  out << "],\n  \"observed\": [";
+  for (size_t k = 0; k < identity.observed.size(); ++k) {
+    const ObservedParticle& observed = identity.observed[k];
+    out << (k ? ", " : "") << "{\"name\": " << json_string(observed.name) << ", \"particle\": " << observed.particle
+        << ", \"reference_position\": [";
+    for (size_t axis = 0; axis < observed.reference_position.size(); ++axis) out << (axis ? ", " : "") << observed.reference_position[axis];
+    out << "]}";
+  }
   out << "],\n"
       << "  \"scene\": " << resolved_json(scene) << ",\n"
       << "  \"particles\": " << particle_count << ",\n"
@@ -273,11 +290,12 @@ TEST_CASE("run.json: strings escaped; every field written has its unit") {
   const std::string path = (std::filesystem::temp_directory_path() / ("mpm_run_json_" + std::to_string(getpid()) + ".json")).string();
   Scene scene;
   scene.dimension = 2;
-  write_run_json(path, scene, RunSummary{}, "done", 3, {"1.2.3", {"mpm", "run", "it's \"here\""}});
+  write_run_json(path, scene, RunSummary{}, "done", 3, {"1.2.3", {"mpm", "run", "it's \"here\""}, {{"A", 7, {0.5, 1.5}}}});
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::remove(path.c_str());
   CHECK(text.find("\"version\": \"1.2.3\"") != std::string::npos);
+  CHECK(text.find("\"observed\": [{\"name\": \"A\", \"particle\": 7, \"reference_position\": [0.5, 1.5]}]") != std::string::npos);
   CHECK(text.find("\"command_line\": [\"mpm\", \"run\", \"it's \\\"here\\\"\"]") != std::string::npos);
   // every top-level field of run.json (a line `  "name": `) but the unit tables and the scene is in run_json_units
   std::istringstream lines(text);

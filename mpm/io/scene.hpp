@@ -31,6 +31,8 @@ struct FixedSettings {
   bool upper = false;
   std::vector<int> components;
 };
+/// An observer names a material point by its reference position: the particle nearest it at t = 0 is
+/// observed (observers.csv), and the scene's exact solution is evaluated at the point itself (exact.csv).
 struct ObserverSettings {
   std::string name;
   std::vector<double> position;
@@ -274,9 +276,19 @@ inline Scene read_scene(const SceneFile& file) {
     if (scene.control.energy_growth_limit < 0.0) solver.fail("energy_growth_limit", "must be >= 0 (0: no check)");
     solver.reject_unknown_keys();
   }
+  scene.exact = root.text("exact", {"none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"},
+                          std::string("none"));
   each_table(file, root, "observer", [&](SceneReader& reader) {
     ObserverSettings observer{reader.any_text("name", ""), reader.numbers("position", dim)};
     inside_grid(reader, "position", observer.position, false);
+    // The observer names a material point by its reference position: exact.csv is evaluated there, so it
+    // must be a point of the body the exact solution holds for, [origin, origin + length].
+    for (int axis = 0; scene.exact != "none" && axis < dim; ++axis)
+      if (observer.position[axis] < scene.origin[axis] - 1e-9 * scene.spacing ||
+          observer.position[axis] > scene.origin[axis] + scene.length[axis] + 1e-9 * scene.spacing)
+        reader.fail("position", "lies outside the body [" + SceneReader::describe(scene.origin[axis]) + ", " +
+                                    SceneReader::describe(scene.origin[axis] + scene.length[axis]) + "] on " + axes[axis] +
+                                    ", where exact = \"" + scene.exact + "\" is evaluated for exact.csv");
     if (observer.name.empty() || observer.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
       reader.fail("name", "required; letters, digits and _ only (it names CSV columns)");
     for (const auto& other : scene.observers)
@@ -290,11 +302,18 @@ inline Scene read_scene(const SceneFile& file) {
     if (scene.control.snapshot_times.size() > 10'000) output.fail("snapshots", "at most 10000 times");
     for (double time : scene.control.snapshot_times)
       if (time < 0.0 || time > scene.control.end_time) output.fail("snapshots", "times must lie in [0, solver.end_time]");
+    scene.control.sample_times = output.numbers("times", -1, std::vector<double>{});
+    if (scene.control.sample_times.size() > 1'000'000) output.fail("times", "at most 1000000 times");
+    for (size_t k = 0; k < scene.control.sample_times.size(); ++k) {
+      const double time = scene.control.sample_times[k];
+      if (time < 0.0 || time > scene.control.end_time) output.fail("times", "times must lie in [0, solver.end_time]");
+      if (k > 0 && !(time > scene.control.sample_times[k - 1])) output.fail("times", "times must increase");
+    }
+    if (!scene.control.sample_times.empty() && scene.control.sample_every != 1)
+      output.fail("every", "give output.every or output.times, not both (times replaces every)");
     output.reject_unknown_keys();
   }
   scene.formulas = read_scene_formulas(file, root, dim, scene.young_modulus, scene.poisson_ratio, scene.density);
-  scene.exact = root.text("exact", {"none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"},
-                          std::string("none"));
   SceneReader parameters(file, detail::table_or_empty(file, root, "exact_parameters", false), "exact_parameters");
   scene.exact_mode = parameters.integer("mode", 1, 1, 1000);
   if (parameters.has("velocity_amplitude"))

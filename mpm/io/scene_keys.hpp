@@ -95,6 +95,8 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"observer[].position", nullptr, false, "m", "the particle nearest this point at t = 0 is observed"},
       {"output.every", "1", false, "steps", "observers and energy sampled every n steps and at the end"},
       {"output.snapshots", "[]", false, "s", "times at which every particle is written (CSV, VTK, .pvd)"},
+      {"output.times", "[]", false, "s",
+       "times at which observers, energy and exact.csv are sampled, each landed on by a step; replaces every"},
   };
   return keys;
 }

@@ -153,8 +153,9 @@ inline toml::table resolved_table(const Scene& scene) {
   if (!initial_field.empty()) table.insert("initial_field", initial_field);
   if (formulas.body_force) table.insert("body_force", toml::table{{"acceleration", texts(*formulas.body_force)}});
   table.insert("observer", observers);
-  table.insert("output", toml::table{{"every", static_cast<int64_t>(control.sample_every)},
-                                     {"snapshots", numbers_array(control.snapshot_times)}});
+  toml::table output{{"snapshots", numbers_array(control.snapshot_times)}, {"times", numbers_array(control.sample_times)}};
+  if (control.sample_times.empty()) output.insert("every", static_cast<int64_t>(control.sample_every));  // times replaces every
+  table.insert("output", output);
   return table;
 }
 
