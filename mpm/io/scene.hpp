@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -14,6 +15,7 @@
 
 #include "mpm/io/scene_file.hpp"
 #include "mpm/io/scene_formulas.hpp"
+#include "mpm/particles/seeding.hpp"
 #include "mpm/simulation.hpp"
 
 namespace mpm::io {
@@ -22,7 +24,18 @@ struct BodySettings {
   std::vector<double> min, max, velocity;
   std::vector<int> particles_per_cell;
   std::string placement = "uniform";
+  std::string shape = "box";                      ///< box | ellipse | polygon (mpm/particles/body_shape.hpp)
+  std::vector<std::array<double, 2>> vertices;    ///< polygon only, m
 };
+
+/// The body's shape, for seeding (mpm/particles/body_shape.hpp).
+inline BodyShape body_shape(const BodySettings& body) {
+  BodyShape shape;
+  shape.kind = body.shape == "ellipse" ? BodyShape::Kind::ellipse : body.shape == "polygon" ? BodyShape::Kind::polygon : BodyShape::Kind::box;
+  for (size_t axis = 0; axis < body.min.size(); ++axis) shape.min[axis] = body.min[axis], shape.max[axis] = body.max[axis];
+  shape.vertices = body.vertices;
+  return shape;
+}
 struct VelocityBox {
   std::vector<double> min, max, velocity;
 };
@@ -146,6 +159,52 @@ inline std::vector<double> constant_or_formula(SceneReader& reader, const std::s
   return values;
 }
 
+/// Bodies may not overlap: a particle of one may not lie in another (its box cut by its shape). Boxes whose
+/// interiors meet overlap; where a shape cuts one of them, the particles of the second body in the common
+/// box are tested against the first (at most 4e6 of them: beyond, the boxes must be apart).
+/// \throws SceneError at the second body's min, naming the first body and its line.
+inline void check_bodies_apart(const SceneFile& file, const Scene& scene) {
+  const int dim = scene.dimension;
+  const toml::array* tables = file.table["body"].as_array();
+  auto where_is_body = [&](size_t k) {  // FILE:LINE of body k, or the --set that gave it
+    for (const std::string& key : {"body[" + std::to_string(k) + "]", std::string("body")})
+      if (auto given = file.overridden.find(key); given != file.overridden.end()) return given->second + ":1";
+    return file.path + ":" + std::to_string(tables && k < tables->size() ? line_of(*tables->get(k)) : 0);
+  };
+  for (size_t j = 1; j < scene.bodies.size(); ++j)
+    for (size_t i = 0; i < j; ++i) {
+      const BodySettings &first = scene.bodies[i], &second = scene.bodies[j];
+      Vector<2> lower = Vector<2>::Zero(), upper = Vector<2>::Zero();
+      double seeds = 1.0;
+      bool apart = false;
+      for (int axis = 0; axis < dim; ++axis) {
+        lower[axis] = std::max(first.min[axis], second.min[axis]), upper[axis] = std::min(first.max[axis], second.max[axis]);
+        apart = apart || upper[axis] - lower[axis] < 0.5 * scene.spacing;  // both on grid lines: apart, or a cell in common
+        seeds *= (upper[axis] - lower[axis]) / scene.spacing * second.particles_per_cell[axis];
+      }
+      if (apart) continue;
+      bool overlap = first.shape == "box" && second.shape == "box";
+      if (!overlap && seeds > 4e6) overlap = true;
+      if (!overlap) {
+        const BodyShape shape_first = body_shape(first), shape_second = body_shape(second);
+        auto visit = [&](const auto& x) {
+          overlap = shape_second.holds(x[0], x[dim - 1]) && shape_first.holds(x[0], x[dim - 1]);
+          return !overlap;
+        };
+        Vector<2> origin(scene.origin[0], dim == 2 ? scene.origin[1] : 0.0);
+        std::array<int, 2> ppc{second.particles_per_cell[0], second.particles_per_cell[dim - 1]};
+        const Placement placement = second.placement == "gauss" ? Placement::gauss : Placement::uniform;
+        if (dim == 2) for_each_seed<2>(origin, scene.spacing, lower, upper, ppc, placement, visit);
+        else for_each_seed<1>(Vector<1>(origin[0]), scene.spacing, Vector<1>(lower[0]), Vector<1>(upper[0]), {ppc[0]}, placement, visit);
+      }
+      if (overlap) {
+        SceneReader reader(file, *tables->get(j)->as_table(), "body[" + std::to_string(j) + "]");
+        reader.fail("min", "overlaps body[" + std::to_string(i) + "] (" + where_is_body(i) +
+                               "): a particle of one would lie in the other; move them apart (their boxes may touch)");
+      }
+    }
+}
+
 }  // namespace detail
 
 /// Reads and validates every key of the scene. \throws SceneError at the first problem.
@@ -215,9 +274,34 @@ inline Scene read_scene(const SceneFile& file) {
     if (body.placement == "gauss")
       for (int ppc : body.particles_per_cell)
         if (ppc != 2) reader.fail("placement", "'gauss' needs particles_per_cell = 2 on every axis");
+    body.shape = reader.text("shape", {"box", "ellipse", "polygon"}, std::string("box"));
+    if (dim == 1 && body.shape != "box") reader.fail("shape", "a 1D body is a box (ellipse and polygon are 2D shapes)");
+    if (const toml::node* node = reader.node("vertices")) {
+      if (body.shape != "polygon") reader.fail("vertices", "only a body of shape = \"polygon\" has vertices");
+      const toml::array* list = node->as_array();
+      if (!list || list->size() < 3 || list->size() > 10000)
+        reader.fail("vertices", "must be an array of 3 to 10000 points [x, y], e.g. [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]");
+      for (const auto& entry : *list) {
+        const toml::array* point = entry.as_array();
+        std::array<double, 2> vertex{};
+        for (int axis = 0; axis < 2; ++axis) {
+          const toml::node* coordinate = point && point->size() == 2 ? point->get(axis) : nullptr;
+          if (!coordinate || !coordinate->is_number() || !std::isfinite(*coordinate->value<double>()))
+            reader.fail("vertices", "every vertex is a point [x, y] of two finite numbers (m)");
+          vertex[axis] = *coordinate->value<double>();
+          if (vertex[axis] < body.min[axis] - 1e-9 * scene.spacing || vertex[axis] > body.max[axis] + 1e-9 * scene.spacing)
+            reader.fail("vertices", "vertex " + std::to_string(body.vertices.size()) + " lies outside the body's box [min, max]: "
+                                    "the box is the cells seeded, the polygon the part kept");
+        }
+        body.vertices.push_back(vertex);
+      }
+    } else if (body.shape == "polygon") {
+      reader.fail("vertices", "missing; a polygon needs its vertices, [[x, y], ...] (m)");
+    }
     scene.bodies.push_back(body);
   });
   if (scene.bodies.empty()) root.fail("body", "the scene needs at least one [[body]]");
+  detail::check_bodies_apart(file, scene);
   each_table(file, root, "initial_velocity", [&](SceneReader& reader) {
     scene.initial_velocities.push_back({reader.numbers("min", dim), reader.numbers("max", dim), reader.numbers("velocity", dim)});
   });
@@ -330,7 +414,7 @@ inline Scene read_scene(const SceneFile& file) {
   };
   // The exact solutions hold for one body filling the box [origin, origin + length] (the bar, the column).
   auto fills_box = [&] {
-    if (scene.bodies.size() != 1) return false;
+    if (scene.bodies.size() != 1 || scene.bodies[0].shape != "box") return false;
     for (int axis = 0; axis < dim; ++axis)
       if (std::abs(scene.bodies[0].min[axis] - scene.origin[axis]) > 1e-9 * scene.spacing ||
           std::abs(scene.bodies[0].max[axis] - scene.origin[axis] - scene.length[axis]) > 1e-9 * scene.spacing)

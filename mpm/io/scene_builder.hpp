@@ -89,11 +89,15 @@ Model<Dim> build_model(const Scene& scene) {
 template <int Dim>
 Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
   Particles<Dim> particles;
-  for (const auto& body : scene.bodies) {
+  for (size_t k = 0; k < scene.bodies.size(); ++k) {
+    const BodySettings& body = scene.bodies[k];
     std::array<int, Dim> per_cell{};
     for (int axis = 0; axis < Dim; ++axis) per_cell[axis] = body.particles_per_cell[axis];
-    fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, scene.density,
-             to_vector<Dim>(body.velocity), body.placement == "gauss" ? Placement::gauss : Placement::uniform, particles);
+    const int added = fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, scene.density, to_vector<Dim>(body.velocity),
+                               body.placement == "gauss" ? Placement::gauss : Placement::uniform, particles, body_shape(body));
+    if (added == 0)  // a polygon thinner than the particle spacing: its box holds seeds, none inside it
+      throw SceneError(scene.file, 0, "body[" + std::to_string(k) + "].vertices",
+                       "the polygon holds no particle: make it wider than the particle spacing, or raise particles_per_cell");
   }
   apply_scene_formulas<Dim>(scene.formulas, LinearElastic{scene.young_modulus, scene.poisson_ratio, scene.density},
                             scene.control.end_time, particles);  // [initial_field], before the boxes

@@ -57,6 +57,10 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"body[].particles_per_cell", "1", true, "-", "particles per cell on each axis"},
       {"body[].velocity", "0.0", true, "m/s", "initial velocity of the body's particles"},
       {"body[].placement", "\"uniform\"", false, "-", "uniform (cell split evenly) | gauss (2x2 Gauss points)"},
+      {"body[].shape", "\"box\"", false, "-",
+       "box | ellipse (inscribed in the box [min, max]: a disk in a square box) | polygon (vertices): the particles of "
+       "the box's cells that lie in the shape are kept, each with its share of the cell's mass (2D)"},
+      {"body[].vertices", nullptr, false, "m", "polygon: its vertices [[x, y], ...], in order, inside [min, max]", true},
       {"initial_velocity[].min", nullptr, false, "m", "lower corner of a box; particles in it start with `velocity`"},
       {"initial_velocity[].max", nullptr, false, "m", "upper corner of the box"},
       {"initial_velocity[].velocity", nullptr, false, "m/s", "their initial velocity (later boxes win)"},

@@ -99,12 +99,20 @@ inline toml::table resolved_table(const Scene& scene) {
                                        {"poisson_ratio", scene.poisson_ratio},
                                        {"density", scene.density}});
   toml::array bodies, velocities, fixed, observers;
-  for (const auto& body : scene.bodies)
-    bodies.push_back(toml::table{{"min", numbers_array(body.min)},
-                                 {"max", numbers_array(body.max)},
-                                 {"particles_per_cell", integers_array(body.particles_per_cell)},
-                                 {"velocity", numbers_array(body.velocity)},
-                                 {"placement", body.placement}});
+  for (const auto& body : scene.bodies) {
+    toml::table entry{{"min", numbers_array(body.min)},
+                      {"max", numbers_array(body.max)},
+                      {"particles_per_cell", integers_array(body.particles_per_cell)},
+                      {"velocity", numbers_array(body.velocity)},
+                      {"placement", body.placement},
+                      {"shape", body.shape}};
+    if (!body.vertices.empty()) {
+      toml::array vertices;
+      for (const auto& vertex : body.vertices) vertices.push_back(toml::array{vertex[0], vertex[1]});
+      entry.insert("vertices", vertices);
+    }
+    bodies.push_back(entry);
+  }
   for (const auto& box : scene.initial_velocities)
     velocities.push_back(toml::table{{"min", numbers_array(box.min)},
                                      {"max", numbers_array(box.max)},

@@ -2,6 +2,7 @@
 /// Warnings for a scene that is valid but suspicious: `warning: FILE:LINE: KEY: what and why`, on
 /// stderr before the run; a warning never stops a run (errors do: mpm/io/scene.hpp).
 ///   - an observer outside every [[body]] (the particle nearest to it is observed instead);
+///   - an [[initial_velocity]] box that holds no particle (it sets nothing);
 ///   - a CFL above the measured stability limit of the chosen shape function and integrator;
 ///   - LME next to rigid margin nodes behind a fixed face (it gives way there).
 /// uGIMP needs no warning at a wall: its particle domain is clipped at the grid's edge
@@ -88,6 +89,35 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
     if (!inside)
       warn("observer[" + std::to_string(k) + "].position",
            "lies outside every [[body]]: the particle nearest to it at t = 0 is observed instead");
+  }
+  for (size_t k = 0; k < scene.initial_velocities.size(); ++k) {  // a box that holds no particle sets nothing
+    const VelocityBox& box = scene.initial_velocities[k];
+    bool touched = false;
+    double seeds = 0.0;
+    for (const auto& body : scene.bodies) {
+      double count = 1.0;
+      for (int axis = 0; axis < dim; ++axis) count *= (body.max[axis] - body.min[axis]) / scene.spacing * body.particles_per_cell[axis];
+      seeds += count;
+    }
+    if (seeds > 1e7) continue;  // too many particles to look at here: no warning
+    for (const auto& body : scene.bodies) {
+      const BodyShape shape = body_shape(body);
+      const Placement placement = body.placement == "gauss" ? Placement::gauss : Placement::uniform;
+      auto visit = [&](const auto& x) {
+        bool inside = shape.holds(x[0], x[dim - 1]);
+        for (int axis = 0; axis < dim; ++axis) inside = inside && x[axis] >= box.min[axis] && x[axis] <= box.max[axis];
+        touched = touched || inside;
+        return !touched;
+      };
+      if (dim == 1)
+        for_each_seed<1>(Vector<1>(scene.origin[0]), scene.spacing, Vector<1>(body.min[0]), Vector<1>(body.max[0]),
+                         {body.particles_per_cell[0]}, placement, visit);
+      else
+        for_each_seed<2>(Vector<2>(scene.origin[0], scene.origin[1]), scene.spacing, Vector<2>(body.min[0], body.min[1]),
+                         Vector<2>(body.max[0], body.max[1]), {body.particles_per_cell[0], body.particles_per_cell[1]}, placement, visit);
+      if (touched) break;
+    }
+    if (!touched) warn("initial_velocity[" + std::to_string(k) + "].min", "the box holds no particle: it sets no velocity");
   }
   {  // Eq. (42) takes c = sqrt(E/rho); in 2D the P-wave speed sqrt(M/rho) is faster, so the effective CFL is larger.
     const double nu = scene.poisson_ratio;
