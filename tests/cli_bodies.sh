@@ -60,6 +60,27 @@ bad "^error: .*body\[0\].vertices: the polygon holds no particle" run "$disks" -
 bad "^error: --set\(2\):1: body\[1\].min: overlaps body\[0\] \(--set\(2\):1\)" run "$scenes/dyka_bar.toml" --out "$work/never" --set 'exact="none"' \
   --set 'body=[{min = [0.0], max = [0.033325]}, {min = [0.0], max = [0.1333]}]'
 
+# Particles read from a CSV file, beside the scene: four particles of the first disk's box with their own
+# volumes and velocities; the second disk as before. Kinetic energy at t = 0, by hand: the disk's 2.6 / 2 = 1.3
+# plus sum m v^2 / 2 = 1000 (0.001 (1 + 4) + 0.002 (0.25)) / 2 = 2.75 J/m, the file's rows in mass order.
+cp "$disks" "$work/from_file.toml"
+printf '# id, position (m), volume (m^2), velocity (m/s)\nid,x,y,volume,v_x,v_y\n1,0.1,0.1,0.001,1,0\n2,0.2,0.1,0.001,0,2\n3,0.3,0.3,0.002,0.5,0\n4,0.4,0.2,0.002,0,0\n' \
+  >"$work/particles.csv"
+"$mpm" run "$work/from_file.toml" --out "$work/file" "${short[@]}" --set 'body[0].shape="file"' --set 'body[0].file="particles.csv"' \
+  >/dev/null 2>"$work/err" || fail "a body read from a file: $(cat "$work/err")"
+[[ $(($(wc -l <"$work/file/snapshot_0000.csv") - 1)) -eq 212 ]] || fail "file body: $(($(wc -l <"$work/file/snapshot_0000.csv") - 1)) particles, want 4 + 208"
+awk -F, 'NR == 2 { d = $2 - 4.05; if (d < 0) d = -d; exit !(d < 1e-12) }' "$work/file/energy.csv" ||
+  fail "file body: initial kinetic energy $(sed -n 2p "$work/file/energy.csv" | cut -d, -f2), want 4.05"
+bad "^error: --set\(2\):1: body\[0\].file: .*/missing.csv: cannot be read" run "$work/from_file.toml" --out "$work/never" \
+  --set 'body[0].shape="file"' --set 'body[0].file="missing.csv"'
+printf 'x,y,volume\n0.1,0.1,0.001\n0.1,fast,0.001\n' >"$work/bad_row.csv"
+bad "^error: --set\(2\):1: body\[0\].file: .*/bad_row.csv:3: y: 'fast' is not a finite number" run "$work/from_file.toml" --out "$work/never" \
+  --set 'body[0].shape="file"' --set 'body[0].file="bad_row.csv"'
+printf 'x,y,volume\n0.1,0.1,0.001\n0.5,0.1,0.001\n' >"$work/outside.csv"
+bad "^error: --set\(2\):1: body\[0\].file: .*/outside.csv: particle 2 lies outside the body's box \[min, max\] on x" run "$work/from_file.toml" \
+  --out "$work/never" --set 'body[0].shape="file"' --set 'body[0].file="outside.csv"'
+bad "^error: .*body\[0\].file: missing; a body of shape = \"file\"" run "$work/from_file.toml" --out "$work/never" --set 'body[0].shape="file"'
+
 # A velocity box that holds no particle: a warning, and the run goes on.
 "$mpm" run "$disks" --out "$work/w" "${short[@]}" --set 'initial_velocity=[{min = [0.46, 0.0], max = [0.54, 1.0], velocity = [1.0, 0.0]}]' \
   >/dev/null 2>"$work/err" || fail "a warning stopped the run"

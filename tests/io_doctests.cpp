@@ -13,3 +13,4 @@
 #include "mpm/cli/exact_command.hpp"
 #include "mpm/cli/compare_command.hpp"
 #include "mpm/io/scene_budget.hpp"
+#include "mpm/io/particle_file.hpp"

@@ -9,11 +9,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "mpm/io/scene_file.hpp"
+#include "mpm/io/particle_file.hpp"
 #include "mpm/io/scene_formulas.hpp"
 #include "mpm/particles/seeding.hpp"
 #include "mpm/simulation.hpp"
@@ -24,8 +26,10 @@ struct BodySettings {
   std::vector<double> min, max, velocity;
   std::vector<int> particles_per_cell;
   std::string placement = "uniform";
-  std::string shape = "box";                      ///< box | ellipse | polygon (mpm/particles/body_shape.hpp)
+  std::string shape = "box";                      ///< box | ellipse | polygon (mpm/particles/body_shape.hpp) | file
   std::vector<std::array<double, 2>> vertices;    ///< polygon only, m
+  std::string file;                               ///< file only: the CSV as given (mpm/io/particle_file.hpp)
+  std::vector<FileParticle> particles;            ///< file only: its particles, read and checked with the scene
 };
 
 /// The body's shape, for seeding (mpm/particles/body_shape.hpp).
@@ -183,7 +187,7 @@ inline void check_bodies_apart(const SceneFile& file, const Scene& scene) {
         seeds *= (upper[axis] - lower[axis]) / scene.spacing * second.particles_per_cell[axis];
       }
       if (apart) continue;
-      bool overlap = first.shape == "box" && second.shape == "box";
+      bool overlap = (first.shape == "box" && second.shape == "box") || first.shape == "file" || second.shape == "file";
       if (!overlap && seeds > 4e6) overlap = true;
       if (!overlap) {
         const BodyShape shape_first = body_shape(first), shape_second = body_shape(second);
@@ -274,8 +278,27 @@ inline Scene read_scene(const SceneFile& file) {
     if (body.placement == "gauss")
       for (int ppc : body.particles_per_cell)
         if (ppc != 2) reader.fail("placement", "'gauss' needs particles_per_cell = 2 on every axis");
-    body.shape = reader.text("shape", {"box", "ellipse", "polygon"}, std::string("box"));
-    if (dim == 1 && body.shape != "box") reader.fail("shape", "a 1D body is a box (ellipse and polygon are 2D shapes)");
+    body.shape = reader.text("shape", {"box", "ellipse", "polygon", "file"}, std::string("box"));
+    if (dim == 1 && (body.shape == "ellipse" || body.shape == "polygon"))
+      reader.fail("shape", "a 1D body is a box or a file (ellipse and polygon are 2D shapes)");
+    if (reader.has("file")) {
+      body.file = reader.any_text("file", "");
+      if (body.shape != "file") reader.fail("file", "only a body of shape = \"file\" reads a particle file");
+      namespace fs = std::filesystem;
+      const fs::path path = fs::path(body.file).is_absolute() ? fs::path(body.file) : fs::path(file.path).parent_path() / body.file;
+      std::string problem;
+      body.particles = read_particle_file(path.string(), dim, scene.density, body.velocity, problem);
+      if (!problem.empty()) reader.fail("file", problem);
+      for (size_t p = 0; p < body.particles.size(); ++p) {
+        const double position[2] = {body.particles[p].x, body.particles[p].y};
+        for (int axis = 0; axis < dim; ++axis)
+          if (position[axis] < body.min[axis] || position[axis] > body.max[axis])
+            reader.fail("file", path.string() + ": particle " + std::to_string(p + 1) + " lies outside the body's box [min, max] on " +
+                                    axes[axis] + ": the box must hold the file's particles");
+      }
+    } else if (body.shape == "file") {
+      reader.fail("file", "missing; a body of shape = \"file\" reads its particles from a CSV file (x[,y],volume|mass[,v_x[,v_y]])");
+    }
     if (const toml::node* node = reader.node("vertices")) {
       if (body.shape != "polygon") reader.fail("vertices", "only a body of shape = \"polygon\" has vertices");
       const toml::array* list = node->as_array();

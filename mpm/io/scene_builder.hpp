@@ -91,6 +91,16 @@ Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
   Particles<Dim> particles;
   for (size_t k = 0; k < scene.bodies.size(); ++k) {
     const BodySettings& body = scene.bodies[k];
+    if (body.shape == "file") {  // its particles as read (mpm/io/particle_file.hpp); l_p = V^(1/Dim) / 2 per axis
+      for (const FileParticle& particle : body.particles) {
+        const double position[2] = {particle.x, particle.y}, velocity[2] = {particle.v_x, particle.v_y};
+        Vector<Dim> x, v;
+        for (int axis = 0; axis < Dim; ++axis) x[axis] = position[axis], v[axis] = velocity[axis];
+        const double half = 0.5 * std::pow(particle.mass / scene.density, 1.0 / Dim);
+        particles.add(x, particle.mass, scene.density, v, Vector<Dim>::Constant(half));
+      }
+      continue;
+    }
     std::array<int, Dim> per_cell{};
     for (int axis = 0; axis < Dim; ++axis) per_cell[axis] = body.particles_per_cell[axis];
     const int added = fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, scene.density, to_vector<Dim>(body.velocity),

@@ -59,8 +59,11 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"body[].placement", "\"uniform\"", false, "-", "uniform (cell split evenly) | gauss (2x2 Gauss points)"},
       {"body[].shape", "\"box\"", false, "-",
        "box | ellipse (inscribed in the box [min, max]: a disk in a square box) | polygon (vertices): the particles of "
-       "the box's cells that lie in the shape are kept, each with its share of the cell's mass (2D)"},
+       "the box's cells that lie in the shape are kept, each with its share of the cell's mass (2D) | file (particles read from file)"},
       {"body[].vertices", nullptr, false, "m", "polygon: its vertices [[x, y], ...], in order, inside [min, max]", true},
+      {"body[].file", nullptr, false, "-",
+       "file: a CSV of the body's particles, x[,y] (m), volume (m^Dim) or mass (kg), optional v_x[,v_y] (m/s), by column "
+       "name; relative to the scene's folder; every particle inside [min, max]", true},
       {"initial_velocity[].min", nullptr, false, "m", "lower corner of a box; particles in it start with `velocity`"},
       {"initial_velocity[].max", nullptr, false, "m", "upper corner of the box"},
       {"initial_velocity[].velocity", nullptr, false, "m/s", "their initial velocity (later boxes win)"},

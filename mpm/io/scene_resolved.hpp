@@ -106,6 +106,7 @@ inline toml::table resolved_table(const Scene& scene) {
                       {"velocity", numbers_array(body.velocity)},
                       {"placement", body.placement},
                       {"shape", body.shape}};
+    if (!body.file.empty()) entry.insert("file", body.file);
     if (!body.vertices.empty()) {
       toml::array vertices;
       for (const auto& vertex : body.vertices) vertices.push_back(toml::array{vertex[0], vertex[1]});

@@ -101,6 +101,16 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
     }
     if (seeds > 1e7) continue;  // too many particles to look at here: no warning
     for (const auto& body : scene.bodies) {
+      for (const auto& particle : body.particles) {  // a body read from a file: its own particles
+        const double x[2] = {particle.x, particle.y};
+        bool inside = true;
+        for (int axis = 0; axis < dim; ++axis) inside = inside && x[axis] >= box.min[axis] && x[axis] <= box.max[axis];
+        touched = touched || inside;
+      }
+      if (body.shape == "file") {
+        if (touched) break;
+        continue;
+      }
       const BodyShape shape = body_shape(body);
       const Placement placement = body.placement == "gauss" ? Placement::gauss : Placement::uniform;
       auto visit = [&](const auto& x) {
