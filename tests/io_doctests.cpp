@@ -14,3 +14,4 @@
 #include "mpm/cli/compare_command.hpp"
 #include "mpm/io/scene_budget.hpp"
 #include "mpm/io/particle_file.hpp"
+#include "mpm/io/text_lines.hpp"

@@ -10,6 +10,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -21,6 +22,7 @@
 
 #include "mpm/io/exact_solution.hpp"
 #include "mpm/io/scene.hpp"
+#include "mpm/io/text_lines.hpp"
 
 namespace mpm::cli {
 
@@ -92,8 +94,9 @@ inline std::vector<double> read_times_file(const std::string& path, std::string&
   std::vector<double> times;
   std::string line;
   bool first = true;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+  bool too_long = false;
+  int number = 1;
+  for (; io::read_line(in, line, too_long); ++number) {
     const auto start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') continue;
     const std::string text = line.substr(start, line.find_last_not_of(" \t") - start + 1);
@@ -113,7 +116,8 @@ inline std::vector<double> read_times_file(const std::string& path, std::string&
     }
     times.push_back(*value);
   }
-  if (in.bad()) error = path + ": cannot be read";
+  if (too_long) error = path + ":" + std::to_string(number) + ": a line longer than 1 MiB (is it a text file?)";
+  else if (in.bad()) error = path + ": cannot be read";
   else if (times.empty()) error = path + ": holds no time";
   return times;
 }
@@ -170,6 +174,27 @@ inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, st
   return scene;
 }
 
+/// The finite-strain vibrating bar keeps the bar's state at each time and steps up to the last: at most
+/// 4000 times and SceneExactSolution::most_finite_strain_steps steps. False, with a line on `err`, beyond.
+inline bool finite_strain_times_fit(const io::Scene& scene, const std::string& strain, const std::vector<double>& times,
+                                    const std::string& option, std::ostream& err) {
+  if (strain != "finite" || scene.exact != "vibrating_bar") return true;
+  if (times.size() > 4000) {
+    err << "error: " << option << ": at most 4000 times for the finite-strain vibrating bar (it keeps the bar's state at each)\n";
+    return false;
+  }
+  const double last = *std::max_element(times.begin(), times.end());
+  if (io::SceneExactSolution::finite_strain_steps(scene, last) > io::SceneExactSolution::most_finite_strain_steps) {
+    err << "error: " << option << ": the finite-strain vibrating bar would take "
+        << io::SceneReader::describe(io::SceneExactSolution::finite_strain_steps(scene, last)) << " steps to reach t = " << last
+        << " s; at most 2e6 (about " << io::SceneReader::describe(io::SceneExactSolution::most_finite_strain_steps /
+                                                                  io::SceneExactSolution::finite_strain_steps(scene, 1.0))
+        << " s of this bar)\n";
+    return false;
+  }
+  return true;
+}
+
 /// `mpm exact`; returns the exit code.
 inline int exact_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   ExactOptions options;
@@ -220,8 +245,9 @@ inline int exact_command(const std::vector<std::string>& arguments, std::ostream
   try {
     const auto scene = load_exact_scene(options, points, err);
     if (!scene) return 2;
-    if (options.strain == "finite" && scene->exact == "vibrating_bar" && times.size() > 4000) {
-      err << "error: --times: at most 4000 times for the finite-strain vibrating bar (it keeps the bar's state at each)\n";
+    if (!finite_strain_times_fit(*scene, options.strain, times, "--times", err)) return 2;
+    if (static_cast<double>(times.size()) * points.size() > 1e6) {
+      err << "error: --times: " << times.size() << " times at " << points.size() << " points: at most 1000000 rows\n";
       return 2;
     }
     const io::SceneExactSolution solution(*scene, options.strain == "finite" ? io::StrainMeasure::finite : io::StrainMeasure::small,

@@ -103,6 +103,7 @@ class ElasticBar {
   double jump_tolerance_ = 0.0;           ///< distance (m) within which a point counts as sitting on a jump of F
   std::vector<double> jump_positions_;    ///< jumps of F over one period, sorted, first 0, last 4L
   std::vector<double> plateau_values_;    ///< F between jump_positions_[i] and jump_positions_[i+1]
+  std::vector<double> integral_to_jump_;  ///< \f$ \int_0^{y_i} F \f$ at each jump y_i of the period (last: the whole period)
 
   double period() const { return 4.0 * length_; }
 
@@ -188,6 +189,9 @@ class ElasticBar {
     plateau_values_.clear();
     for (std::size_t i = 0; i + 1 < jump_positions_.size(); ++i)
       plateau_values_.push_back(unfolded_left_going(0.5 * (jump_positions_[i] + jump_positions_[i + 1])));
+    integral_to_jump_.assign(1, 0.0);
+    for (std::size_t i = 0; i < plateau_values_.size(); ++i)
+      integral_to_jump_.push_back(integral_to_jump_.back() + plateau_values_[i] * (jump_positions_[i + 1] - jump_positions_[i]));
   }
 
   /// paper/06_exact_bar.md: at the jump number `index` of the period, the average of the one-sided limits
@@ -202,14 +206,13 @@ class ElasticBar {
   /// \f$ P(y) = \int_0^y F(s)\,ds \f$ for any real y: whole periods (\f$ \int_0^{4L} F \f$ each) plus the plateaus
   /// of the rest of a period, summed over the tabulated steps of F.
   double profile_integral(double y) const {
-    auto within_period = [&](double upto) {  // \int_0^upto F, 0 <= upto <= 4L
-      double sum = 0.0;
-      for (std::size_t i = 0; i + 1 < jump_positions_.size() && jump_positions_[i] < upto; ++i)
-        sum += plateau_values_[i] * (std::min(jump_positions_[i + 1], upto) - jump_positions_[i]);
-      return sum;
+    auto within_period = [&](double upto) {  // \int_0^upto F, 0 <= upto <= 4L, from the integrals up to each jump
+      const auto above = std::upper_bound(jump_positions_.begin(), jump_positions_.end(), upto);
+      const std::size_t lower = std::min<std::size_t>(static_cast<std::size_t>(above - jump_positions_.begin()), plateau_values_.size()) - 1;
+      return integral_to_jump_[lower] + plateau_values_[lower] * (upto - jump_positions_[lower]);
     };
     const double periods = std::floor(y / period());
-    return periods * within_period(period()) + within_period(y - periods * period());
+    return periods * integral_to_jump_.back() + within_period(std::clamp(y - periods * period(), 0.0, period()));
   }
 
   /// paper/06_exact_bar.md: \f$ F(y) \f$ for any real y, using the period \f$ F(y + 4L) = F(y) \f$.

@@ -211,6 +211,15 @@ class SceneExactSolution {
   /// The cells of the finite-strain vibrating bar's reference (second order: relative error ~ (k h)^2, 4e-5 for mode 1).
   static constexpr int finite_strain_cells = 512;
 
+  /// The time steps the finite-strain vibrating bar's reference takes to reach `last_time`: its step is
+  /// 0.9 (L/cells) sqrt(0.8 rho/E) (mpm/exact/vibrating_bar_finite_strain.hpp). The CLI refuses more than
+  /// most_finite_strain_steps (about 3 s of work).
+  static double finite_strain_steps(const Scene& scene, double last_time) {
+    const double step = 0.9 * scene.length[0] / finite_strain_cells * std::sqrt(0.8 * scene.density / scene.young_modulus);
+    return last_time / step;
+  }
+  static constexpr double most_finite_strain_steps = 2e6;
+
   /// Empty if the point (scene coordinates, one entry per axis) is a material point of the solution's body,
   /// the box [origin, origin + length]; else what is wrong.
   std::string outside(const std::vector<double>& point) const {

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/io/text_lines.hpp"
+
 namespace mpm::io {
 
 /// One particle of a file: position, mass (kg per unit area or thickness) and velocity, both axes (y ignored in 1D).
@@ -50,8 +52,9 @@ inline std::vector<FileParticle> read_particle_file(const std::string& path, int
   std::vector<std::string> header;
   int column_x = -1, column_y = -1, column_volume = -1, column_mass = -1, column_vx = -1, column_vy = -1;
   std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+  bool too_long = false;
+  int number = 1;
+  for (; read_line(in, line, too_long); ++number) {
     const auto start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') continue;
     const auto fields = fields_of(line);
@@ -110,7 +113,8 @@ inline std::vector<FileParticle> read_particle_file(const std::string& path, int
     }
     particles.push_back(particle);
   }
-  if (header.empty()) error = path + ": empty; a header line (x[,y],volume|mass[,v_x[,v_y]]) and one row per particle are needed";
+  if (too_long) error = path + ":" + std::to_string(number) + ": a line longer than 1 MiB (is it a CSV file?)";
+  else if (header.empty()) error = path + ": empty; a header line (x[,y],volume|mass[,v_x[,v_y]]) and one row per particle are needed";
   else if (particles.empty()) error = path + ": holds no particle";
   return error.empty() ? particles : std::vector<FileParticle>{};
 }
