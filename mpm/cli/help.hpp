@@ -153,7 +153,7 @@ inline std::string command_help(const std::string& command) {
   if (command == "run") return std::string(run_usage) + "\n" + scene_keys_help() + "\n" + exit_codes;
   if (command == "shape") return shape_usage() + "\n" + exit_codes;
   if (command == "plot") return std::string(plot_usage) + "\n" + exit_codes;
-  if (command == "exact") return std::string(exact_usage) + "\n" + exit_codes;
+  if (command == "exact") return std::string(exact_usage) + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
   if (command == "compare") return compare_usage;
   return main_help();
 }

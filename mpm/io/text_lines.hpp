@@ -13,7 +13,7 @@ namespace mpm::io {
 /// The longest line the CSV readers accept (1 MiB).
 inline constexpr std::size_t longest_line = 1 << 20;
 
-/// Reads the next line of `in` into `line` (without its \n or \r\n); false at the end of the input or when
+/// Reads the next line of `in` into `line` (without its line end, LF or CR LF); false at the end of the input or when
 /// the line exceeds `most` characters (`too_long` then set).
 inline bool read_line(std::istream& in, std::string& line, bool& too_long, std::size_t most = longest_line) {
   line.clear();
