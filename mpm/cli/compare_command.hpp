@@ -286,6 +286,7 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
             << ")\n";
         return 2;
       }
+    if (!times_within_precision(io::SceneExactSolution(*scene, io::StrainMeasure::small), times, result_path, err)) return 2;
     if (!finite_strain_times_fit(*scene, options.strain, times, result_path, err)) return 2;
     const io::SceneExactSolution solution(*scene, options.strain == "finite" ? io::StrainMeasure::finite : io::StrainMeasure::small,
                                           times);

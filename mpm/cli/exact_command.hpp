@@ -195,6 +195,16 @@ inline bool finite_strain_times_fit(const io::Scene& scene, const std::string& s
   return true;
 }
 
+/// Times within a million periods of the solution (SceneExactSolution::period); false, with a line on `err`, beyond.
+inline bool times_within_precision(const io::SceneExactSolution& solution, const std::vector<double>& times, const std::string& option,
+                                   std::ostream& err) {
+  const double last = *std::max_element(times.begin(), times.end());
+  if (last <= 1e6 * solution.period()) return true;
+  err << "error: " << option << ": t = " << last << " s is more than a million periods (" << solution.period()
+      << " s) of the solution: its values would lose their precision\n";
+  return false;
+}
+
 /// `mpm exact`; returns the exit code.
 inline int exact_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   ExactOptions options;
@@ -245,6 +255,7 @@ inline int exact_command(const std::vector<std::string>& arguments, std::ostream
   try {
     const auto scene = load_exact_scene(options, points, err);
     if (!scene) return 2;
+    if (!times_within_precision(io::SceneExactSolution(*scene, io::StrainMeasure::small), times, "--times", err)) return 2;
     if (!finite_strain_times_fit(*scene, options.strain, times, "--times", err)) return 2;
     if (static_cast<double>(times.size()) * points.size() > 1e6) {
       err << "error: --times: " << times.size() << " times at " << points.size() << " points: at most 1000000 rows\n";

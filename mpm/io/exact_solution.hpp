@@ -167,6 +167,7 @@ class SceneExactSolution {
       scale_velocity_ = velocity;
       scale_stress_ = bar_->impedance() * velocity;
       scale_displacement_ = velocity * scene.length[0] / bar_->wave_speed();
+      period_ = 4.0 * scene.length[0] / bar_->wave_speed();
     } else if (name == "soil_column") {
       const double M = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)), g = -scene.gravity[1], H = scene.length[1];
       column_ = std::make_unique<exact::SoilColumn>(H, M, rho, g, scene.ramp_period);
@@ -174,6 +175,7 @@ class SceneExactSolution {
       scale_stress_ = rho * g * H;
       scale_displacement_ = rho * g * H * H / (2.0 * M);
       scale_velocity_ = g * H / column_->wave_speed();
+      period_ = 4.0 * H / column_->wave_speed();
     } else if (name == "vibrating_bar") {
       const double V = *scene.exact_velocity_amplitude;
       vibrating_ = std::make_unique<exact::VibratingBar>(scene.length[0], E, rho, V, scene.exact_mode);
@@ -191,9 +193,11 @@ class SceneExactSolution {
       scale_velocity_ = std::abs(V);
       scale_stress_ = vibrating_->impedance() * std::abs(V);
       scale_displacement_ = std::abs(V) / vibrating_->angular_frequency();
+      period_ = 4.0 * scene.length[0] / vibrating_->wave_speed();
     } else {
       const exact::ManufacturedMaterial material{scene.length[0], E, nu, rho};
       const std::vector<double>& a = scene.exact_displacement_amplitude;
+      period_ = 2.0 * exact::ManufacturedMaterial::pi / material.angular_frequency();
       if (name == "manufactured_small") {
         small_ = std::make_unique<exact::ManufacturedSmall>(material, a[0]);
         scale_velocity_ = small_->velocity_scale();
@@ -284,6 +288,12 @@ class SceneExactSolution {
     return state;
   }
 
+  /// The solution's longest period (s): 4L/c of the bars (the round trip of a wave, the first mode's period),
+  /// 4H/c of the column's first mode, 2 pi/omega of the manufactured motions. Beyond a million of them the
+  /// values lose their precision (c t or omega t carries no digit below a millionth of a period): the CLI
+  /// refuses such times.
+  double period() const { return period_; }
+
   /// The scale by which `mpm compare` divides the RMS error of a quantity (same unit):
   ///   dyka_bar            v: V* = the largest |v_0| or |sigma_0|/Z of the initial data (v0 = 5 m/s for the Dyka
   ///                       bar, so RMS/scale is the paper's RMS/v0); sigma: Z V*; u: V* L / c
@@ -309,7 +319,7 @@ class SceneExactSolution {
   std::unique_ptr<exact::FiniteStrainBar> vibrating_finite_;
   std::unique_ptr<exact::ManufacturedSmall> small_;
   std::unique_ptr<exact::ManufacturedLarge> large_;
-  double scale_velocity_ = 0.0, scale_stress_ = 0.0, scale_displacement_ = 0.0;
+  double scale_velocity_ = 0.0, scale_stress_ = 0.0, scale_displacement_ = 0.0, period_ = 0.0;
 
   /// The coordinate on `axis` from the origin, clamped into [0, length] (outside() has checked it to 1e-9 cells).
   double clamped(const std::vector<double>& point, int axis) const {
