@@ -44,7 +44,9 @@ struct RunControl {
   CourantSpeed courant = CourantSpeed::maximum;
   double end_time = 0.0;
   std::vector<double> snapshot_times;  ///< times at which every particle is written
-  int sample_every = 1;                ///< observers sampled every n steps and at the end
+  int sample_every = 1;                ///< observers sampled every n steps and at the end (when sample_times is empty)
+  /// times at which the observers are sampled instead, each landed on by the step before it (increasing)
+  std::vector<double> sample_times;
   BodyForceTime body_force_time = BodyForceTime::step_end;
   /// The run stops (exit code 3) when the kinetic plus strain energy exceeds this factor times
   /// the initial energy plus the work done by the body force: the signature of an instability.
@@ -81,6 +83,7 @@ class Simulation {
       : model_(std::move(model)), particles_(std::move(particles)), shape_(std::move(shape)),
         integrator_(std::move(integrator)), control_(std::move(control)), grid_fields_(model_.grid.node_count()) {
     std::sort(control_.snapshot_times.begin(), control_.snapshot_times.end());
+    std::sort(control_.sample_times.begin(), control_.sample_times.end());
   }
 
   const Particles<Dim>& particles() const { return particles_; }
@@ -102,8 +105,9 @@ class Simulation {
     summary.smallest_time_step = std::numeric_limits<double>::infinity();
     double time = 0.0;
     long step = 0;
-    size_t next_snapshot = 0;
-    monitor.sample(step, time, particles_, survey.balances);
+    size_t next_snapshot = 0, next_sample = 0;
+    if (control_.sample_times.empty()) monitor.sample(step, time, particles_, survey.balances);
+    else write_due_samples(step, time, next_sample, survey.balances, monitor);
     write_due_snapshots(time, next_snapshot, monitor);
     PhaseTimers& timers = timers_;
     timers.restart();
@@ -112,7 +116,7 @@ class Simulation {
       // 1. Time step, Eq. (42), landing exactly on output times and on the end time.
       double dt = courant_time_step(survey.fastest_speed(), survey.wave_speed(model_.material.young_modulus),
                                     model_.grid.spacing(), control_.cfl, control_.courant);
-      const double target = next_stop(time, next_snapshot);
+      const double target = next_stop(time, next_snapshot, next_sample);
       const bool lands = time + dt * (1.0 + 1e-9) >= target;
       if (lands) dt = target - time;
       // 2. Stencils at the current positions x_p^k.
@@ -138,7 +142,8 @@ class Simulation {
       timers.lap(Phase::checks);
       // 5. Output.
       const bool last = time >= control_.end_time;
-      if (step % control_.sample_every == 0 || last) monitor.sample(step, time, particles_, now);
+      if (!control_.sample_times.empty()) write_due_samples(step, time, next_sample, now, monitor);
+      else if (step % control_.sample_every == 0 || last) monitor.sample(step, time, particles_, now);
       write_due_snapshots(time, next_snapshot, monitor);
       monitor.progress(time, control_.end_time);
       timers.lap(Phase::output);
@@ -164,12 +169,25 @@ class Simulation {
     summary_.phase_seconds = timers_.seconds;
   }
 
-  /// The next time the loop must land on: the next snapshot time or the end time.
-  double next_stop(double time, size_t next_snapshot) const {
+  /// The next time the loop must land on: the next snapshot time, the next sample time or the end time.
+  double next_stop(double time, size_t next_snapshot, size_t next_sample) const {
     double stop = control_.end_time;
     for (size_t k = next_snapshot; k < control_.snapshot_times.size(); ++k)
-      if (control_.snapshot_times[k] > time) return std::min(stop, control_.snapshot_times[k]);
+      if (control_.snapshot_times[k] > time) {
+        stop = std::min(stop, control_.snapshot_times[k]);
+        break;
+      }
+    for (size_t k = next_sample; k < control_.sample_times.size(); ++k)
+      if (control_.sample_times[k] > time) return std::min(stop, control_.sample_times[k]);
     return stop;
+  }
+
+  /// One sample at `time` if a sample time is due (the steps land on them: at most one is due per step,
+  /// the times being distinct).
+  void write_due_samples(long step, double time, size_t& next_sample, const Balances<Dim>& balances, Monitor<Dim>& monitor) {
+    bool due = false;
+    while (next_sample < control_.sample_times.size() && control_.sample_times[next_sample] <= time) ++next_sample, due = true;
+    if (due) monitor.sample(step, time, particles_, balances);
   }
 
   /// Relative difference between the grid's total mass and the particles' (0 up to round-off).

@@ -48,6 +48,18 @@ diff <(tail -n +2 "$work/resolved.toml") <(tail -n +2 "$work/out") >/dev/null ||
 expect 0 -- run "$scene" --out "$work/bar" --set 'exact="dyka_bar"'
 grep -q '"courant" : "max"' "$work/bar/run.json" || fail "run.json: the resolved scene lacks its defaults"
 grep -q '"exact" : "dyka_bar"' "$work/bar/run.json" || fail "run.json: the resolved scene lacks the exact key"
+# issue 18: the version (git at build time), the command line and the units, in valid JSON
+version=$("$mpm" --version) || fail "mpm --version failed"
+[[ $version =~ ^mpm\ [0-9]+\.[0-9]+\.[0-9]+\+(git\.[0-9a-f]+(-dirty)?|unknown)$ ]] || fail "mpm --version printed '$version'"
+python3 - "$work/bar/run.json" "${version#mpm }" "$scene" "$work/bar" <<'PY' || fail "run.json: version, command line or units"
+import json, sys
+run = json.load(open(sys.argv[1]))
+assert run["version"] == sys.argv[2], run["version"]
+assert run["command_line"][1:] == ["run", sys.argv[3], "--out", sys.argv[4], "--set", 'exact="dyka_bar"'], run["command_line"]
+assert all(name in run["units"] for name in run if name not in ("scene", "units", "scene_units", "column_units")), run["units"]
+assert run["units"]["final_time"] == "s" and run["scene_units"]["material.density"] == "kg/m^3"
+assert run["column_units"]["observers.csv:NAME.v_x"] == "m/s" and run["column_units"]["energy.csv:kinetic"] == "J/m^2"
+PY
 # snapshots.pvd: one DataSet per snapshot time of the scene, each file there, with the particles.
 pvd=$work/bar/snapshots.pvd
 [[ -s $pvd ]] || fail "no snapshots.pvd"
@@ -88,7 +100,12 @@ expect 2 -- plot "$work/nothing"
 grep -q "^error: $work/nothing: no such folder" "$work/err" || fail "plot of a missing folder: $(cat "$work/err")"
 mkdir "$work/empty"
 expect 2 -- plot "$work/empty"
-grep -q "^error: $work/empty/observers.csv: missing" "$work/err" || fail "plot without CSVs: $(cat "$work/err")"
+grep -q "^error: $work/empty: holds neither observers.csv nor energy.csv" "$work/err" || fail "plot without CSVs: $(cat "$work/err")"
+# a folder of observers alone (another code's, say): observers.png, no energy.csv needed
+mkdir "$work/observers_only"
+printf 't,A.v_x\n0,1\n1,2\n' >"$work/observers_only/observers.csv"
+expect 0 -- plot "$work/observers_only"
+[[ -s "$work/observers_only/observers.png" && ! -e "$work/observers_only/energy.png" ]] || fail "plot of observers alone"
 expect 2 -- plot
 PATH=/nonexistent expect 3 -- plot "$work/bar"
 grep -q "^failure: gnuplot failed" "$work/err" || fail "plot without gnuplot: $(cat "$work/err")"
@@ -108,7 +125,7 @@ warns() {  # warns PATTERN -- ARGS...: exit 0, and the warning on stderr
 warns "^warning: --set\(1\):1: solver\.cfl: 2\.1 is above the stability limit 2\.000 of linear shapes with forward Euler, from the method.s own linearised step" -- \
   run "$scene" --out "$work/w" --set solver.cfl=2.1 "${short[@]}"
 warns "^warning: --set\(1\):1: observer\[0\]\.position: lies outside every \[\[body\]\]" -- \
-  run "$scene" --out "$work/w" --set 'observer[0].position=[-0.01]' "${short[@]}"
+  run "$scene" --out "$work/w" --set 'observer[0].position=[-0.01]' --set 'exact="none"' "${short[@]}"  # with exact: an error
 warns "^warning: --set\(2\):1: grid\.margin_max: LME next to rigid margin nodes behind the fixed face xmax" -- \
   run "$scene" --out "$work/w" --set 'solver.shape="lme"' --set grid.margin_max=[1] "${short[@]}"
 # The shipped scenes, and their documented variants, warn of nothing.

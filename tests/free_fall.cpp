@@ -103,3 +103,19 @@ TEST_CASE("Free fall under a [body_force] formula of X and t: the same fall as u
     CHECK(field_fall.position.back()[1] < 6.5 - 2.0);  // it did fall: 6.5 + 2 t - g t^2 / 2 = 3.6 m at t = 1 s
   }
 }
+
+TEST_CASE("output.times: the run lands on each sample time, samples there only, and falls as it would without them") {
+  // Four times off the step's grid (dt = 0.5 ms): the samples are taken exactly there and nowhere else,
+  // and the velocity is v0 + g t at each (both integrators add dt g per step, whatever the dt).
+  for (const std::string integrator : {"fe", "npc"}) {
+    const auto scene = mpm::testing::scene_from_text(
+        falling_particle, {"solver.integrator=\"" + integrator + "\"", "output.times=[0.0, 0.12345678, 0.5, 0.99990001]"});
+    mpm::testing::Recorder<2> recorder(0);
+    const auto summary = mpm::run_setup<2>(scene, mpm::build_setup<2>(scene), recorder);
+    REQUIRE(recorder.time == std::vector<double>{0.0, 0.12345678, 0.5, 0.99990001});
+    for (size_t n = 0; n < recorder.time.size(); ++n)
+      CHECK((recorder.velocity[n] - mpm::Vector<2>(0.5, 2.0 - 9.81 * recorder.time[n])).norm() <= 1e-11);
+    CHECK(summary.final_time == 1.0);
+    CHECK(summary.steps > 2000);  // 2000 steps of 0.5 ms without the samples: 0.12345678 s is off that grid
+  }
+}

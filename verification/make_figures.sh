@@ -37,6 +37,8 @@ suite smooth_figures "$out/report/smooth.log" || { echo "figures: smooth-data su
 # Fig. 6 at 2 particles per cell compares the smooth suite's runs with the Dyka suite's sweep.
 bash "$root/verification/smooth_figures.sh" fig6 >"$out/report/smooth_fig6.log" 2>&1 || { echo "figures: Fig. 6 at 2 ppc failed, see $out/report/smooth_fig6.log"; status=1; }
 echo "figures: smooth data done ($(( $(date +%s) - start )) s)"
+suite disks_figures "$out/report/disks.log" || { echo "figures: colliding disks failed, see $out/report/disks.log"; status=1; }
+echo "figures: colliding disks done ($(( $(date +%s) - start )) s)"
 
 elapsed=$(( $(date +%s) - start ))
 {

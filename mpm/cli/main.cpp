@@ -15,8 +15,16 @@
 ///       energy balance into RUN_DIR/observers.png and energy.png (mpm/cli/plot_command.hpp).
 ///   mpm stability [--shape S] [--integrator I] [--newmark-gamma G] [--npc-velocity V] [--ppc N] [--lme-gamma G] [--dim D] ...
 ///       Prints the largest stable CFL of a method from its own linearised step (mpm/cli/stability_command.hpp).
-///   mpm --help, mpm run --help, mpm shape --help, mpm plot --help, mpm stability --help (mpm/cli/help.hpp)
-///   mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
+///   mpm exact SCENE.toml --at X[,Y] (--times T0:DT:T1 | --times-file FILE) [--strain small|finite] [--set KEY=VALUE]...
+///       Prints the scene's exact solution at material points and times, without running (mpm/cli/exact_command.hpp).
+///   mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [...] [--tolerance TOL] [--plot FILE.png]
+///       Scores another code's CSV against the exact solution, Eq. (43); exit 0/1 within/above TOL
+///       (mpm/cli/compare_command.hpp).
+///   mpm --version
+///       Prints the version: the project's version and `git describe` at build time (mpm/cli/version.cmake).
+///   mpm --help, mpm run --help, mpm exact --help, mpm compare --help, mpm shape --help, mpm plot --help,
+///   mpm stability --help (mpm/cli/help.hpp)
+///   mpm shape --dim 1|2 --kind linear|ugimp|lme|bspline2|bspline3 --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
 ///             [--particle-size S] [--tol T]
 ///       Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of
 ///       the cell size) and prints CSV: point,node_x[,node_y],N,dN_dx[,dN_dy].
@@ -33,6 +41,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/cli/compare_command.hpp"
+#include "mpm/cli/exact_command.hpp"
 #include "mpm/cli/help.hpp"
 #include "mpm/cli/plot_command.hpp"
 #include "mpm/cli/shape_command.hpp"
@@ -43,22 +53,36 @@
 #include "mpm/io/scene_warnings.hpp"
 #include "mpm/run.hpp"
 #include "mpm/stability.hpp"
+#include "mpm/version.hpp"  // generated at build time (mpm/cli/version.cmake): MPM_VERSION
 
 namespace {
 
 const char* usage =
     "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--print-scene]\n"
     "                [--max-memory BYTES|<n>G] [--max-steps N] [--force]\n"
-    "       mpm shape --dim 1|2 --kind linear|ugimp|lme --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
+    "       mpm exact SCENE.toml [--set KEY=VALUE]... --at X[,Y] [--at ...] (--times T0:DT:T1 | --times-file FILE)\n"
+    "                 [--strain small|finite]\n"
+    "       mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [--column ...] [--time-column NAME]\n"
+    "                   [--tolerance TOL] [--plot FILE.png] [--set KEY=VALUE]... [--strain small|finite]\n"
+    "       mpm shape --dim 1|2 --kind linear|ugimp|lme|bspline2|bspline3 --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
     "                 [--particle-size S] [--tol T]\n"
     "       mpm plot RUN_DIR\n"
     "       mpm stability [--shape S] [--integrator I] [--newmark-gamma G] [--npc-velocity V] [--ppc N] [--lme-gamma G] [--dim D]\n"
-    "       mpm --help | mpm COMMAND --help\n";
+    "       mpm --version | mpm --help | mpm COMMAND --help\n";
+
+/// The version and command line written into run.json.
+mpm::io::RunIdentity identity;
 
 template <int Dim>
 int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
   scene.control.threads = threads;
   const mpm::Setup<Dim> setup = mpm::build_setup<Dim>(scene);
+  identity.observed.clear();
+  for (size_t k = 0; k < setup.observed.size(); ++k) {
+    const int p = setup.observed[k];
+    const auto& X = setup.particles.reference_position[p];
+    identity.observed.push_back({scene.observers[k].name, setup.particles.id[p], std::vector<double>(X.data(), X.data() + Dim)});
+  }
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) {
@@ -69,16 +93,17 @@ int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
   try {
     try {
       mpm::io::RunWriter<Dim> writer(folder, scene, setup.observed);
-      mpm::io::ExactWriter<Dim> exact_then_writer(folder, scene, setup.particles, setup.observed, writer);
+      mpm::io::ExactWriter<Dim> exact_then_writer(folder, scene, setup.particles, writer);
       summary = mpm::run_setup<Dim>(scene, setup, exact_then_writer, &summary);
       exact_then_writer.finish();
       writer.finish();
     } catch (const mpm::SimulationFailure& failure) {
       std::cerr << failure.message() << "\n";
-      mpm::io::write_run_json(folder + "/run.json", scene, summary, std::string("failed: ") + failure.what(), setup.particles.size());
+      mpm::io::write_run_json(folder + "/run.json", scene, summary, std::string("failed: ") + failure.what(), setup.particles.size(),
+                              identity);
       return 3;
     }
-    mpm::io::write_run_json(folder + "/run.json", scene, summary, "done", setup.particles.size());
+    mpm::io::write_run_json(folder + "/run.json", scene, summary, "done", setup.particles.size(), identity);
   } catch (const mpm::OutputFailure& failure) {
     std::cerr << failure.message() << "\n";
     return 3;
@@ -181,6 +206,16 @@ int main(int argc, char** argv) {
     std::cerr << usage;
     return 2;
   }
+  identity.version = MPM_VERSION;
+  identity.command_line.assign(argv, argv + argc);
+  if (arguments[0] == "--version" || arguments[0] == "version") {
+    if (arguments.size() > 1) {
+      std::cerr << "error: --version: takes no argument\n";
+      return 2;
+    }
+    std::cout << "mpm " << MPM_VERSION << "\n";
+    return 0;
+  }
   if (arguments[0] == "help" || mpm::cli::asks_for_help(arguments)) {
     std::cout << mpm::cli::command_help(arguments.size() > 1 && arguments[0] == "help" ? arguments[1] : arguments[0]);
     return 0;
@@ -188,6 +223,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
   try {  // validation refuses bad input first; this only keeps a defect from ending in a signal
     if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);
+    if (arguments[0] == "exact") return mpm::cli::exact_command(rest, std::cout, std::cerr);
+    if (arguments[0] == "compare") return mpm::cli::compare_command(rest, std::cout, std::cerr);
     if (arguments[0] == "run") return run_command(rest);
     if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
     if (arguments[0] == "stability") return mpm::cli::stability_command(rest, std::cout, std::cerr);

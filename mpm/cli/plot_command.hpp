@@ -4,7 +4,8 @@
 ///                  exact solution (exact.csv, dashed black) wherever it has the same column
 ///   energy.png     kinetic, strain and total energy; momentum
 /// The gnuplot script is kept as RUN_DIR/plot.gp, to be edited and rerun by hand.
-/// Exit codes: 0 done; 2 no such folder or a CSV missing or unreadable; 3 gnuplot failed.
+/// Either CSV may be missing (a folder of another code's observers.csv, say): what is there is drawn.
+/// Exit codes: 0 done; 2 no such folder, neither CSV, or a CSV without its header; 3 gnuplot failed.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -75,6 +76,7 @@ inline std::string plot_script(const std::vector<std::string>& observers, const 
     }
     gp << "unset multiplot\nunset output\n";
   }
+  if (energy.empty()) return gp.str();  // no energy.csv: observers.png only
   gp << "set terminal pngcairo noenhanced size 1000,520 font ',10'\nset output 'energy.png'\nset multiplot layout 2,1\n"
         "set ylabel 'energy (J; 1D per m^2, 2D per m)'\nplot ";
   std::string separator;
@@ -108,10 +110,14 @@ inline int plot_command(const std::vector<std::string>& arguments, std::ostream&
     return 2;
   }
   const auto observers = csv_header(folder + "/observers.csv");
-  const auto energy = csv_header(folder + "/energy.csv");
+  const auto energy = csv_header(folder + "/energy.csv");  // optional, as observers.csv is: at least one
+  if (observers.empty() && energy.empty()) {
+    err << "error: " << folder << ": holds neither observers.csv nor energy.csv (is " << folder << " the folder of an `mpm run`?)\n";
+    return 2;
+  }
   for (const auto& [name, header] : {std::pair{"observers.csv", observers}, std::pair{"energy.csv", energy}})
-    if (header.empty() || header[0] != "t") {
-      err << "error: " << folder << "/" << name << ": missing or without its header line (is " << folder
+    if (!header.empty() && header[0] != "t") {
+      err << "error: " << folder << "/" << name << ": its header line does not start with t (is " << folder
           << " the folder of an `mpm run`?)\n";
       return 2;
     }
@@ -124,8 +130,9 @@ inline int plot_command(const std::vector<std::string>& arguments, std::ostream&
       return 3;
     }
   }
-  const std::vector<std::string> pictures = observers.size() > 1 ? std::vector<std::string>{"observers.png", "energy.png"}
-                                                                  : std::vector<std::string>{"energy.png"};
+  std::vector<std::string> pictures;
+  if (observers.size() > 1) pictures.push_back("observers.png");
+  if (!energy.empty()) pictures.push_back("energy.png");
   for (const auto& picture : pictures) fs::remove(folder + "/" + picture, error);
   std::string quoted = "'";  // the folder in single quotes for the shell
   for (char character : folder) quoted += character == '\'' ? std::string("'\\''") : std::string(1, character);
@@ -155,6 +162,7 @@ TEST_CASE("mpm plot: the script draws each observer's column beside the exact on
   CHECK(script.find("'energy.csv' using 1:4 with lines lw 1.5 title 'total'") != std::string::npos);
   CHECK(script.find("'energy.csv' using 1:5 with lines lw 1.5 title 'momentum_x'") != std::string::npos);
   CHECK(plot_script({"t"}, {}, {"t", "kinetic"}).find("observers.png") == std::string::npos);
+  CHECK(plot_script({"t", "A.x"}, {}, {}).find("energy.png") == std::string::npos);  // no energy.csv, no energy.png
   std::ostringstream out, err;
   CHECK(plot_command({}, out, err) == 2);
   CHECK(plot_command({"/nonexistent/run"}, out, err) == 2);

@@ -86,6 +86,15 @@ class ElasticBar {
     return impedance() * (left_going(reference_position, time) - right_going(reference_position, time));
   }
 
+  /// The displacement since t = 0, \f$ u(X,t) = \int_0^t v(X,s)\,ds \f$ with v of Eq. (A.19):
+  /// \f[ u(X,t) = \frac1c\left[P(ct - X) - P(-X) + P(X + ct) - P(X)\right], \qquad P(y) = \int_0^y F, \f]
+  /// exact for the step profile F (P is piecewise linear, summed over whole periods of F).
+  double displacement(double reference_position, double time) const {
+    const double position = checked_position(reference_position), c = wave_speed();
+    return (profile_integral(c * time - position) - profile_integral(-position) + profile_integral(position + c * time) -
+            profile_integral(position)) / c;
+  }
+
  private:
   double length_;
   double young_modulus_;
@@ -94,6 +103,7 @@ class ElasticBar {
   double jump_tolerance_ = 0.0;           ///< distance (m) within which a point counts as sitting on a jump of F
   std::vector<double> jump_positions_;    ///< jumps of F over one period, sorted, first 0, last 4L
   std::vector<double> plateau_values_;    ///< F between jump_positions_[i] and jump_positions_[i+1]
+  std::vector<double> integral_to_jump_;  ///< \f$ \int_0^{y_i} F \f$ at each jump y_i of the period (last: the whole period)
 
   double period() const { return 4.0 * length_; }
 
@@ -179,6 +189,9 @@ class ElasticBar {
     plateau_values_.clear();
     for (std::size_t i = 0; i + 1 < jump_positions_.size(); ++i)
       plateau_values_.push_back(unfolded_left_going(0.5 * (jump_positions_[i] + jump_positions_[i + 1])));
+    integral_to_jump_.assign(1, 0.0);
+    for (std::size_t i = 0; i < plateau_values_.size(); ++i)
+      integral_to_jump_.push_back(integral_to_jump_.back() + plateau_values_[i] * (jump_positions_[i + 1] - jump_positions_[i]));
   }
 
   /// paper/06_exact_bar.md: at the jump number `index` of the period, the average of the one-sided limits
@@ -188,6 +201,18 @@ class ElasticBar {
     const double before = (index == 0) ? plateau_values_.back() : plateau_values_[index - 1];
     const double after = (index == last) ? plateau_values_.front() : plateau_values_[index];
     return 0.5 * (before + after);
+  }
+
+  /// \f$ P(y) = \int_0^y F(s)\,ds \f$ for any real y: whole periods (\f$ \int_0^{4L} F \f$ each) plus the plateaus
+  /// of the rest of a period, summed over the tabulated steps of F.
+  double profile_integral(double y) const {
+    auto within_period = [&](double upto) {  // \int_0^upto F, 0 <= upto <= 4L, from the integrals up to each jump
+      const auto above = std::upper_bound(jump_positions_.begin(), jump_positions_.end(), upto);
+      const std::size_t lower = std::min<std::size_t>(static_cast<std::size_t>(above - jump_positions_.begin()), plateau_values_.size()) - 1;
+      return integral_to_jump_[lower] + plateau_values_[lower] * (upto - jump_positions_[lower]);
+    };
+    const double periods = std::floor(y / period());
+    return periods * integral_to_jump_.back() + within_period(std::clamp(y - periods * period(), 0.0, period()));
   }
 
   /// paper/06_exact_bar.md: \f$ F(y) \f$ for any real y, using the period \f$ F(y + 4L) = F(y) \f$.
@@ -213,6 +238,33 @@ TEST_CASE("Eq. (A.6), Eq. (A.19): exact::ElasticBar: wave speed and impedance of
   CHECK(bar.wave_speed() == doctest::Approx(5053.02).epsilon(1e-6));  // sqrt(200e9 / 7833)
   CHECK(bar.impedance() == doctest::Approx(3.958e7).epsilon(1e-3));   // 7833 * 5053.02
   CHECK(bar.impedance() == doctest::Approx(7833.0 * bar.wave_speed()).epsilon(1e-14));
+}
+
+TEST_CASE("exact::ElasticBar: the displacement, by hand for the Dyka bar and as the integral of the velocity") {
+  // The Dyka bar (v0 = -5 m/s on [0, a], a = L/4): the free end moves at v0 until t = a/c, then rests until
+  // (2L - a)/c (the test below), so u(0, a/(2c)) = v0 a/(2c) and u(0, t) = v0 a/c for a/c < t < (2L - a)/c;
+  // then at -v0 until (2L + a)/c: u(0, 2L/c) = v0 a/c - v0 a/c = 0. The fixed end never moves.
+  const double length = 0.1333, quarter = length / 4.0, v0 = -5.0;
+  const ElasticBar bar(length, 200e9, 7833.0, {{0.0, quarter, v0, 0.0}});
+  const double c = bar.wave_speed();
+  CHECK(bar.displacement(0.0, 0.0) == 0.0);
+  CHECK(bar.displacement(0.0, 0.5 * quarter / c) == doctest::Approx(v0 * 0.5 * quarter / c).epsilon(1e-12));
+  CHECK(bar.displacement(0.0, length / c) == doctest::Approx(v0 * quarter / c).epsilon(1e-12));
+  CHECK(std::abs(bar.displacement(0.0, 2.0 * length / c)) <= 1e-12 * std::abs(v0) * quarter / c);
+  CHECK(std::abs(bar.displacement(length, 0.77e-4)) <= 1e-15);
+  // Messy data: (u(t + dt) - u(t - dt)) / 2dt = v wherever v is constant over [t - dt, t + dt] (F is a step
+  // function), checked at 200 points over three periods, including times beyond one period of F.
+  const ElasticBar messy(2.0, 3.0, 2.0, {{0.0, 0.3, 1.5, -2.0}, {0.5, 0.9, -0.7, 4.0}, {1.7, 2.0, -1.0, -3.0}});
+  const double dt = 1e-7;
+  int checked = 0;
+  for (int i = 1; i < 200; ++i) {
+    const double X = 0.37 + 0.001 * i, t = 3.0 * 4.0 * 2.0 / messy.wave_speed() * i / 200.0;
+    const double before = messy.velocity(X, t - dt), after = messy.velocity(X, t + dt);
+    if (before != after) continue;  // a front passes within dt
+    ++checked;
+    CHECK((messy.displacement(X, t + dt) - messy.displacement(X, t - dt)) / (2.0 * dt) == doctest::Approx(before).epsilon(1e-6).scale(1.0));
+  }
+  CHECK(checked > 150);
 }
 
 TEST_CASE("Eq. (A.19): exact::ElasticBar: boundary relations, v(L,t) = 0 and sigma(0,t) = 0, for any data and time") {

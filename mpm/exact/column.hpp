@@ -80,6 +80,29 @@ class SoilColumn {
     return (load / gravity_) * static_displacement(height_coordinate) + dynamic_part;
   }
 
+  /// The time derivative of Eq. (44), \f$ \dot g(t) = \tfrac12 g\,\Omega \sin\Omega t \f$ for \f$ 0 < t < T/2 \f$
+  /// (\f$ \Omega = 2\pi/T \f$), 0 otherwise.
+  double gravity_rate(double time) const {
+    if (time <= 0.0 || ramp_period_ <= 0.0 || time >= 0.5 * ramp_period_) return 0.0;
+    const double Omega = 2.0 * pi / ramp_period_;
+    return 0.5 * gravity_ * Omega * std::sin(Omega * time);
+  }
+
+  /// paper/07_exact_column.md: the velocity \f$ v = \partial u/\partial t \f$ of the mode-acceleration sum above,
+  /// \f[ v(y,t) = \frac{\dot g(t)}{g}\, u_{\mathrm{static}}(y)
+  ///     - \sum_{n=1}^{N} \frac{2}{H k_n} \left( \dot Y_n(t) - \frac{\dot g(t)}{\omega_n^2} \right) \sin(k_n y). \f]
+  double velocity(double y, double time) const {
+    const double height_coordinate = checked_height(y);
+    const double load_rate = gravity_rate(time);
+    double dynamic_part = 0.0;
+    for (int n = 1; n <= modes_; ++n) {
+      const double omega = angular_frequency(n), wavenumber_n = wavenumber(n);
+      dynamic_part += -(2.0 / (height_ * wavenumber_n)) * (modal_response_rate(n, time) - load_rate / (omega * omega)) *
+                      std::sin(wavenumber_n * height_coordinate);
+    }
+    return (load_rate / gravity_) * static_displacement(height_coordinate) + dynamic_part;
+  }
+
   /// paper/07_exact_column.md: \f$ \sigma_{yy}(y,t) = M \sum_n q_n(t)\, k_n \cos(k_n y) \f$, in mode-acceleration form
   /// \f[ \sigma_{yy}(y,t) = \frac{g(t)}{g}\, \sigma_{\mathrm{static}}(y)
   ///     - \frac{2M}{H} \sum_{n=1}^{N} \left( Y_n(t) - \frac{g(t)}{\omega_n^2} \right) \cos(k_n y). \f]
@@ -370,6 +393,22 @@ TEST_CASE("exact::SoilColumn: after the ramp u_top stays in [-0.5909, -0.5863] m
   CHECK(highest <= -0.5863);
   CHECK(lowest < -0.5900);   // and it does oscillate, by about +-2.3 mm (paper/07_exact_column.md)
   CHECK(highest > -0.5870);
+}
+
+TEST_CASE("exact::SoilColumn: the velocity is the time derivative of the displacement (central differences)") {
+  // The soil block (H = 10 m, M = 5 MPa, rho = 6000 kg/m^3, g = 9.81, T = 20 s), during and after the ramp,
+  // and under constant gravity (the top falls freely at first: v(H, t) = -g t while t < H/c = 0.35 s).
+  const SoilColumn column(10.0, 5e6, 6000.0, 9.81, 20.0), constant(10.0, 5e6, 6000.0, 9.81, 0.0);
+  const double dt = 1e-5;
+  for (double y : {2.0, 7.5, 10.0})
+    for (double t : {1.3, 6.0, 12.7, 17.1}) {
+      const double rate = (column.displacement(y, t + dt) - column.displacement(y, t - dt)) / (2.0 * dt);
+      CHECK(column.velocity(y, t) == doctest::Approx(rate).epsilon(1e-5).scale(1e-6));
+    }
+  CHECK(constant.velocity(10.0, 0.1) == doctest::Approx(-0.981).epsilon(1e-3));
+  CHECK(column.velocity(0.0, 5.0) == 0.0);  // the base is held
+  CHECK(column.gravity_rate(5.0) == doctest::Approx(0.5 * 9.81 * (3.14159265358979 / 10.0)).epsilon(1e-12));  // sin(pi/2) = 1
+  CHECK(column.gravity_rate(11.0) == 0.0);
 }
 
 TEST_CASE("exact::SoilColumn: free fall of the top before the base is felt") {

@@ -1,12 +1,12 @@
 /// \file
-/// Exact solution of the vibrating bar: the first mode of a linear elastic bar free at X = 0 and
+/// Exact solution of the vibrating bar: a mode (the first by default) of a linear elastic bar free at X = 0 and
 /// fixed at X = L, the smooth oracle of the smooth-data suite (verification/smooth_suite.cpp). It
 /// shares no code with the solver.
 ///
 /// The bar obeys the wave equation \f$ \rho\, u_{tt} = E\, u_{XX} \f$ in the reference coordinate X,
-/// with \f$ \sigma(0, t) = E u_X(0, t) = 0 \f$ (free end) and \f$ u(L, t) = 0 \f$ (fixed end). Its first
-/// mode has the wave number \f$ k = \pi / (2L) \f$ and the angular frequency \f$ \omega = c k \f$,
-/// \f$ c = \sqrt{E/\rho} \f$, so the period is \f$ T = 2\pi/\omega = 4L/c \f$. Started from rest
+/// with \f$ \sigma(0, t) = E u_X(0, t) = 0 \f$ (free end) and \f$ u(L, t) = 0 \f$ (fixed end). Its mode n
+/// has the wave number \f$ k = (2n - 1)\pi / (2L) \f$ and the angular frequency \f$ \omega = c k \f$,
+/// \f$ c = \sqrt{E/\rho} \f$, so the period is \f$ T = 2\pi/\omega = 4L/((2n - 1)c) \f$ (4L/c for the first). Started from rest
 /// (\f$ u = 0 \f$, \f$ \sigma = 0 \f$) with the velocity \f$ v(X, 0) = V \cos kX \f$:
 /// \f[ u = \frac{V}{\omega} \cos kX \,\sin\omega t, \qquad v = V \cos kX \,\cos\omega t, \qquad
 ///     \sigma = -Z V \sin kX \,\sin\omega t, \f]
@@ -23,31 +23,32 @@
 
 namespace mpm::exact {
 
-/// The first mode of the bar [0, L], free at X = 0, fixed at X = L, started with v = V cos(pi X / 2L).
+/// Mode n of the bar [0, L], free at X = 0, fixed at X = L, started with v = V cos((2n - 1) pi X / 2L).
 class VibratingBar {
  public:
-  /// length L (m), Young's modulus E (Pa), density rho (kg/m^3), velocity amplitude V (m/s).
-  VibratingBar(double length, double young_modulus, double density, double velocity_amplitude)
-      : length_(length), young_modulus_(young_modulus), density_(density), amplitude_(velocity_amplitude) {
-    if (!(length_ > 0.0) || !(young_modulus_ > 0.0) || !(density_ > 0.0) || !std::isfinite(amplitude_))
-      throw std::invalid_argument("VibratingBar: length, Young's modulus and density must be positive, V finite");
+  /// length L (m), Young's modulus E (Pa), density rho (kg/m^3), velocity amplitude V (m/s), mode n >= 1.
+  VibratingBar(double length, double young_modulus, double density, double velocity_amplitude, int mode = 1)
+      : length_(length), young_modulus_(young_modulus), density_(density), amplitude_(velocity_amplitude), mode_(mode) {
+    if (!(length_ > 0.0) || !(young_modulus_ > 0.0) || !(density_ > 0.0) || !std::isfinite(amplitude_) || mode_ < 1)
+      throw std::invalid_argument("VibratingBar: length, Young's modulus and density must be positive, V finite, mode >= 1");
   }
 
   double length() const { return length_; }
   double velocity_amplitude() const { return amplitude_; }
   /// \f$ c = \sqrt{E/\rho} \f$
   double wave_speed() const { return std::sqrt(young_modulus_ / density_); }
-  /// \f$ k = \pi / (2L) \f$
-  double wave_number() const { return 0.5 * pi / length_; }
+  int mode() const { return mode_; }
+  /// \f$ k = (2n - 1)\pi / (2L) \f$
+  double wave_number() const { return (2.0 * mode_ - 1.0) * 0.5 * pi / length_; }
   /// \f$ \omega = c k \f$
   double angular_frequency() const { return wave_speed() * wave_number(); }
-  /// \f$ T = 2\pi/\omega = 4L/c \f$
-  double period() const { return 4.0 * length_ / wave_speed(); }
+  /// \f$ T = 2\pi/\omega = 4L/((2n - 1)c) \f$
+  double period() const { return 4.0 * length_ / ((2.0 * mode_ - 1.0) * wave_speed()); }
   /// \f$ Z = \rho c \f$: the stress amplitude is Z V.
   double impedance() const { return density_ * wave_speed(); }
   /// \f$ U = V/\omega \f$, the largest displacement (at the free end).
   double displacement_amplitude() const { return amplitude_ / angular_frequency(); }
-  /// \f$ \rho V^2 L / 4 \f$, the kinetic plus strain energy per unit area, J/m^2.
+  /// \f$ \rho V^2 L / 4 \f$, the kinetic plus strain energy per unit area, J/m^2 (any mode: \f$ \sin 2kL = 0 \f$).
   double energy() const { return 0.25 * density_ * amplitude_ * amplitude_ * length_; }
 
   /// \f$ u(X, t) = (V/\omega) \cos kX \sin\omega t \f$, m.
@@ -66,6 +67,7 @@ class VibratingBar {
  private:
   static constexpr double pi = 3.14159265358979323846;
   double length_, young_modulus_, density_, amplitude_;
+  int mode_;
 
   double checked(double x) const {
     if (!(x >= -1e-12 * length_ && x <= length_ * (1.0 + 1e-12)))
@@ -98,6 +100,20 @@ TEST_CASE("exact::VibratingBar: period, amplitudes and values derived by hand") 
   CHECK(bar.velocity(0.0, 0.5 * bar.period()) == doctest::Approx(-5.0).epsilon(1e-14));
   CHECK_THROWS_AS(bar.velocity(0.2, 0.0), std::domain_error);
   CHECK_THROWS_AS(VibratingBar(0.1333, -1.0, 7833.0, 5.0), std::invalid_argument);
+}
+
+TEST_CASE("exact::VibratingBar: the second mode, by hand") {
+  // n = 2: k = 3 pi / (2L), omega = 3 pi c / (2L), T = 4L / (3c). At X = L/9, t = T/8: kX = pi/6, omega t = pi/4,
+  // v = V (sqrt 3 / 2)(sqrt 2 / 2); at X = L/3 (kX = pi/2, a node of v), sigma = -Z V sin(pi/4) at t = T/8.
+  const double L = 0.1333, c = std::sqrt(200e9 / 7833.0);
+  const VibratingBar bar(L, 200e9, 7833.0, 5.0, 2);
+  CHECK(bar.period() == doctest::Approx(4.0 * L / (3.0 * c)).epsilon(1e-14));
+  const double t = bar.period() / 8.0;
+  CHECK(bar.velocity(L / 9.0, t) == doctest::Approx(5.0 * std::sqrt(6.0) / 4.0).epsilon(1e-12));
+  CHECK(std::abs(bar.velocity(L / 3.0, t)) <= 1e-12 * 5.0);
+  CHECK(bar.stress(L / 3.0, t) == doctest::Approx(-bar.impedance() * 5.0 * std::sqrt(0.5)).epsilon(1e-12));
+  CHECK(std::abs(bar.velocity(L, t)) <= 1e-12 * 5.0);  // still fixed at X = L: cos(3 pi / 2) = 0
+  CHECK_THROWS_AS(VibratingBar(L, 200e9, 7833.0, 5.0, 0), std::invalid_argument);
 }
 
 TEST_CASE("exact::VibratingBar: wave equation, v = u_t and sigma = E u_X by finite differences; free and fixed ends") {

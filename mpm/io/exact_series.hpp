@@ -1,8 +1,10 @@
 /// \file
-/// exact.csv: the exact solution the scene names (`exact = "dyka_bar"` or `"soil_column"`), at each
-/// observer's reference position and at every sample time, beside observers.csv:
-///   dyka_bar     t, then per observer NAME.v_x, NAME.sigma_xx   (paper/06_exact_bar.md, mpm/exact/bar.hpp)
-///   soil_column  t, then per observer NAME.y, NAME.sigma_yy     (paper/07_exact_column.md, mpm/exact/column.hpp)
+/// exact.csv: the exact solution the scene names (its `exact` key, mpm/io/exact_solution.hpp), small strain,
+/// at the material point each observer names (its `position`, a reference position; the observed particle is
+/// the one nearest it, whose own reference position run.json gives) and at every sample time, beside observers.csv:
+///   dyka_bar, vibrating_bar  t, then per observer NAME.v_x, NAME.sigma_xx   (paper/06_exact_bar.md, mpm/exact/bar.hpp)
+///   soil_column              t, then per observer NAME.y, NAME.sigma_yy     (paper/07_exact_column.md, mpm/exact/column.hpp)
+///   manufactured_*           t, then per observer NAME.v_x, NAME.v_y, NAME.sigma_xx, NAME.sigma_yy, NAME.sigma_xy
 /// The columns carry observers.csv's names, so `mpm plot` draws each beside its computed series.
 /// The exact solutions take their parameters from the scene and the initial particles, never from
 /// the solver's state during the run.
@@ -18,7 +20,7 @@
 #include <vector>
 
 #include "mpm/exact/bar.hpp"
-#include "mpm/exact/column.hpp"
+#include "mpm/io/exact_solution.hpp"
 #include "mpm/io/run_writer.hpp"
 #include "mpm/io/scene.hpp"
 #include "mpm/simulation.hpp"
@@ -51,36 +53,37 @@ std::vector<exact::BarPiece> bar_pieces(const Scene& scene, const Particles<Dim>
 template <int Dim>
 class ExactWriter : public Monitor<Dim> {
  public:
-  ExactWriter(const std::string& folder, const Scene& scene, const Particles<Dim>& initial,
-              const std::vector<int>& observed, Monitor<Dim>& next)
-      : scene_(scene), next_(next) {
+  ExactWriter(const std::string& folder, const Scene& scene, const Particles<Dim>& initial, Monitor<Dim>& next) : next_(next) {
     if (scene.exact == "none") return;
-    for (int p : observed) reference_.push_back(initial.reference_position[p] - to_origin(scene));
-    if (scene.exact == "dyka_bar")
-      bar_ = std::make_unique<exact::ElasticBar>(scene.length[0], scene.young_modulus, scene.density, bar_pieces(scene, initial));
-    else
-      column_ = std::make_unique<exact::SoilColumn>(scene.length[Dim - 1], constrained_modulus(scene), scene.density,
-                                                    -scene.gravity[Dim - 1], scene.ramp_period);
+    for (const auto& observer : scene.observers) reference_.push_back(observer.position);  // the material point named
+    std::optional<std::vector<exact::BarPiece>> pieces;
+    if (scene.exact == "dyka_bar") pieces = bar_pieces(scene, initial);
+    solution_ = std::make_unique<SceneExactSolution>(scene, StrainMeasure::small, std::vector<double>{}, pieces);
+    columns_ = exact_columns(scene.exact);
     path_ = folder + "/exact.csv";
     out_.open(path_);
     check_written(out_, path_);
     out_ << std::setprecision(12) << "t";
     for (const auto& observer : scene.observers)
-      out_ << "," << observer.name << (bar_ ? ".v_x," : ".y,") << observer.name << (bar_ ? ".sigma_xx" : ".sigma_yy");
+      for (const auto& column : columns_) out_ << "," << observer.name << "." << column;
     out_ << "\n";
+  }
+
+  /// The columns per observer: dyka_bar and vibrating_bar v_x, sigma_xx; soil_column y (the current
+  /// height, beside observers.csv's NAME.y), sigma_yy; the manufactured solutions v and sigma.
+  static std::vector<std::string> exact_columns(const std::string& exact) {
+    if (exact == "soil_column") return {"y", "sigma_yy"};
+    if (exact == "dyka_bar" || exact == "vibrating_bar") return {"v_x", "sigma_xx"};
+    return {"v_x", "v_y", "sigma_xx", "sigma_yy", "sigma_xy"};
   }
 
   void sample(long step, double time, const Particles<Dim>& particles, const Balances<Dim>& balances) override {
     if (out_.is_open()) {
       out_ << time;
-      for (const Vector<Dim>& X : reference_) {
-        if (bar_) {
-          out_ << "," << bar_->velocity(X[0], time) + 0.0 << "," << bar_->stress(X[0], time) + 0.0;  // + 0.0: no -0
-        } else {
-          const double height = X[Dim - 1];
-          out_ << "," << scene_.origin[Dim - 1] + height + column_->displacement(height, time) << ","
-               << column_->stress(height, time);
-        }
+      for (const auto& point : reference_) {
+        const ExactState state = solution_->at(point, time);
+        for (const auto& column : columns_)
+          out_ << "," << (column == "y" ? point[Dim - 1] + state.u_y : state.quantity(column));
       }
       out_ << "\n";
       check_written(out_, path_);
@@ -95,24 +98,11 @@ class ExactWriter : public Monitor<Dim> {
   void snapshot(int index, double time, const Particles<Dim>& particles) override { next_.snapshot(index, time, particles); }
   void progress(double time, double end_time) override { next_.progress(time, end_time); }
 
-  /// paper/07_exact_column.md: the constrained modulus of a laterally confined column, M = E(1-nu)/((1+nu)(1-2nu)).
-  static double constrained_modulus(const Scene& scene) {
-    const double nu = scene.poisson_ratio;
-    return scene.young_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
-  }
-
  private:
-  static Vector<Dim> to_origin(const Scene& scene) {
-    Vector<Dim> origin;
-    for (int axis = 0; axis < Dim; ++axis) origin[axis] = scene.origin[axis];
-    return origin;
-  }
-
-  const Scene& scene_;
   Monitor<Dim>& next_;
-  std::vector<Vector<Dim>> reference_;  ///< each observed particle's X, from the scene's origin
-  std::unique_ptr<exact::ElasticBar> bar_;
-  std::unique_ptr<exact::SoilColumn> column_;
+  std::vector<std::vector<double>> reference_;  ///< each observer's material point X, in the scene's coordinates
+  std::unique_ptr<SceneExactSolution> solution_;
+  std::vector<std::string> columns_;
   std::ofstream out_;
   std::string path_;
 };

@@ -9,18 +9,25 @@
 /// and shows progress on stderr when stderr is a terminal. Every stream is checked: a file that
 /// cannot be opened or written (no permission, disk full) raises OutputFailure naming it.
 #pragma once
+#include <doctest/doctest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <filesystem>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mpm/io/scene.hpp"
+#include "mpm/io/scene_keys.hpp"
 #include "mpm/io/scene_resolved.hpp"
 #include "mpm/io/vtk_collection.hpp"
 #include "mpm/simulation.hpp"
@@ -161,13 +168,91 @@ class RunWriter : public Monitor<Dim> {
   std::chrono::steady_clock::time_point last_progress_{};
 };
 
-/// run.json: the resolved scene (every key, defaults filled in), the step statistics, the speed and, for LME, Newton statistics.
-/// \throws OutputFailure if it cannot be written.
+/// The particle an observer follows: the one nearest its material point at t = 0.
+struct ObservedParticle {
+  std::string name;
+  int particle = 0;                       ///< the particle's id (snapshot_NNNN.csv's id)
+  std::vector<double> reference_position;  ///< the particle's X (m); its current x is in observers.csv
+};
+
+/// Who wrote a run and what it followed: the program's version (git at build time, mpm/cli/version.cmake),
+/// its command line, and the particle of each observer.
+struct RunIdentity {
+  std::string version = "unknown";
+  std::vector<std::string> command_line;
+  std::vector<ObservedParticle> observed;
+};
+
+/// `text` as a JSON string, quoted and escaped.
+inline std::string json_string(const std::string& text) {
+  std::string json = "\"";
+  for (unsigned char character : text) {
+    if (character == '"' || character == '\\') json += std::string("\\") + static_cast<char>(character);
+    else if (character == '\n') json += "\\n";
+    else if (character < 0x20 || character == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", character);
+      json += escaped;
+    } else json += static_cast<char>(character);
+  }
+  return json + "\"";
+}
+
+/// The unit of every column of the CSV files a run writes (NAME: any observer's name), SI. Energies and
+/// momentum are per unit cross-section area in 1D (the bar) and per unit thickness in 2D (plane strain).
+inline std::vector<std::pair<std::string, std::string>> column_units(int dimension) {
+  const bool two = dimension == 2;
+  std::vector<std::pair<std::string, std::string>> units{
+      {"observers.csv:t", "s"}, {"observers.csv:NAME.x", "m"}, {"observers.csv:NAME.v_x", "m/s"}, {"observers.csv:NAME.sigma_xx", "Pa"}};
+  if (two)
+    units.insert(units.end(), {{"observers.csv:NAME.y", "m"}, {"observers.csv:NAME.v_y", "m/s"}, {"observers.csv:NAME.sigma_yy", "Pa"},
+                               {"observers.csv:NAME.sigma_xy", "Pa"}});
+  const std::string energy = two ? "J/m" : "J/m^2", momentum = two ? "kg/s" : "kg/(m s)";
+  units.insert(units.end(), {{"energy.csv:t", "s"}, {"energy.csv:kinetic", energy}, {"energy.csv:strain", energy},
+                             {"energy.csv:total", energy}, {"energy.csv:momentum_x", momentum}});
+  if (two) units.push_back({"energy.csv:momentum_y", momentum});
+  units.insert(units.end(), {{"exact.csv:t", "s"}, {"exact.csv:NAME.v_x", "m/s"}, {"exact.csv:NAME.sigma_xx", "Pa"}});
+  if (two)
+    units.insert(units.end(), {{"exact.csv:NAME.y", "m"}, {"exact.csv:NAME.v_y", "m/s"}, {"exact.csv:NAME.sigma_yy", "Pa"},
+                               {"exact.csv:NAME.sigma_xy", "Pa"}});
+  units.insert(units.end(), {{"snapshot_NNNN.csv:id", "-"}, {"snapshot_NNNN.csv:x", "m"}, {"snapshot_NNNN.csv:v_x", "m/s"},
+                             {"snapshot_NNNN.csv:sigma_xx", "Pa"}});
+  if (two)
+    units.insert(units.end(), {{"snapshot_NNNN.csv:y", "m"}, {"snapshot_NNNN.csv:v_y", "m/s"}, {"snapshot_NNNN.csv:sigma_yy", "Pa"},
+                               {"snapshot_NNNN.csv:sigma_xy", "Pa"}, {"snapshot_NNNN.csv:sigma_zz", "Pa"}});
+  units.push_back({"snapshot_NNNN.csv:density", "kg/m^3"});
+  return units;
+}
+
+/// The unit of every field of run.json but the scene (whose keys' units are "scene_units").
+inline const std::vector<std::pair<std::string, std::string>>& run_json_units() {
+  static const std::vector<std::pair<std::string, std::string>> units{
+      {"status", "-"}, {"version", "-"}, {"command_line", "-"}, {"observed", "reference_position: m"}, {"particles", "-"}, {"steps", "-"}, {"final_time", "s"},
+      {"smallest_time_step", "s"}, {"largest_time_step", "s"}, {"wall_seconds", "s"}, {"particle_steps_per_second", "1/s"},
+      {"largest_mass_error", "- (relative)"}, {"neighbours_mean", "nodes"}, {"neighbours_max", "nodes"},
+      {"newton_iterations_mean", "-"}, {"newton_iterations_max", "-"}, {"threads", "-"}, {"phase_seconds", "s"}};
+  return units;
+}
+
+/// run.json: the version and command line, the resolved scene, the run's numbers, and the unit of each
+/// (its fields, the scene's keys, the CSV files' columns). \throws OutputFailure if it cannot be written.
 inline void write_run_json(const std::string& path, const Scene& scene, const RunSummary& summary,
-                           const std::string& status, int particle_count) {
+                           const std::string& status, int particle_count, const RunIdentity& identity = {}) {
   std::ofstream out(path);
   out << std::setprecision(12) << "{\n"
-      << "  \"status\": \"" << status << "\",\n"
+      << "  \"status\": " << json_string(status) << ",\n"
+      << "  \"version\": " << json_string(identity.version) << ",\n"
+      << "  \"command_line\": [";
+  for (size_t k = 0; k < identity.command_line.size(); ++k) out << (k ? ", " : "") << json_string(identity.command_line[k]);
+  out << "],\n  \"observed\": [";
+  for (size_t k = 0; k < identity.observed.size(); ++k) {
+    const ObservedParticle& observed = identity.observed[k];
+    out << (k ? ", " : "") << "{\"name\": " << json_string(observed.name) << ", \"particle\": " << observed.particle
+        << ", \"reference_position\": [";
+    for (size_t axis = 0; axis < observed.reference_position.size(); ++axis) out << (axis ? ", " : "") << observed.reference_position[axis];
+    out << "]}";
+  }
+  out << "],\n"
       << "  \"scene\": " << resolved_json(scene) << ",\n"
       << "  \"particles\": " << particle_count << ",\n"
       << "  \"steps\": " << summary.steps << ",\n"
@@ -185,9 +270,47 @@ inline void write_run_json(const std::string& path, const Scene& scene, const Ru
       << "  \"phase_seconds\": {";
   for (int phase = 0; phase < phase_count; ++phase)
     out << (phase ? ", " : "") << "\"" << phase_name(phase) << "\": " << summary.phase_seconds[phase];
+  out << "},\n  \"units\": {";
+  for (size_t k = 0; k < run_json_units().size(); ++k)
+    out << (k ? ", " : "") << json_string(run_json_units()[k].first) << ": " << json_string(run_json_units()[k].second);
+  out << "},\n  \"scene_units\": {";
+  for (size_t k = 0; k < scene_keys().size(); ++k)
+    out << (k ? ", " : "") << json_string(scene_keys()[k].key) << ": " << json_string(scene_keys()[k].unit);
+  out << "},\n  \"column_units\": {";
+  const auto columns = column_units(scene.dimension);
+  for (size_t k = 0; k < columns.size(); ++k) out << (k ? ", " : "") << json_string(columns[k].first) << ": " << json_string(columns[k].second);
   out << "}\n"
       << "}\n";
   close_checked(out, path);
+}
+
+TEST_CASE("run.json: strings escaped; every field written has its unit") {
+  CHECK(json_string("failed: \"x\"\n\\") == "\"failed: \\\"x\\\"\\n\\\\\"");
+  CHECK(json_string(std::string("a\tb")) == "\"a\\u0009b\"");
+  const std::string path = (std::filesystem::temp_directory_path() / ("mpm_run_json_" + std::to_string(getpid()) + ".json")).string();
+  Scene scene;
+  scene.dimension = 2;
+  write_run_json(path, scene, RunSummary{}, "done", 3, {"1.2.3", {"mpm", "run", "it's \"here\""}, {{"A", 7, {0.5, 1.5}}}});
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::remove(path.c_str());
+  CHECK(text.find("\"version\": \"1.2.3\"") != std::string::npos);
+  CHECK(text.find("\"observed\": [{\"name\": \"A\", \"particle\": 7, \"reference_position\": [0.5, 1.5]}]") != std::string::npos);
+  CHECK(text.find("\"command_line\": [\"mpm\", \"run\", \"it's \\\"here\\\"\"]") != std::string::npos);
+  // every top-level field of run.json (a line `  "name": `) but the unit tables and the scene is in run_json_units
+  std::istringstream lines(text);
+  int fields = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("  \"", 0) != 0) continue;
+    const std::string name = line.substr(3, line.find('"', 3) - 3);
+    if (name == "scene" || name == "units" || name == "scene_units" || name == "column_units") continue;
+    ++fields;
+    CAPTURE(name);
+    CHECK(std::any_of(run_json_units().begin(), run_json_units().end(), [&](const auto& unit) { return unit.first == name; }));
+  }
+  CHECK(fields == static_cast<int>(run_json_units().size()));
+  CHECK(text.find("\"energy.csv:kinetic\": \"J/m\"") != std::string::npos);  // 2D: per unit thickness
+  CHECK(text.find("\"grid.length\": \"m\"") != std::string::npos);
 }
 
 }  // namespace mpm::io

@@ -7,13 +7,17 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "mpm/io/scene_file.hpp"
+#include "mpm/io/particle_file.hpp"
 #include "mpm/io/scene_formulas.hpp"
+#include "mpm/particles/seeding.hpp"
 #include "mpm/simulation.hpp"
 
 namespace mpm::io {
@@ -22,7 +26,20 @@ struct BodySettings {
   std::vector<double> min, max, velocity;
   std::vector<int> particles_per_cell;
   std::string placement = "uniform";
+  std::string shape = "box";                      ///< box | ellipse | polygon (mpm/particles/body_shape.hpp) | file
+  std::vector<std::array<double, 2>> vertices;    ///< polygon only, m
+  std::string file;                               ///< file only: the CSV as given (mpm/io/particle_file.hpp)
+  std::vector<FileParticle> particles;            ///< file only: its particles, read and checked with the scene
 };
+
+/// The body's shape, for seeding (mpm/particles/body_shape.hpp).
+inline BodyShape body_shape(const BodySettings& body) {
+  BodyShape shape;
+  shape.kind = body.shape == "ellipse" ? BodyShape::Kind::ellipse : body.shape == "polygon" ? BodyShape::Kind::polygon : BodyShape::Kind::box;
+  for (size_t axis = 0; axis < body.min.size(); ++axis) shape.min[axis] = body.min[axis], shape.max[axis] = body.max[axis];
+  shape.vertices = body.vertices;
+  return shape;
+}
 struct VelocityBox {
   std::vector<double> min, max, velocity;
 };
@@ -31,6 +48,8 @@ struct FixedSettings {
   bool upper = false;
   std::vector<int> components;
 };
+/// An observer names a material point by its reference position: the particle nearest it at t = 0 is
+/// observed (observers.csv), and the scene's exact solution is evaluated at the point itself (exact.csv).
 struct ObserverSettings {
   std::string name;
   std::vector<double> position;
@@ -65,8 +84,13 @@ struct Scene {
   std::vector<ObserverSettings> observers;
   // [constants], [initial_field], [body_force] (io/scene_formulas.hpp)
   SceneFormulas formulas;
-  /// exact solution written beside the observers (exact.csv): "none", "dyka_bar" or "soil_column"
+  /// exact solution written beside the observers (exact.csv) and evaluated by `mpm exact` and `mpm compare`:
+  /// "none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small" or "manufactured_large"
   std::string exact = "none";
+  // [exact_parameters]
+  int exact_mode = 1;                                 ///< vibrating_bar: mode n
+  std::optional<double> exact_velocity_amplitude;     ///< vibrating_bar: V, m/s
+  std::vector<double> exact_displacement_amplitude;   ///< manufactured_small: [A]; manufactured_large: [a_x, a_y], m
   /// the resolved scene (file plus overrides) as JSON, for run.json
   std::string resolved_json;
 };
@@ -105,6 +129,86 @@ inline const toml::table& table_or_empty(const SceneFile& file, SceneReader& roo
 inline bool on_grid_line(double value, double origin, double spacing) {
   const double cells = (value - origin) / spacing;
   return std::abs(cells - std::round(cells)) < 1e-6;
+}
+
+/// A key of numbers, each a number or a formula of the scene's constants in quotes ("V", "0.05 * L"):
+/// `key = 1.5`, `key = "V"` or `key = [1.5, "a"]`. \throws SceneError naming the key.
+inline std::vector<double> constant_or_formula(SceneReader& reader, const std::string& key,
+                                               const std::map<std::string, double>& constants) {
+  std::vector<const toml::node*> entries;
+  const toml::node* node = reader.node(key);
+  if (const toml::array* array = node->as_array()) {
+    if (array->empty() || array->size() > 2) reader.fail(key, "give one or two values");
+    for (const auto& entry : *array) entries.push_back(&entry);
+  } else {
+    entries.push_back(node);
+  }
+  std::vector<double> values;
+  const FormulaVariables none{0, false};
+  for (const toml::node* entry : entries) {
+    double value = 0.0;
+    if (entry->is_floating_point() || entry->is_integer()) {
+      value = *entry->value<double>();
+    } else if (entry->is_string()) {
+      const std::string text = *entry->value<std::string>();
+      try {
+        value = Formula(text, constants, none)(nullptr, nullptr, 0.0);
+      } catch (const mu::Parser::exception_type& error) {
+        reader.fail(key, formula_problem(error, text, constants, none));
+      }
+    } else {
+      reader.fail(key, "must be a number or a formula of the constants in quotes");
+    }
+    if (!std::isfinite(value)) reader.fail(key, "must be finite, got " + SceneReader::describe(value));
+    values.push_back(value);
+  }
+  return values;
+}
+
+/// Bodies may not overlap: a particle of one may not lie in another (its box cut by its shape). Boxes whose
+/// interiors meet overlap; where a shape cuts one of them, the particles of the second body in the common
+/// box are tested against the first (at most 4e6 of them: beyond, the boxes must be apart).
+/// \throws SceneError at the second body's min, naming the first body and its line.
+inline void check_bodies_apart(const SceneFile& file, const Scene& scene) {
+  const int dim = scene.dimension;
+  const toml::array* tables = file.table["body"].as_array();
+  auto where_is_body = [&](size_t k) {  // FILE:LINE of body k, or the --set that gave it
+    for (const std::string& key : {"body[" + std::to_string(k) + "]", std::string("body")})
+      if (auto given = file.overridden.find(key); given != file.overridden.end()) return given->second + ":1";
+    return file.path + ":" + std::to_string(tables && k < tables->size() ? line_of(*tables->get(k)) : 0);
+  };
+  for (size_t j = 1; j < scene.bodies.size(); ++j)
+    for (size_t i = 0; i < j; ++i) {
+      const BodySettings &first = scene.bodies[i], &second = scene.bodies[j];
+      Vector<2> lower = Vector<2>::Zero(), upper = Vector<2>::Zero();
+      double seeds = 1.0;
+      bool apart = false;
+      for (int axis = 0; axis < dim; ++axis) {
+        lower[axis] = std::max(first.min[axis], second.min[axis]), upper[axis] = std::min(first.max[axis], second.max[axis]);
+        apart = apart || upper[axis] - lower[axis] < 0.5 * scene.spacing;  // both on grid lines: apart, or a cell in common
+        seeds *= (upper[axis] - lower[axis]) / scene.spacing * second.particles_per_cell[axis];
+      }
+      if (apart) continue;
+      bool overlap = (first.shape == "box" && second.shape == "box") || first.shape == "file" || second.shape == "file";
+      if (!overlap && seeds > 4e6) overlap = true;
+      if (!overlap) {
+        const BodyShape shape_first = body_shape(first), shape_second = body_shape(second);
+        auto visit = [&](const auto& x) {
+          overlap = shape_second.holds(x[0], x[dim - 1]) && shape_first.holds(x[0], x[dim - 1]);
+          return !overlap;
+        };
+        Vector<2> origin(scene.origin[0], dim == 2 ? scene.origin[1] : 0.0);
+        std::array<int, 2> ppc{second.particles_per_cell[0], second.particles_per_cell[dim - 1]};
+        const Placement placement = second.placement == "gauss" ? Placement::gauss : Placement::uniform;
+        if (dim == 2) for_each_seed<2>(origin, scene.spacing, lower, upper, ppc, placement, visit);
+        else for_each_seed<1>(Vector<1>(origin[0]), scene.spacing, Vector<1>(lower[0]), Vector<1>(upper[0]), {ppc[0]}, placement, visit);
+      }
+      if (overlap) {
+        SceneReader reader(file, *tables->get(j)->as_table(), "body[" + std::to_string(j) + "]");
+        reader.fail("min", "overlaps body[" + std::to_string(i) + "] (" + where_is_body(i) +
+                               "): a particle of one would lie in the other; move them apart (their boxes may touch)");
+      }
+    }
 }
 
 }  // namespace detail
@@ -176,9 +280,53 @@ inline Scene read_scene(const SceneFile& file) {
     if (body.placement == "gauss")
       for (int ppc : body.particles_per_cell)
         if (ppc != 2) reader.fail("placement", "'gauss' needs particles_per_cell = 2 on every axis");
+    body.shape = reader.text("shape", {"box", "ellipse", "polygon", "file"}, std::string("box"));
+    if (dim == 1 && (body.shape == "ellipse" || body.shape == "polygon"))
+      reader.fail("shape", "a 1D body is a box or a file (ellipse and polygon are 2D shapes)");
+    if (reader.has("file")) {
+      body.file = reader.any_text("file", "");
+      if (body.shape != "file") reader.fail("file", "only a body of shape = \"file\" reads a particle file");
+      namespace fs = std::filesystem;
+      const fs::path path = fs::path(body.file).is_absolute() ? fs::path(body.file) : fs::path(file.path).parent_path() / body.file;
+      std::string problem;
+      body.particles = read_particle_file(path.string(), dim, scene.density, body.velocity, problem);
+      if (!problem.empty()) reader.fail("file", problem);
+      for (size_t p = 0; p < body.particles.size(); ++p) {
+        const double position[2] = {body.particles[p].x, body.particles[p].y};
+        for (int axis = 0; axis < dim; ++axis)
+          if (position[axis] < body.min[axis] || position[axis] > body.max[axis])
+            reader.fail("file", path.string() + ": particle " + std::to_string(p + 1) + " lies outside the body's box [min, max] on " +
+                                    axes[axis] + ": the box must hold the file's particles");
+      }
+    } else if (body.shape == "file") {
+      reader.fail("file", "missing; a body of shape = \"file\" reads its particles from a CSV file (x[,y],volume|mass[,v_x[,v_y]])");
+    }
+    if (const toml::node* node = reader.node("vertices")) {
+      if (body.shape != "polygon") reader.fail("vertices", "only a body of shape = \"polygon\" has vertices");
+      const toml::array* list = node->as_array();
+      if (!list || list->size() < 3 || list->size() > 10000)
+        reader.fail("vertices", "must be an array of 3 to 10000 points [x, y], e.g. [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]");
+      for (const auto& entry : *list) {
+        const toml::array* point = entry.as_array();
+        std::array<double, 2> vertex{};
+        for (int axis = 0; axis < 2; ++axis) {
+          const toml::node* coordinate = point && point->size() == 2 ? point->get(axis) : nullptr;
+          if (!coordinate || !coordinate->is_number() || !std::isfinite(*coordinate->value<double>()))
+            reader.fail("vertices", "every vertex is a point [x, y] of two finite numbers (m)");
+          vertex[axis] = *coordinate->value<double>();
+          if (vertex[axis] < body.min[axis] - 1e-9 * scene.spacing || vertex[axis] > body.max[axis] + 1e-9 * scene.spacing)
+            reader.fail("vertices", "vertex " + std::to_string(body.vertices.size()) + " lies outside the body's box [min, max]: "
+                                    "the box is the cells seeded, the polygon the part kept");
+        }
+        body.vertices.push_back(vertex);
+      }
+    } else if (body.shape == "polygon") {
+      reader.fail("vertices", "missing; a polygon needs its vertices, [[x, y], ...] (m)");
+    }
     scene.bodies.push_back(body);
   });
   if (scene.bodies.empty()) root.fail("body", "the scene needs at least one [[body]]");
+  detail::check_bodies_apart(file, scene);
   each_table(file, root, "initial_velocity", [&](SceneReader& reader) {
     scene.initial_velocities.push_back({reader.numbers("min", dim), reader.numbers("max", dim), reader.numbers("velocity", dim)});
   });
@@ -240,9 +388,19 @@ inline Scene read_scene(const SceneFile& file) {
     if (scene.control.energy_growth_limit < 0.0) solver.fail("energy_growth_limit", "must be >= 0 (0: no check)");
     solver.reject_unknown_keys();
   }
+  scene.exact = root.text("exact", {"none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"},
+                          std::string("none"));
   each_table(file, root, "observer", [&](SceneReader& reader) {
     ObserverSettings observer{reader.any_text("name", ""), reader.numbers("position", dim)};
     inside_grid(reader, "position", observer.position, false);
+    // The observer names a material point by its reference position: exact.csv is evaluated there, so it
+    // must be a point of the body the exact solution holds for, [origin, origin + length].
+    for (int axis = 0; scene.exact != "none" && axis < dim; ++axis)
+      if (observer.position[axis] < scene.origin[axis] - 1e-9 * scene.spacing ||
+          observer.position[axis] > scene.origin[axis] + scene.length[axis] + 1e-9 * scene.spacing)
+        reader.fail("position", "lies outside the body [" + SceneReader::describe(scene.origin[axis]) + ", " +
+                                    SceneReader::describe(scene.origin[axis] + scene.length[axis]) + "] on " + axes[axis] +
+                                    ", where exact = \"" + scene.exact + "\" is evaluated for exact.csv");
     if (observer.name.empty() || observer.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
       reader.fail("name", "required; letters, digits and _ only (it names CSV columns)");
     for (const auto& other : scene.observers)
@@ -256,10 +414,25 @@ inline Scene read_scene(const SceneFile& file) {
     if (scene.control.snapshot_times.size() > 10'000) output.fail("snapshots", "at most 10000 times");
     for (double time : scene.control.snapshot_times)
       if (time < 0.0 || time > scene.control.end_time) output.fail("snapshots", "times must lie in [0, solver.end_time]");
+    scene.control.sample_times = output.numbers("times", -1, std::vector<double>{});
+    if (scene.control.sample_times.size() > 1'000'000) output.fail("times", "at most 1000000 times");
+    for (size_t k = 0; k < scene.control.sample_times.size(); ++k) {
+      const double time = scene.control.sample_times[k];
+      if (time < 0.0 || time > scene.control.end_time) output.fail("times", "times must lie in [0, solver.end_time]");
+      if (k > 0 && !(time > scene.control.sample_times[k - 1])) output.fail("times", "times must increase");
+    }
+    if (!scene.control.sample_times.empty() && scene.control.sample_every != 1)
+      output.fail("every", "give output.every or output.times, not both (times replaces every)");
     output.reject_unknown_keys();
   }
   scene.formulas = read_scene_formulas(file, root, dim, scene.young_modulus, scene.poisson_ratio, scene.density);
-  scene.exact = root.text("exact", {"none", "dyka_bar", "soil_column"}, std::string("none"));
+  SceneReader parameters(file, detail::table_or_empty(file, root, "exact_parameters", false), "exact_parameters");
+  scene.exact_mode = parameters.integer("mode", 1, 1, 1000);
+  if (parameters.has("velocity_amplitude"))
+    scene.exact_velocity_amplitude = detail::constant_or_formula(parameters, "velocity_amplitude", scene.formulas.constants).at(0);
+  if (parameters.has("displacement_amplitude"))
+    scene.exact_displacement_amplitude = detail::constant_or_formula(parameters, "displacement_amplitude", scene.formulas.constants);
+  parameters.reject_unknown_keys();
   auto has_fixed = [&](int axis, bool upper, int component) {
     for (const auto& fixed : scene.fixed)
       if (fixed.axis == axis && fixed.upper == upper &&
@@ -269,7 +442,7 @@ inline Scene read_scene(const SceneFile& file) {
   };
   // The exact solutions hold for one body filling the box [origin, origin + length] (the bar, the column).
   auto fills_box = [&] {
-    if (scene.bodies.size() != 1) return false;
+    if (scene.bodies.size() != 1 || scene.bodies[0].shape != "box") return false;
     for (int axis = 0; axis < dim; ++axis)
       if (std::abs(scene.bodies[0].min[axis] - scene.origin[axis]) > 1e-9 * scene.spacing ||
           std::abs(scene.bodies[0].max[axis] - scene.origin[axis] - scene.length[axis]) > 1e-9 * scene.spacing)
@@ -286,6 +459,46 @@ inline Scene read_scene(const SceneFile& file) {
     root.fail("exact", "'soil_column' is the 2D column on a roller base under gravity: needs dimension = 2, one [[body]] "
                        "filling [origin, origin + length], a [[fixed]] face = \"ymin\" holding \"y\", "
                        "gravity.acceleration = [0, -g], and rollers on xmin and xmax unless poisson_ratio = 0");
+  const bool manufactured = scene.exact == "manufactured_small" || scene.exact == "manufactured_large";
+  if (scene.exact == "vibrating_bar") {
+    if (!(dim == 1 && fills_box() && has_fixed(0, true, 0) && scene.gravity[0] == 0.0))
+      root.fail("exact", "'vibrating_bar' is the 1D bar free at xmin and fixed at xmax without gravity: needs dimension = 1, "
+                         "one [[body]] filling [origin, origin + length], a [[fixed]] face = \"xmax\" holding \"x\", "
+                         "and no gravity");
+    if (!scene.exact_velocity_amplitude)
+      parameters.fail("velocity_amplitude", "required by exact = \"vibrating_bar\": the velocity amplitude V (m/s) of "
+                                            "v(X, 0) = V cos((2 mode - 1) pi X / 2L)");
+  } else {
+    if (scene.exact_mode != 1) parameters.fail("mode", "only exact = \"vibrating_bar\" reads it");
+    if (scene.exact_velocity_amplitude) parameters.fail("velocity_amplitude", "only exact = \"vibrating_bar\" reads it");
+  }
+  if (manufactured) {
+    const bool small = scene.exact == "manufactured_small";
+    auto holds = [&](int axis, int component) { return has_fixed(axis, false, component) && has_fixed(axis, true, component); };
+    const bool supported = small ? holds(0, 0) && holds(0, 1) && holds(1, 0) && holds(1, 1) : holds(0, 0) && holds(1, 1);
+    if (!(dim == 2 && fills_box() && std::abs(scene.length[0] - scene.length[1]) <= 1e-9 * scene.length[0] && supported &&
+          scene.gravity[0] == 0.0 && scene.gravity[1] == 0.0))
+      root.fail("exact", "'" + scene.exact + "' is the square [origin, origin + L]^2 in plane strain without gravity: needs "
+                         "dimension = 2, equal grid lengths, one [[body]] filling the box, and " +
+                         (small ? std::string("every face fixed in x and y") : std::string("rollers on every face (xmin, xmax holding \"x\"; ymin, ymax holding \"y\")")));
+    if (scene.formulas.body_force || scene.formulas.initial_velocity || scene.formulas.initial_stress || !scene.initial_velocities.empty() ||
+        std::any_of(scene.bodies[0].velocity.begin(), scene.bodies[0].velocity.end(), [](double v) { return v != 0.0; }))
+      root.fail("exact", "'" + scene.exact + "' sets the body force and the initial velocity itself (mpm/exact/manufactured.hpp): "
+                         "give no [body_force], [initial_field], [[initial_velocity]] or body velocity");
+    const size_t count = small ? 1 : 2;
+    if (scene.exact_displacement_amplitude.size() != count)
+      parameters.fail("displacement_amplitude", small ? "required by exact = \"manufactured_small\": one amplitude A (m)"
+                                                      : "required by exact = \"manufactured_large\": [a_x, a_y] (m)");
+    const double wave_number = 3.14159265358979323846 / scene.length[0];
+    if (small && !(std::abs(scene.exact_displacement_amplitude[0]) * wave_number < 0.01))
+      parameters.fail("displacement_amplitude", "must be small: |A| pi / L < 0.01 (the small-strain solution; "
+                                                "use manufactured_large for large amplitude)");
+    if (!small && !(std::abs(scene.exact_displacement_amplitude[0]) * wave_number < 0.9 &&
+                    2.0 * std::abs(scene.exact_displacement_amplitude[1]) * wave_number < 0.9))
+      parameters.fail("displacement_amplitude", "too large: the stretches must stay positive, |a_x| pi / L < 0.9 and 2 |a_y| pi / L < 0.9");
+  } else if (!scene.exact_displacement_amplitude.empty()) {
+    parameters.fail("displacement_amplitude", "only exact = \"manufactured_small\" and \"manufactured_large\" read it");
+  }
   root.reject_unknown_keys();
   std::ostringstream json;
   json << toml::json_formatter{file.table};

@@ -100,6 +100,7 @@ inline SceneCost estimate_cost(const Scene& scene) {
     double count = 1.0;
     for (int axis = 0; axis < d; ++axis)
       count *= std::round((body.max[axis] - body.min[axis]) / scene.spacing) * body.particles_per_cell[axis];
+    if (body.shape == "file") count = static_cast<double>(body.particles.size());
     cost.particles += count;
     if (count > per_cell_most) per_cell_most = count, cost.largest_body = static_cast<int>(k);
   }
@@ -116,7 +117,10 @@ inline SceneCost estimate_cost(const Scene& scene) {
   cost.node_bytes = cost.nodes * (8 + 4 * 8.0 * d);  // GridFields<Dim>
   auto norm = [](const std::vector<double>& v) { return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0)); };
   double fastest = 0.0;  // the fastest particle at t = 0
-  for (const auto& body : scene.bodies) fastest = std::max(fastest, norm(body.velocity));
+  for (const auto& body : scene.bodies) {
+    fastest = std::max(fastest, norm(body.velocity));
+    for (const auto& particle : body.particles) fastest = std::max(fastest, std::hypot(particle.v_x, particle.v_y));
+  }
   for (const auto& box : scene.initial_velocities) fastest = std::max(fastest, norm(box.velocity));
   const double wave_speed = std::sqrt(scene.young_modulus / scene.density);
   const double speed = scene.control.courant == CourantSpeed::maximum ? std::max(fastest, wave_speed) : fastest + wave_speed;

@@ -2,6 +2,10 @@
 /// From validated scene settings to the objects of a run: grid, model, particles, observers.
 #pragma once
 #include <limits>
+#include <memory>
+#include <optional>
+
+#include "mpm/exact/manufactured.hpp"
 
 #include "mpm/io/scene.hpp"
 #include "mpm/model.hpp"
@@ -29,6 +33,28 @@ Grid<Dim> build_grid(const Scene& scene) {
   return Grid<Dim>(origin, scene.spacing, cells);
 }
 
+/// exact = "manufactured_small" | "manufactured_large": the motion of mpm/exact/manufactured.hpp on the square
+/// [origin, origin + L]^2, as a function of the point measured from the origin. The scene gives its body
+/// force and initial velocity (it refuses [body_force] and initial velocities of its own).
+struct ManufacturedMotion {
+  std::shared_ptr<const exact::ManufacturedSmall> small;
+  std::shared_ptr<const exact::ManufacturedLarge> large;
+
+  exact::Pair body_force(const exact::Pair& x, double t) const { return small ? small->body_force(x, t) : large->body_force(x, t); }
+  exact::Pair initial_velocity(const exact::Pair& X) const { return small ? small->initial_velocity(X) : large->initial_velocity(X); }
+};
+
+/// The scene's manufactured motion; nullopt for any other exact solution.
+inline std::optional<ManufacturedMotion> manufactured_motion(const Scene& scene) {
+  if (scene.exact != "manufactured_small" && scene.exact != "manufactured_large") return std::nullopt;
+  const exact::ManufacturedMaterial material{scene.length[0], scene.young_modulus, scene.poisson_ratio, scene.density};
+  const std::vector<double>& a = scene.exact_displacement_amplitude;
+  ManufacturedMotion motion;
+  if (scene.exact == "manufactured_small") motion.small = std::make_shared<exact::ManufacturedSmall>(material, a[0]);
+  else motion.large = std::make_shared<exact::ManufacturedLarge>(material, a[0], a[1]);
+  return motion;
+}
+
 template <int Dim>
 Model<Dim> build_model(const Scene& scene) {
   Model<Dim> model;
@@ -48,20 +74,51 @@ Model<Dim> build_model(const Scene& scene) {
   model.body_force.gravity.acceleration = to_vector<Dim>(scene.gravity);
   model.body_force.gravity.ramp_period = scene.ramp_period;
   model.body_force.field = body_force_field<Dim>(scene.formulas);
+  if constexpr (Dim == 2) {
+    if (const auto motion = manufactured_motion(scene)) {  // b(x, t) of the manufactured motion, Eq. (2)
+      const Vector<2> origin(scene.origin[0], scene.origin[1]);
+      model.body_force.field = [motion = *motion, origin](const Vector<2>& x, const Vector<2>&, double t) {
+        const exact::Pair b = motion.body_force({x[0] - origin[0], x[1] - origin[1]}, t);
+        return Vector<2>(b[0], b[1]);
+      };
+    }
+  }
   return model;
 }
 
 template <int Dim>
 Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
   Particles<Dim> particles;
-  for (const auto& body : scene.bodies) {
+  for (size_t k = 0; k < scene.bodies.size(); ++k) {
+    const BodySettings& body = scene.bodies[k];
+    if (body.shape == "file") {  // its particles as read (mpm/io/particle_file.hpp); l_p = V^(1/Dim) / 2 per axis
+      for (const FileParticle& particle : body.particles) {
+        const double position[2] = {particle.x, particle.y}, velocity[2] = {particle.v_x, particle.v_y};
+        Vector<Dim> x, v;
+        for (int axis = 0; axis < Dim; ++axis) x[axis] = position[axis], v[axis] = velocity[axis];
+        const double half = 0.5 * std::pow(particle.mass / scene.density, 1.0 / Dim);
+        particles.add(x, particle.mass, scene.density, v, Vector<Dim>::Constant(half));
+      }
+      continue;
+    }
     std::array<int, Dim> per_cell{};
     for (int axis = 0; axis < Dim; ++axis) per_cell[axis] = body.particles_per_cell[axis];
-    fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, scene.density,
-             to_vector<Dim>(body.velocity), body.placement == "gauss" ? Placement::gauss : Placement::uniform, particles);
+    const int added = fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, scene.density, to_vector<Dim>(body.velocity),
+                               body.placement == "gauss" ? Placement::gauss : Placement::uniform, particles, body_shape(body));
+    if (added == 0)  // a polygon thinner than the particle spacing: its box holds seeds, none inside it
+      throw SceneError(scene.file, 0, "body[" + std::to_string(k) + "].vertices",
+                       "the polygon holds no particle: make it wider than the particle spacing, or raise particles_per_cell");
   }
   apply_scene_formulas<Dim>(scene.formulas, LinearElastic{scene.young_modulus, scene.poisson_ratio, scene.density},
                             scene.control.end_time, particles);  // [initial_field], before the boxes
+  if constexpr (Dim == 2) {
+    if (const auto motion = manufactured_motion(scene))
+      for (int p = 0; p < particles.size(); ++p) {
+        const Vector<2>& X = particles.reference_position[p];
+        const exact::Pair v = motion->initial_velocity({X[0] - scene.origin[0], X[1] - scene.origin[1]});
+        particles.velocity[p] = Vector<2>(v[0], v[1]);
+      }
+  }
   for (const auto& box : scene.initial_velocities) {  // applied in order: later boxes win
     const Vector<Dim> lower = to_vector<Dim>(box.min), upper = to_vector<Dim>(box.max);
     for (int p = 0; p < particles.size(); ++p) {

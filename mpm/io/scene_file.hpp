@@ -245,6 +245,8 @@ class SceneReader {
       : file_(scene.path), overridden_(&scene.overridden), table_(table), prefix_(std::move(prefix)) {}
 
   bool has(const std::string& key) { known_.insert(key); return table_.contains(key); }
+  /// The key's node (nullptr when absent), for keys of a shape the typed readers below do not read.
+  const toml::node* node(const std::string& key) { known_.insert(key); return table_.get(key); }
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     if (auto override = overridden_->find(full(key)); override != overridden_->end())

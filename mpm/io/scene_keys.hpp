@@ -34,9 +34,16 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"title", "\"untitled\"", false, "-", "name of the run (printed, written into run.json)"},
       {"dimension", "1", false, "-", "1 or 2 (2D is plane strain)"},
       {"exact", "\"none\"", false, "-",
-       "exact solution written beside the observers into exact.csv and drawn by `mpm plot`: "
-       "none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
-       "soil_column (2D column on a roller base under gravity along -y; mpm/exact/column.hpp)"},
+       "exact solution written beside the observers into exact.csv, drawn by `mpm plot`, evaluated by `mpm exact` "
+       "and `mpm compare`: none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
+       "soil_column (2D column on a roller base under gravity along -y; mpm/exact/column.hpp) | "
+       "vibrating_bar (a mode of the dyka_bar's bar; mpm/exact/vibrating_bar.hpp) | manufactured_small | "
+       "manufactured_large (2D square, its body force and initial velocity set by the solution; mpm/exact/manufactured.hpp)"},
+      {"exact_parameters.mode", "1", false, "-", "vibrating_bar: the mode n, v(X, 0) = V cos((2n - 1) pi X / 2L)"},
+      {"exact_parameters.velocity_amplitude", nullptr, false, "m/s",
+       "vibrating_bar: V, a number or a formula of the constants (\"V\")", true},
+      {"exact_parameters.displacement_amplitude", nullptr, false, "m",
+       "manufactured_small: A; manufactured_large: [a_x, a_y]; numbers or formulas of the constants", true},
       {"grid.origin", "0.0", true, "m", "lower corner of the box [origin, origin + length] the body's grid spans"},
       {"grid.length", nullptr, false, "m", "size of the box on each axis"},
       {"grid.cells", nullptr, false, "cells", "cells on each axis; cells must be square (equal length/cells)"},
@@ -50,6 +57,13 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"body[].particles_per_cell", "1", true, "-", "particles per cell on each axis"},
       {"body[].velocity", "0.0", true, "m/s", "initial velocity of the body's particles"},
       {"body[].placement", "\"uniform\"", false, "-", "uniform (cell split evenly) | gauss (2x2 Gauss points)"},
+      {"body[].shape", "\"box\"", false, "-",
+       "box | ellipse (inscribed in the box [min, max]: a disk in a square box) | polygon (vertices): the particles of "
+       "the box's cells that lie in the shape are kept, each with its share of the cell's mass (2D) | file (particles read from file)"},
+      {"body[].vertices", nullptr, false, "m", "polygon: its vertices [[x, y], ...], in order, inside [min, max]", true},
+      {"body[].file", nullptr, false, "-",
+       "file: a CSV of the body's particles, x[,y] (m), volume (m^Dim) or mass (kg), optional v_x[,v_y] (m/s), by column "
+       "name; relative to the scene's folder; every particle inside [min, max]", true},
       {"initial_velocity[].min", nullptr, false, "m", "lower corner of a box; particles in it start with `velocity`"},
       {"initial_velocity[].max", nullptr, false, "m", "upper corner of the box"},
       {"initial_velocity[].velocity", nullptr, false, "m/s", "their initial velocity (later boxes win)"},
@@ -93,6 +107,8 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"observer[].position", nullptr, false, "m", "the particle nearest this point at t = 0 is observed"},
       {"output.every", "1", false, "steps", "observers and energy sampled every n steps and at the end"},
       {"output.snapshots", "[]", false, "s", "times at which every particle is written (CSV, VTK, .pvd)"},
+      {"output.times", "[]", false, "s",
+       "times at which observers, energy and exact.csv are sampled, each landed on by a step; replaces every"},
   };
   return keys;
 }

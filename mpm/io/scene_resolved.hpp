@@ -85,6 +85,11 @@ inline toml::table resolved_table(const Scene& scene) {
   table.insert("title", scene.title);
   table.insert("dimension", static_cast<int64_t>(scene.dimension));
   table.insert("exact", scene.exact);
+  toml::table exact_parameters{{"mode", static_cast<int64_t>(scene.exact_mode)}};
+  if (scene.exact_velocity_amplitude) exact_parameters.insert("velocity_amplitude", *scene.exact_velocity_amplitude);
+  if (!scene.exact_displacement_amplitude.empty())
+    exact_parameters.insert("displacement_amplitude", numbers_array(scene.exact_displacement_amplitude));
+  table.insert("exact_parameters", exact_parameters);
   table.insert("grid", toml::table{{"origin", numbers_array(scene.origin)},
                                    {"length", numbers_array(scene.length)},
                                    {"cells", integers_array(scene.cells)},
@@ -94,12 +99,21 @@ inline toml::table resolved_table(const Scene& scene) {
                                        {"poisson_ratio", scene.poisson_ratio},
                                        {"density", scene.density}});
   toml::array bodies, velocities, fixed, observers;
-  for (const auto& body : scene.bodies)
-    bodies.push_back(toml::table{{"min", numbers_array(body.min)},
-                                 {"max", numbers_array(body.max)},
-                                 {"particles_per_cell", integers_array(body.particles_per_cell)},
-                                 {"velocity", numbers_array(body.velocity)},
-                                 {"placement", body.placement}});
+  for (const auto& body : scene.bodies) {
+    toml::table entry{{"min", numbers_array(body.min)},
+                      {"max", numbers_array(body.max)},
+                      {"particles_per_cell", integers_array(body.particles_per_cell)},
+                      {"velocity", numbers_array(body.velocity)},
+                      {"placement", body.placement},
+                      {"shape", body.shape}};
+    if (!body.file.empty()) entry.insert("file", body.file);
+    if (!body.vertices.empty()) {
+      toml::array vertices;
+      for (const auto& vertex : body.vertices) vertices.push_back(toml::array{vertex[0], vertex[1]});
+      entry.insert("vertices", vertices);
+    }
+    bodies.push_back(entry);
+  }
   for (const auto& box : scene.initial_velocities)
     velocities.push_back(toml::table{{"min", numbers_array(box.min)},
                                      {"max", numbers_array(box.max)},
@@ -150,8 +164,9 @@ inline toml::table resolved_table(const Scene& scene) {
   if (!initial_field.empty()) table.insert("initial_field", initial_field);
   if (formulas.body_force) table.insert("body_force", toml::table{{"acceleration", texts(*formulas.body_force)}});
   table.insert("observer", observers);
-  table.insert("output", toml::table{{"every", static_cast<int64_t>(control.sample_every)},
-                                     {"snapshots", numbers_array(control.snapshot_times)}});
+  toml::table output{{"snapshots", numbers_array(control.snapshot_times)}, {"times", numbers_array(control.sample_times)}};
+  if (control.sample_times.empty()) output.insert("every", static_cast<int64_t>(control.sample_every));  // times replaces every
+  table.insert("output", output);
   return table;
 }
 

@@ -2,6 +2,7 @@
 /// Warnings for a scene that is valid but suspicious: `warning: FILE:LINE: KEY: what and why`, on
 /// stderr before the run; a warning never stops a run (errors do: mpm/io/scene.hpp).
 ///   - an observer outside every [[body]] (the particle nearest to it is observed instead);
+///   - an [[initial_velocity]] box that holds no particle (it sets nothing);
 ///   - a CFL above the stability limit of the chosen method, from its own linearised step (mpm/stability.hpp:
 ///     the caller computes it and passes it in, so that reading a scene needs no solver);
 ///   - LME next to rigid margin nodes behind a fixed face (it gives way there).
@@ -59,6 +60,45 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
     if (!inside)
       warn("observer[" + std::to_string(k) + "].position",
            "lies outside every [[body]]: the particle nearest to it at t = 0 is observed instead");
+  }
+  for (size_t k = 0; k < scene.initial_velocities.size(); ++k) {  // a box that holds no particle sets nothing
+    const VelocityBox& box = scene.initial_velocities[k];
+    bool touched = false;
+    double seeds = 0.0;
+    for (const auto& body : scene.bodies) {
+      double count = 1.0;
+      for (int axis = 0; axis < dim; ++axis) count *= (body.max[axis] - body.min[axis]) / scene.spacing * body.particles_per_cell[axis];
+      seeds += count;
+    }
+    if (seeds > 1e7) continue;  // too many particles to look at here: no warning
+    for (const auto& body : scene.bodies) {
+      for (const auto& particle : body.particles) {  // a body read from a file: its own particles
+        const double x[2] = {particle.x, particle.y};
+        bool inside = true;
+        for (int axis = 0; axis < dim; ++axis) inside = inside && x[axis] >= box.min[axis] && x[axis] <= box.max[axis];
+        touched = touched || inside;
+      }
+      if (body.shape == "file") {
+        if (touched) break;
+        continue;
+      }
+      const BodyShape shape = body_shape(body);
+      const Placement placement = body.placement == "gauss" ? Placement::gauss : Placement::uniform;
+      auto visit = [&](const auto& x) {
+        bool inside = shape.holds(x[0], x[dim - 1]);
+        for (int axis = 0; axis < dim; ++axis) inside = inside && x[axis] >= box.min[axis] && x[axis] <= box.max[axis];
+        touched = touched || inside;
+        return !touched;
+      };
+      if (dim == 1)
+        for_each_seed<1>(Vector<1>(scene.origin[0]), scene.spacing, Vector<1>(body.min[0]), Vector<1>(body.max[0]),
+                         {body.particles_per_cell[0]}, placement, visit);
+      else
+        for_each_seed<2>(Vector<2>(scene.origin[0], scene.origin[1]), scene.spacing, Vector<2>(body.min[0], body.min[1]),
+                         Vector<2>(body.max[0], body.max[1]), {body.particles_per_cell[0], body.particles_per_cell[1]}, placement, visit);
+      if (touched) break;
+    }
+    if (!touched) warn("initial_velocity[" + std::to_string(k) + "].min", "the box holds no particle: it sets no velocity");
   }
   if (scene.control.cfl > cfl_limit) {  // false when the limit is NaN
     char what[400];

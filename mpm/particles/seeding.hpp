@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "mpm/grid/grid.hpp"
+#include "mpm/particles/body_shape.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm {
@@ -21,38 +22,54 @@ enum class Placement {
   gauss     ///< Gauss points of the cell (2 per axis: h/2 (1 -+ 1/sqrt 3)), as in the authors' LME/Q4 block
 };
 
-/// Adds the particles of the box [box_min, box_max] (on grid lines) to `particles`.
-template <int Dim>
-void fill_box(const Grid<Dim>& grid, const Vector<Dim>& box_min, const Vector<Dim>& box_max,
-              const typename Grid<Dim>::MultiIndex& particles_per_cell, double density, const Vector<Dim>& velocity,
-              Placement placement, Particles<Dim>& particles) {
-  const double h = grid.spacing();
-  std::array<int, Dim> first{}, count{};
-  int per_cell = 1;
+/// Calls `visit(x)` for the position x of every particle seeded in the box [box_min, box_max] of whole cells
+/// of the grid whose lines lie at grid_origin + k h, x fastest; stops early when `visit` returns false.
+/// Returns false if it was stopped.
+template <int Dim, class Visit>
+bool for_each_seed(const Vector<Dim>& grid_origin, double h, const Vector<Dim>& box_min, const Vector<Dim>& box_max,
+                   const std::array<int, Dim>& particles_per_cell, Placement placement, Visit visit) {
+  std::array<long, Dim> first{}, count{};
   for (int axis = 0; axis < Dim; ++axis) {
-    first[axis] = static_cast<int>(std::lround((box_min[axis] - grid.origin()[axis]) / h));
-    count[axis] = static_cast<int>(std::lround((box_max[axis] - box_min[axis]) / h)) * particles_per_cell[axis];
-    per_cell *= particles_per_cell[axis];
+    first[axis] = std::lround((box_min[axis] - grid_origin[axis]) / h);
+    count[axis] = std::lround((box_max[axis] - box_min[axis]) / h) * particles_per_cell[axis];
   }
-  const double particle_mass = density * std::pow(h, Dim) / per_cell;
-  Vector<Dim> half_length;
-  for (int axis = 0; axis < Dim; ++axis) half_length[axis] = 0.5 * h / particles_per_cell[axis];
-
-  std::array<int, Dim> index{};  // odometer over particle rows, x fastest
+  std::array<long, Dim> index{};  // odometer over particle rows, x fastest
   while (true) {
     Vector<Dim> x;
     for (int axis = 0; axis < Dim; ++axis) {
       const int ppc = particles_per_cell[axis];
-      const int cell = first[axis] + index[axis] / ppc, slot = index[axis] % ppc;
+      const long cell = first[axis] + index[axis] / ppc, slot = index[axis] % ppc;
       double offset = (slot + 0.5) / ppc;  // fraction of the cell
       if (placement == Placement::gauss && ppc == 2) offset = 0.5 + (slot == 0 ? -0.5 : 0.5) / std::sqrt(3.0);
-      x[axis] = grid.origin()[axis] + (cell + offset) * h;
+      x[axis] = grid_origin[axis] + (cell + offset) * h;
     }
-    particles.add(x, particle_mass, density, velocity, half_length);
+    if (!visit(x)) return false;
     int axis = 0;
     while (axis < Dim && ++index[axis] == count[axis]) index[axis++] = 0;
-    if (axis == Dim) return;
+    if (axis == Dim) return true;
   }
+}
+
+/// Adds the particles of the box [box_min, box_max] (on grid lines) that lie in `shape` (by default the
+/// whole box, mpm/particles/body_shape.hpp) to `particles`; returns how many.
+template <int Dim>
+int fill_box(const Grid<Dim>& grid, const Vector<Dim>& box_min, const Vector<Dim>& box_max,
+             const typename Grid<Dim>::MultiIndex& particles_per_cell, double density, const Vector<Dim>& velocity,
+             Placement placement, Particles<Dim>& particles, const BodyShape& shape = BodyShape{}) {
+  const double h = grid.spacing();
+  int per_cell = 1;
+  for (int axis = 0; axis < Dim; ++axis) per_cell *= particles_per_cell[axis];
+  const double particle_mass = density * std::pow(h, Dim) / per_cell;
+  Vector<Dim> half_length;
+  for (int axis = 0; axis < Dim; ++axis) half_length[axis] = 0.5 * h / particles_per_cell[axis];
+  std::array<int, Dim> per_axis{};
+  for (int axis = 0; axis < Dim; ++axis) per_axis[axis] = particles_per_cell[axis];
+  int added = 0;
+  for_each_seed<Dim>(grid.origin(), h, box_min, box_max, per_axis, placement, [&](const Vector<Dim>& x) {
+    if (shape.holds(x[0], x[Dim - 1])) particles.add(x, particle_mass, density, velocity, half_length), ++added;
+    return true;
+  });
+  return added;
 }
 
 TEST_CASE("Seeding: positions, masses and half-lengths of a 2x2-per-cell block and a 1D bar") {
@@ -79,6 +96,16 @@ TEST_CASE("Seeding: positions, masses and half-lengths of a 2x2-per-cell block a
   CHECK(bar.position[7][0] == doctest::Approx(0.375));
   CHECK(bar.mass[0] == doctest::Approx(0.5));
   CHECK(bar.half_length[0][0] == doctest::Approx(0.025));
+
+  // A disk of radius 0.2 about (0.25, 0.25) in its box of 8 x 8 cells of 0.05 m, 2 x 2 particles per cell:
+  // the seeds are 0.0625 + 0.025 k; counted by hand (a Python loop over the 16 x 16 seeds): 208 lie in the disk.
+  const Grid<2> square(Vector<2>(0.0, 0.0), 0.05, {20, 20});
+  Particles<2> disk;
+  const BodyShape circle{BodyShape::Kind::ellipse, {0.05, 0.05}, {0.45, 0.45}, {}};
+  CHECK(fill_box(square, Vector<2>(0.05, 0.05), Vector<2>(0.45, 0.45), {2, 2}, 1000.0, Vector<2>(0.1, 0.1), Placement::uniform, disk, circle) == 208);
+  REQUIRE(disk.size() == 208);
+  CHECK(disk.mass[0] == doctest::Approx(1000.0 * 0.05 * 0.05 / 4.0));  // its share of the cell, as in a box
+  for (int p = 0; p < disk.size(); ++p) CHECK((disk.position[p] - Vector<2>(0.25, 0.25)).norm() <= 0.2);
 }
 
 }  // namespace mpm

@@ -1,0 +1,360 @@
+/// \file
+/// `mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [--column ...] [--time-column NAME]
+///              [--tolerance TOL] [--plot FILE.png] [--set KEY=VALUE]... [--strain small|finite]`
+/// scores any CSV with a header line (another code's output: any column names, any sample times) against
+/// the exact solution the scene names (mpm/io/exact_solution.hpp), evaluated at the material point --at
+/// and at the CSV's own times. It prints CSV, one row per --column:
+///   column,quantity,samples,rms,rms_normalised,max_abs,t_of_max
+/// rms is Eq. (43) over the N samples, \f$ \sqrt{\tfrac1N \sum_n (c_n - e_n)^2} \f$ (mpm/analysis/rms_error.hpp);
+/// rms_normalised divides it by the solution's scale of the quantity (SceneExactSolution::scale: v0 for the
+/// Dyka bar's velocity, so the paper's RMS/v0 comes out directly); max_abs is the largest |c_n - e_n| and
+/// t_of_max the first sample time at which it occurs.
+/// Exit codes: 0 every rms_normalised <= TOL (or no --tolerance given); 1 one is above TOL; 2 a bad input
+/// (unknown column, unreadable CSV, no exact solution in the scene; one line on stderr, nothing written);
+/// 3 gnuplot failed to draw --plot.
+#pragma once
+#include <doctest/doctest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mpm/analysis/rms_error.hpp"
+#include "mpm/cli/exact_command.hpp"
+
+namespace mpm::cli {
+
+/// A CSV file's header and the numbers of the columns asked, row by row.
+struct CsvColumns {
+  std::vector<std::string> header;
+  std::map<std::string, std::vector<double>> values;  ///< by column name, one entry per data row
+};
+
+/// Splits a CSV line at commas; each field trimmed of spaces and of one pair of surrounding double quotes.
+inline std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  for (std::string field; std::getline(stream, field, ',');) {
+    const auto start = field.find_first_not_of(" \t"), end = field.find_last_not_of(" \t");
+    field = start == std::string::npos ? "" : field.substr(start, end - start + 1);
+    if (field.size() >= 2 && field.front() == '"' && field.back() == '"') field = field.substr(1, field.size() - 2);
+    fields.push_back(field);
+  }
+  if (!line.empty() && line.back() == ',') fields.push_back("");
+  return fields;
+}
+
+/// Reads the columns `wanted` of the CSV file `path` (header on the first line that is neither blank nor a
+/// # comment). Every data row must have the header's number of fields and a finite number in each column
+/// wanted. Returns an empty header with `error` set ("FILE:LINE: ...") on a problem.
+inline CsvColumns read_csv_columns(const std::string& path, const std::vector<std::string>& wanted, std::string& error) {
+  CsvColumns csv;
+  std::error_code code;
+  if (std::filesystem::is_directory(path, code)) {
+    error = path + ": is a folder; give a CSV file";
+    return {};
+  }
+  std::ifstream in(path);
+  if (!in) {
+    error = path + ": cannot be read: no such file, or no permission";
+    return {};
+  }
+  std::vector<int> index(wanted.size(), -1);
+  std::string line;
+  bool too_long = false;
+  int number = 1;
+  for (; io::read_line(in, line, too_long); ++number) {
+    const auto start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#') continue;
+    const auto fields = csv_fields(line);
+    if (csv.header.empty()) {
+      csv.header = fields;
+      for (size_t k = 0; k < wanted.size(); ++k) {
+        const auto found = std::find(fields.begin(), fields.end(), wanted[k]);
+        if (found == fields.end()) {
+          std::string names;
+          for (const auto& name : fields) names += (names.empty() ? "" : ", ") + name;
+          error = path + ":" + std::to_string(number) + ": no column '" + wanted[k] + "' in the header (" + names + ")";
+          return {};
+        }
+        index[k] = static_cast<int>(found - fields.begin());
+      }
+      continue;
+    }
+    if (fields.size() != csv.header.size()) {
+      error = path + ":" + std::to_string(number) + ": " + std::to_string(fields.size()) + " fields; the header has " +
+              std::to_string(csv.header.size());
+      return {};
+    }
+    if (csv.values.empty() || csv.values.begin()->second.size() < most_times) {
+      for (size_t k = 0; k < wanted.size(); ++k) {
+        const auto value = parse_number(fields[index[k]]);
+        if (!value) {
+          error = path + ":" + std::to_string(number) + ": " + wanted[k] + ": '" + fields[index[k]] + "' is not a finite number";
+          return {};
+        }
+        csv.values[wanted[k]].push_back(*value);
+      }
+    } else {
+      error = path + ":" + std::to_string(number) + ": more than 1000000 rows";
+      return {};
+    }
+  }
+  if (too_long) error = path + ":" + std::to_string(number) + ": a line longer than 1 MiB (is it a CSV file?)";
+  else if (in.bad()) error = path + ": cannot be read";
+  else if (csv.header.empty()) error = path + ": empty; a header line and data rows are needed";
+  else if (csv.values.empty()) error = path + ": has a header but no data row";
+  return error.empty() ? csv : CsvColumns{};
+}
+
+/// The score of one column.
+struct ColumnScore {
+  std::string column, quantity;
+  std::size_t samples = 0;
+  double rms = 0.0, rms_normalised = 0.0, max_abs = 0.0, t_of_max = 0.0;
+};
+
+/// Scores `computed` (at `times`) against `exact`: Eq. (43) and the largest difference.
+inline ColumnScore score_column(const std::vector<double>& times, const std::vector<double>& computed, const std::vector<double>& exact,
+                                double scale) {
+  ColumnScore score;
+  score.samples = computed.size();
+  score.rms = rms_error(computed, exact);
+  score.rms_normalised = score.rms / scale;
+  score.max_abs = -1.0;
+  for (std::size_t n = 0; n < computed.size(); ++n)
+    if (std::abs(computed[n] - exact[n]) > score.max_abs) score.max_abs = std::abs(computed[n] - exact[n]), score.t_of_max = times[n];
+  return score;
+}
+
+/// The gnuplot script of --plot: one panel per column, the CSV's values and the exact solution at the same
+/// times, the data inline (no other file is read or written but the picture).
+inline std::string compare_plot_script(const std::string& picture, const std::vector<double>& times,
+                                       const std::vector<ColumnScore>& scores, const std::vector<std::vector<double>>& computed,
+                                       const std::vector<std::vector<double>>& exact) {
+  auto quoted = [](const std::string& text) {  // a gnuplot single-quoted string: ' doubled
+    std::string result = "'";
+    for (char character : text) result += character == '\'' ? std::string("''") : std::string(1, character);
+    return result + "'";
+  };
+  std::ostringstream gp;
+  gp.precision(15);
+  gp << "set datafile separator ','\nset grid lc rgb '#dddddd'\nset key outside right top\nset lmargin 14\nset xlabel 't (s)'\n"
+     << "set terminal pngcairo noenhanced size 1000," << 260 * scores.size() << " font ',10'\nset output " << quoted(picture) << "\n";
+  for (size_t c = 0; c < scores.size(); ++c) {
+    gp << "$data" << c << " << EOD\n";
+    for (size_t n = 0; n < times.size(); ++n) gp << times[n] << "," << computed[c][n] << "," << exact[c][n] << "\n";
+    gp << "EOD\n";
+  }
+  gp << "set multiplot layout " << scores.size() << ",1\n";
+  for (size_t c = 0; c < scores.size(); ++c)
+    gp << "set ylabel " << quoted(scores[c].quantity + " (" + io::quantity_unit(scores[c].quantity) + ")") << "\nplot $data" << c
+       << " using 1:2 with lines lw 1.5 title " << quoted(scores[c].column) << ", $data" << c
+       << " using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'exact'\n";
+  gp << "unset multiplot\nunset output\n";
+  return gp.str();
+}
+
+/// Runs gnuplot on `script` (kept in a temporary file, removed after); true if it wrote `picture`.
+inline bool draw_with_gnuplot(const std::string& script, const std::string& picture, std::string& log) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  char name[] = "/tmp/mpm_compare_XXXXXX";
+  const int descriptor = mkstemp(name);
+  if (descriptor < 0) return false;
+  close(descriptor);
+  const std::string script_path = name, log_path = std::string(name) + ".log";
+  {
+    std::ofstream file(script_path);
+    file << script;
+    if (!file.flush()) return fs::remove(script_path, error), false;
+  }
+  fs::remove(picture, error);
+  const int status = std::system(("gnuplot " + script_path + " 2>" + log_path).c_str());
+  std::ifstream in(log_path);
+  std::getline(in, log, '\0');
+  fs::remove(script_path, error);
+  fs::remove(log_path, error);
+  return status == 0 && fs::file_size(picture, error) > 0 && !error;
+}
+
+/// `mpm compare`; returns the exit code.
+inline int compare_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+  ExactOptions options;
+  std::string result_path, time_column = "t", plot_path;
+  std::vector<std::string> column_specs;
+  std::optional<double> tolerance;
+  std::vector<std::string> positional;
+  for (size_t k = 0; k < arguments.size(); ++k) {
+    const std::string& argument = arguments[k];
+    const bool takes_value = argument == "--set" || argument == "--at" || argument == "--column" || argument == "--time-column" ||
+                             argument == "--tolerance" || argument == "--plot" || argument == "--strain";
+    if (takes_value && k + 1 >= arguments.size()) {
+      err << "error: " << argument << ": needs a value (mpm compare --help)\n";
+      return 2;
+    }
+    if (argument == "--set") options.overrides.push_back(arguments[++k]);
+    else if (argument == "--at") options.points.push_back(arguments[++k]);
+    else if (argument == "--strain") options.strain = arguments[++k];
+    else if (argument == "--column") column_specs.push_back(arguments[++k]);
+    else if (argument == "--time-column") time_column = arguments[++k];
+    else if (argument == "--plot") plot_path = arguments[++k];
+    else if (argument == "--tolerance") {
+      tolerance = parse_number(arguments[++k]);
+      if (!tolerance || *tolerance < 0.0) {
+        err << "error: --tolerance: '" << arguments[k] << "' is not a number >= 0 (a bound on rms_normalised)\n";
+        return 2;
+      }
+    } else if (argument.rfind("-", 0) == 0 || positional.size() == 2) {
+      err << "error: " << argument << ": unknown option (mpm compare --help)\n";
+      return 2;
+    } else {
+      positional.push_back(argument);
+    }
+  }
+  if (positional.size() != 2) {
+    err << "error: compare: give RESULT.csv and SCENE.toml (mpm compare --help)\n";
+    return 2;
+  }
+  result_path = positional[0], options.scene_path = positional[1];
+  if (options.points.size() > 1) {
+    err << "error: --at: give one material point (the one whose history the CSV holds)\n";
+    return 2;
+  }
+  if (column_specs.empty()) {
+    err << "error: --column: missing; give at least one COL=QUANTITY, e.g. --column v=v_x\n";
+    return 2;
+  }
+  if (time_column.empty()) {
+    err << "error: --time-column: empty\n";
+    return 2;
+  }
+  std::vector<std::vector<double>> points;
+  try {
+    const auto scene = load_exact_scene(options, points, err);
+    if (!scene) return 2;
+    const std::vector<std::string> quantities = io::exact_quantities(scene->dimension);
+    std::vector<std::string> columns{time_column}, asked;
+    for (const auto& spec : column_specs) {
+      const auto equals = spec.find('=');
+      const std::string column = spec.substr(0, equals), quantity = equals == std::string::npos ? "" : spec.substr(equals + 1);
+      if (equals == std::string::npos || column.empty()) {
+        err << "error: --column " << spec << ": give COL=QUANTITY, e.g. v=v_x\n";
+        return 2;
+      }
+      if (std::find(quantities.begin(), quantities.end(), quantity) == quantities.end()) {
+        std::string allowed;
+        for (const auto& name : quantities) allowed += (allowed.empty() ? "" : " | ") + name;
+        err << "error: --column " << spec << ": '" << quantity << "' is not a quantity of this " << scene->dimension
+            << "D solution; use one of " << allowed << "\n";
+        return 2;
+      }
+      if (column == time_column || std::find(columns.begin(), columns.end(), column) != columns.end()) {
+        err << "error: --column " << spec << ": column '" << column << "' is the time column or named twice\n";
+        return 2;
+      }
+      columns.push_back(column);
+      asked.push_back(quantity);
+    }
+    if (!plot_path.empty()) {
+      const std::filesystem::path folder = std::filesystem::path(plot_path).parent_path();
+      std::error_code code;
+      if (std::filesystem::path(plot_path).extension() != ".png" || (!folder.empty() && !std::filesystem::is_directory(folder, code))) {
+        err << "error: --plot " << plot_path << ": give a .png file in an existing folder\n";
+        return 2;
+      }
+    }
+    std::string problem;
+    const CsvColumns csv = read_csv_columns(result_path, columns, problem);
+    if (!problem.empty()) {
+      err << "error: " << problem << "\n";
+      return 2;
+    }
+    const std::vector<double>& times = csv.values.at(time_column);
+    for (size_t n = 0; n < times.size(); ++n)
+      if (times[n] < 0.0) {
+        err << "error: " << result_path << ": " << time_column << ": the sample times must be >= 0 (row " << n + 1 << ": " << times[n]
+            << ")\n";
+        return 2;
+      }
+    if (!times_within_precision(io::SceneExactSolution(*scene, io::StrainMeasure::small), times, result_path, err)) return 2;
+    if (!finite_strain_times_fit(*scene, options.strain, times, result_path, err)) return 2;
+    const io::SceneExactSolution solution(*scene, options.strain == "finite" ? io::StrainMeasure::finite : io::StrainMeasure::small,
+                                          times);
+    std::vector<ColumnScore> scores;
+    std::vector<std::vector<double>> exact_series, computed_series;
+    for (size_t c = 0; c < asked.size(); ++c) {
+      const double scale = solution.scale(asked[c]);
+      if (!(scale > 0.0)) {
+        err << "error: " << options.scene_path << ": the exact solution's scale of " << asked[c]
+            << " is 0 (the scene is at rest); rms_normalised has no meaning\n";
+        return 2;
+      }
+      std::vector<double> exact;
+      for (double time : times) exact.push_back(solution.at(points[0], time).quantity(asked[c]));
+      ColumnScore score = score_column(times, csv.values.at(columns[c + 1]), exact, scale);
+      score.column = columns[c + 1], score.quantity = asked[c];
+      scores.push_back(score);
+      exact_series.push_back(exact);
+      computed_series.push_back(csv.values.at(columns[c + 1]));
+    }
+    std::ostringstream text;
+    text.precision(9);
+    text << "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max\n";
+    bool within = true;
+    for (const auto& score : scores) {
+      text << score.column << "," << score.quantity << "," << score.samples << "," << score.rms << "," << score.rms_normalised << ","
+           << score.max_abs << "," << score.t_of_max << "\n";
+      if (tolerance && !(score.rms_normalised <= *tolerance)) within = false;
+    }
+    out << text.str() << std::flush;
+    if (!plot_path.empty()) {
+      std::string log;
+      if (!draw_with_gnuplot(compare_plot_script(plot_path, times, scores, computed_series, exact_series), plot_path, log)) {
+        err << "failure: gnuplot failed to draw " << plot_path << " (is gnuplot installed? make deps)"
+            << (log.empty() ? "" : ": " + log.substr(0, log.find('\n'))) << "\n";
+        return 3;
+      }
+      err << "wrote " << plot_path << "\n";
+    }
+    if (!within) {
+      err << "above the tolerance " << *tolerance << ": rms_normalised > tolerance for";
+      for (const auto& score : scores)
+        if (!(score.rms_normalised <= *tolerance)) err << " " << score.column;
+      err << "\n";
+      return 1;
+    }
+    return 0;
+  } catch (const SceneError& error) {
+    err << error.message() << "\n";
+    return 2;
+  }
+}
+
+TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs = c; a CSV is read field by field") {
+  // exact + c at every sample: every difference is c, so rms = sqrt(N c^2 / N) = c and max_abs = c at the first time.
+  const std::vector<double> times{0.0, 1.0, 2.0, 3.0}, exact{1.0, -2.0, 0.5, 4.0};
+  std::vector<double> computed;
+  for (double value : exact) computed.push_back(value + 0.25);
+  const ColumnScore score = score_column(times, computed, exact, 5.0);
+  CHECK(score.rms == doctest::Approx(0.25).epsilon(1e-14));
+  CHECK(score.rms_normalised == doctest::Approx(0.05).epsilon(1e-14));
+  CHECK(score.max_abs == doctest::Approx(0.25).epsilon(1e-14));
+  CHECK(score.t_of_max == 0.0);
+  // one difference of 3 among four zeros: rms = sqrt(9/4) = 1.5, max at t = 2
+  const ColumnScore spike = score_column(times, {1.0, -2.0, 3.5, 4.0}, exact, 1.0);
+  CHECK(spike.rms == doctest::Approx(1.5).epsilon(1e-14));
+  CHECK(spike.t_of_max == 2.0);
+  CHECK(csv_fields(" t , \"A v\",x,") == std::vector<std::string>{"t", "A v", "x", ""});
+}
+
+}  // namespace mpm::cli

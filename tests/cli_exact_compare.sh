@@ -1,0 +1,203 @@
+#!/usr/bin/env bash
+# `mpm exact` and `mpm compare` (issue 18): their happy paths against closed forms computed here, by
+# hand in awk, never by the program under test; and their bad inputs: exit 2, one line naming the
+# option or key, nothing on stdout and no file written. Usage: cli_exact_compare.sh MPM
+set -u
+mpm=$1
+scenes=$(cd "$(dirname "$0")/.." && pwd)/scenes
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+calc() { awk "BEGIN { printf \"%.17g\", $1 }"; }
+# near GOT WANT TOL: |GOT - WANT| <= TOL
+near() { awk -v g="$1" -v w="$2" -v t="$3" 'BEGIN { d = g - w; if (d < 0) d = -d; exit !(d <= t) }'; }
+# field FILE ROW COLUMN_NAME: the value of a named column on data row ROW (1 = first after the header)
+field() { awk -F, -v row="$2" -v name="$3" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == name) c = i } NR == row + 1 { print $c }' "$1"; }
+check() {  # check WHAT GOT WANT TOL
+  near "$2" "$3" "$4" || fail "$1: got $2, want $3 (tolerance $4)"
+}
+bad() {  # bad PATTERN ARGS...: exit 2, stderr matching PATTERN, nothing on stdout, no plot file
+  local pattern=$1; shift
+  "$mpm" "$@" >"$work/out" 2>"$work/err"
+  local got=$?
+  if [[ $got -ne 2 ]] || ! grep -qE "$pattern" "$work/err" || [[ -s "$work/out" ]] || [[ -e "$work/never.png" ]]; then
+    fail "mpm $* -> exit $got (want 2), stderr: $(cat "$work/err"), stdout: $(head -c 200 "$work/out")"
+  fi
+}
+
+bar=$scenes/dyka_bar.toml
+L=0.1333 E=200e9 rho=7833
+c=$(calc "sqrt($E / $rho)")
+Z=$(calc "sqrt($E * $rho)")
+
+# --- mpm exact, the Dyka bar (v0 = -5 m/s on [0, L/4], free at 0, fixed at L). By hand: R^I = R^II = v0/2
+# on [0, L/4]; at X = L/2 the right-going half (R^I = v0/2) passes while L/4 < ct < 3L/4 and nothing else
+# arrives before ct = 5L/4, so there v = v0/2 = -2.5 m/s, sigma = Z (R^II - R^I) = 2.5 Z (tension) and
+# u = v0/2 (t - L/(4c)). At the free end before the unloading wave returns (ct < L/4), v = v0, sigma = 0, u = v0 t.
+t=$(calc "$L / (2 * $c)")
+t0=$(calc "$L / (8 * $c)")
+"$mpm" exact "$bar" --at "$(calc "$L / 2")" --at 0 --times "$t:1:$t" >"$work/bar.csv" || fail "mpm exact on the Dyka bar"
+[[ $(head -1 "$work/bar.csv") == "t,X,u_x,v_x,sigma_xx" ]] || fail "mpm exact header: $(head -1 "$work/bar.csv")"
+[[ $(wc -l <"$work/bar.csv") -eq 3 ]] || fail "mpm exact: one row per time and point"
+check "Dyka v(L/2, L/2c)" "$(field "$work/bar.csv" 1 v_x)" -2.5 1e-12
+check "Dyka sigma(L/2, L/2c)" "$(field "$work/bar.csv" 1 sigma_xx)" "$(calc "2.5 * $Z")" 1e-4
+check "Dyka u(L/2, L/2c)" "$(field "$work/bar.csv" 1 u_x)" "$(calc "-2.5 * ($t - $L / (4 * $c))")" 1e-17
+check "Dyka v(0, L/2c)" "$(field "$work/bar.csv" 2 v_x)" 0 1e-12  # the free end rests for L/4 < ct < 7L/4
+"$mpm" exact "$bar" --at 0 --times "0:$t0:$t0" >"$work/bar0.csv" || fail "mpm exact at t = 0"
+check "Dyka v(0, 0)" "$(field "$work/bar0.csv" 1 v_x)" -5 1e-12
+check "Dyka u(0, L/8c)" "$(field "$work/bar0.csv" 2 u_x)" "$(calc "-5 * $t0")" 1e-17
+# The same times from a file (a header, a comment and a blank line skipped) give the same rows.
+printf 'time\n# comment\n\n%s\n' "$t" >"$work/times.txt"
+"$mpm" exact "$bar" --at "$(calc "$L / 2")" --at 0 --times-file "$work/times.txt" >"$work/bar_file.csv" || fail "--times-file"
+cmp -s "$work/bar.csv" "$work/bar_file.csv" || fail "--times-file and --times differ"
+# Initial data from the scene: a second box at +2 m/s on the quarter next to the fixed end, and a uniform
+# initial stress s0 from a formula. At X = L/2, before any front arrives (ct < L/4): v = 0, sigma = s0.
+"$mpm" exact "$bar" --set 'initial_field.stress=["-1e6"]' --at "$(calc "$L / 2")" --times "$t0:1:$t0" >"$work/s0.csv" || fail "initial stress"
+check "Dyka with initial stress, sigma(L/2, L/8c)" "$(field "$work/s0.csv" 1 sigma_xx)" -1e6 1e-6
+
+# --- the soil column: the static finite-strain settlement (mpm/exact/column_log_strain.hpp) at the top,
+# u(H) = (1 - exp(-aH))/a - H with a = rho g / M, and sigma_xx = nu/(1 - nu) sigma_yy = rho g H nu/(1 - nu) at the base.
+soil=$scenes/soil_block.toml
+"$mpm" exact "$soil" --strain finite --set material.poisson_ratio=0.3 --at 4.5,10 --at 4.5,0 --times 0:7:7 >"$work/soil.csv" \
+  || fail "mpm exact on the soil column"
+[[ $(head -1 "$work/soil.csv") == "t,X,Y,u_x,u_y,v_x,v_y,sigma_xx,sigma_yy,sigma_xy" ]] || fail "2D header: $(head -1 "$work/soil.csv")"
+M=$(calc "5e6 * 0.7 / (1.3 * 0.4)")
+a=$(calc "6000 * 9.81 / $M")
+check "column u_y(H), finite strain" "$(field "$work/soil.csv" 3 u_y)" "$(calc "(1 - exp(-$a * 10)) / $a - 10")" 1e-12
+check "column sigma_xx(0)" "$(field "$work/soil.csv" 4 sigma_xx)" "$(calc "-6000 * 9.81 * 10 * 0.3 / 0.7")" 1e-6
+# Small strain, constant gravity: the top falls freely until the base is felt (t < H/c = 0.35 s), v = -g t.
+"$mpm" exact "$soil" --set gravity.ramp_period=0 --at 4.5,10 --times 0.1:1:0.1 >"$work/fall.csv" || fail "free fall"
+check "column v_y(H, 0.1 s)" "$(field "$work/fall.csv" 1 v_y)" -0.981 1e-3
+
+# --- the vibrating bar, mode 2: v = V cos(3 pi X / 2L) cos(omega t), omega = 3 pi c / 2L; at X = L/9 and
+# t = T/8 (omega t = pi/4): V cos(pi/6) cos(pi/4) = V sqrt(6)/4. V = 1e-6 L pi c / (2 L) from the scene's constants.
+vib=$scenes/vibrating_bar.toml
+V=$(calc "1e-6 * 3.14159265358979 * $c / 2")
+T2=$(calc "4 / (3 * $c)")
+"$mpm" exact "$vib" --set exact_parameters.mode=2 --at "$(calc "1 / 9")" --times "$(calc "$T2 / 8"):1:1" >"$work/vib.csv" || fail "vibrating bar"
+check "vibrating bar mode 2 v" "$(field "$work/vib.csv" 1 v_x)" "$(calc "$V * sqrt(6) / 4")" 1e-15
+"$mpm" exact "$vib" --strain finite --at "$(calc "1 / 9")" --times "$(calc "$T2 / 8"):1:1" --set exact_parameters.mode=2 >"$work/vibf.csv" \
+  || fail "vibrating bar, finite strain"
+check "vibrating bar mode 2 v, finite strain (512 cells)" "$(field "$work/vibf.csv" 1 v_x)" "$(calc "$V * sqrt(6) / 4")" "$(calc "1e-3 * $V")"
+
+# --- manufactured_small: u = A sin(omega t) (sin kX sin kY, sin 2kX sin kY); at (1/4, 1/2) and omega t = pi/2:
+# u_x = A sqrt(2)/2, u_y = A. omega = c_p pi / L, c_p = sqrt((lambda + 2G)/rho), E = 10 MPa, nu = 0.3, rho = 2000.
+cp=$(calc "sqrt((0.3 * 10e6 / (1.3 * 0.4) + 10e6 / 1.3) / 2000)")
+"$mpm" exact "$scenes/manufactured_small.toml" --at 0.25,0.5 --times "$(calc "0.5 / $cp"):1:1" >"$work/ms.csv" || fail "manufactured_small"
+check "manufactured u_x" "$(field "$work/ms.csv" 1 u_x)" "$(calc "1e-6 * sqrt(2) / 2")" 1e-18
+check "manufactured u_y" "$(field "$work/ms.csv" 1 u_y)" 1e-6 1e-18
+
+# --- mpm compare: a CSV whose error is known in closed form. The Dyka bar at X = L/2, 40 samples in
+# L/4 < ct < 3L/4 where v = -2.5 exactly; the CSV holds v + 0.1 and sigma - 1e6 Pa, with other columns
+# and another name for the time: rms = max_abs = 0.1 m/s, rms/v0 = 0.02; rms = 1e6 Pa, rms/(Z v0) = 1e6/(5 Z).
+awk -v c="$c" -v L="$L" -v Z="$Z" 'BEGIN { print "step,time,label,vel,stress"
+  for (n = 1; n <= 40; n++) { t = (L / 4 + L / 2 * n / 41) / c; printf "%d,%.17g,x,%.17g,%.17g\n", n, t, -2.5 + 0.1, 2.5 * Z - 1e6 } }' >"$work/other.csv"
+"$mpm" compare "$work/other.csv" "$bar" --at "$(calc "$L / 2")" --time-column time --column vel=v_x --column stress=sigma_xx \
+  >"$work/score.csv" || fail "mpm compare (no tolerance: exit 0)"
+[[ $(head -1 "$work/score.csv") == "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max" ]] || fail "compare header"
+check "compare rms of v" "$(field "$work/score.csv" 1 rms)" 0.1 1e-9
+check "compare rms/v0" "$(field "$work/score.csv" 1 rms_normalised)" 0.02 1e-10
+check "compare max_abs of v" "$(field "$work/score.csv" 1 max_abs)" 0.1 1e-9
+check "compare samples" "$(field "$work/score.csv" 1 samples)" 40 0
+check "compare rms of sigma" "$(field "$work/score.csv" 2 rms)" 1e6 1e-2
+check "compare rms/(Z v0) of sigma" "$(field "$work/score.csv" 2 rms_normalised)" "$(calc "1e6 / (5 * $Z)")" 1e-9
+"$mpm" compare "$work/other.csv" "$bar" --at "$(calc "$L / 2")" --time-column time --column vel=v_x --tolerance 0.03 >/dev/null 2>&1 \
+  || fail "compare: rms/v0 = 0.02 within --tolerance 0.03 must exit 0"
+"$mpm" compare "$work/other.csv" "$bar" --at "$(calc "$L / 2")" --time-column time --column vel=v_x --tolerance 0.01 >/dev/null 2>"$work/err"
+[[ $? -eq 1 ]] || fail "compare: rms/v0 = 0.02 above --tolerance 0.01 must exit 1"
+grep -q "above the tolerance 0.01" "$work/err" || fail "compare: exit 1 says why: $(cat "$work/err")"
+# The vibrating bar: its closed form plus c = 3e-4 m/s at 25 irregular times over a period: rms = c, rms/V = c/V.
+awk -v V="$V" -v c="$c" 'BEGIN { pi = 3.14159265358979; w = pi * c / 2; print "t,v"
+  for (n = 0; n < 25; n++) { t = (n + 0.3 * (n % 3)) * 4 / c / 25; printf "%.17g,%.17g\n", t, V * cos(pi / 6) * cos(w * t) + 3e-4 } }' >"$work/vib_other.csv"
+"$mpm" compare "$work/vib_other.csv" "$vib" --at "$(calc "1 / 3")" --column v=v_x >"$work/vib_score.csv" || fail "compare the vibrating bar"
+check "compare rms, vibrating bar" "$(field "$work/vib_score.csv" 1 rms)" 3e-4 1e-12
+check "compare rms/V, vibrating bar" "$(field "$work/vib_score.csv" 1 rms_normalised)" "$(calc "3e-4 / $V")" 1e-9
+if command -v gnuplot >/dev/null; then
+  "$mpm" compare "$work/other.csv" "$bar" --at "$(calc "$L / 2")" --time-column time --column vel=v_x --plot "$work/it's.png" >/dev/null 2>&1 \
+    || fail "compare --plot"
+  [[ -s "$work/it's.png" ]] || fail "compare --plot wrote no picture"
+fi
+
+# --- bad inputs: exit 2, a message naming the option or key, nothing written.
+bad "^error: --at: missing" exact "$bar" --times 0:1:1
+bad "^error: --at 0.2: lies outside the body \[0, 0.1333\] m on x" exact "$bar" --at 0.2 --times 0:1:1
+bad "^error: --at 1,2: give X \(m\) for this 1D scene" exact "$bar" --at 1,2 --times 0:1:1
+bad "^error: --times '0:0:1': needs 0 <= T0 <= T1 and DT > 0" exact "$bar" --at 0 --times 0:0:1
+bad "^error: --times 'a:1:2' is not a range" exact "$bar" --at 0 --times a:1:2
+bad "^error: --times: missing" exact "$bar" --at 0
+bad "^error: --times-file: give the times once" exact "$bar" --at 0 --times 0:1:1 --times-file "$work/times.txt"
+printf 't\n1e-5\nsoon\n' >"$work/bad_times.txt"
+bad "^error: --times-file $work/bad_times.txt:3: 'soon' is not a time" exact "$bar" --at 0 --times-file "$work/bad_times.txt"
+bad "^error: --times-file $work/none.txt: cannot be read" exact "$bar" --at 0 --times-file "$work/none.txt"
+bad "^error: .*exact: the scene names no exact solution" exact "$bar" --set 'exact="none"' --at 0 --times 0:1:1
+bad "^error: --strain: 'dyka_bar' has no finite-strain reference" exact "$bar" --strain finite --at 0 --times 0:1:1
+bad "^error: --strain: 'large' is not allowed" exact "$bar" --strain large --at 0 --times 0:1:1
+bad "^error: --frobnicate: unknown option" exact "$bar" --frobnicate
+# hostile sizes end in exit 2, never in a hang: a file without newlines, too many rows, a finite-strain bar run for hours
+head -c 2000000 /dev/zero >"$work/zeros.csv"
+bad "^error: --times-file $work/zeros.csv:1: a line longer than 1 MiB" exact "$bar" --at 0 --times-file "$work/zeros.csv"
+bad "^error: $work/zeros.csv:1: a line longer than 1 MiB" compare "$work/zeros.csv" "$bar" --at 0 --column v=v_x
+bad "^error: --times: t = 1e\+308 s is more than a million periods \(.* s\) of the solution" exact "$bar" --at 0 --times 1e308:1:1e308
+bad "^error: --times: 600001 times at 2 points: at most 1000000 rows" exact "$bar" --at 0 --at 0.1 --times 0:1e-9:6e-4
+bad "^error: --times: the finite-strain vibrating bar would take .* steps to reach t = 10 s" exact "$vib" --strain finite --at 0 --times 10:1:10
+bad "^error: exact: no scene file given" exact --at 0 --times 0:1:1
+bad "^error: .*exact_parameters.velocity_amplitude: required by exact = \"vibrating_bar\"" exact "$bar" --set 'exact="vibrating_bar"' --at 0 --times 0:1:1
+bad "^error: --set\(1\):1: exact_parameters.displacement_amplitude: must be small" exact "$scenes/manufactured_small.toml" \
+  --set exact_parameters.displacement_amplitude=0.1 --at 0.5,0.5 --times 0:1:1
+bad "^error: --set\(1\):1: initial_field.velocity: takes more than 1024 values along the bar" exact "$bar" \
+  --set 'initial_field.velocity=["X"]' --at 0 --times 0:1:1
+bad "^error: .*no column 'speed' in the header \(step, time, label, vel, stress\)" compare "$work/other.csv" "$bar" --at 0 --time-column time --column speed=v_x
+bad "^error: .*no column 't' in the header" compare "$work/other.csv" "$bar" --at 0 --column vel=v_x
+bad "^error: --column vel=u_y: 'u_y' is not a quantity of this 1D solution" compare "$work/other.csv" "$bar" --at 0 --time-column time --column vel=u_y
+bad "^error: --column vel: give COL=QUANTITY" compare "$work/other.csv" "$bar" --at 0 --time-column time --column vel
+bad "^error: --column: missing" compare "$work/other.csv" "$bar" --at 0
+bad "^error: $work/missing.csv: cannot be read" compare "$work/missing.csv" "$bar" --at 0 --column v=v_x
+bad "^error: $work: is a folder" compare "$work" "$bar" --at 0 --column v=v_x
+bad "^error: .*exact: the scene names no exact solution" compare "$work/other.csv" "$bar" --set 'exact="none"' --at 0 --time-column time --column vel=v_x
+bad "^error: --tolerance: '-1' is not a number >= 0" compare "$work/other.csv" "$bar" --at 0 --time-column time --column vel=v_x --tolerance -1
+bad "^error: --plot $work/no/never.png: give a .png file in an existing folder" compare "$work/other.csv" "$bar" --at 0 \
+  --time-column time --column vel=v_x --plot "$work/no/never.png"
+bad "^error: compare: give RESULT.csv and SCENE.toml" compare "$work/other.csv" --at 0 --column vel=v_x
+printf 't,v\n0,1\n1,2,3\n' >"$work/ragged.csv"
+bad "^error: $work/ragged.csv:3: 3 fields; the header has 2" compare "$work/ragged.csv" "$bar" --at 0 --column v=v_x --plot "$work/never.png"
+printf 't,v\n0,1\n1,fast\n' >"$work/text.csv"
+bad "^error: $work/text.csv:3: v: 'fast' is not a finite number" compare "$work/text.csv" "$bar" --at 0 --column v=v_x
+printf 't,v\n' >"$work/header_only.csv"
+bad "^error: $work/header_only.csv: has a header but no data row" compare "$work/header_only.csv" "$bar" --at 0 --column v=v_x
+printf 't,v\n-1,0\n' >"$work/negative.csv"
+bad "^error: $work/negative.csv: t: the sample times must be >= 0" compare "$work/negative.csv" "$bar" --at 0 --column v=v_x
+
+# --- runs sample where and when asked: output.times landed on exactly; exact.csv at the material point the
+# observer names (the free end X = 0), not at its particle's centre h/2; run.json gives that particle's X.
+# The unloading front reaches X = h/2 at (L/4 - h/2)/c = 6.27 us and X = 0 at L/(4c) = 6.60 us: at t = 6.4 us
+# the exact velocity is v0 = -5 m/s at X = 0 and 0 at X = h/2.
+"$mpm" run "$bar" --out "$work/sampled" --set 'output.times=[0.0, 6.4e-6, 3.3333e-5, 2e-4]' --set 'output.snapshots=[]' >/dev/null \
+  || fail "a run with output.times"
+[[ $(cut -d, -f1 "$work/sampled/observers.csv" | tr '\n' ' ') == "t 0 6.4e-06 3.3333e-05 0.0002 " ]] ||
+  fail "output.times: observers sampled at $(cut -d, -f1 "$work/sampled/observers.csv" | tr '\n' ' ')"
+[[ $(wc -l <"$work/sampled/energy.csv") -eq 5 ]] || fail "output.times: energy.csv not sampled at the same times"
+[[ "$(sed -n 3p "$work/sampled/exact.csv")" == "6.4e-06,-5,0" ]] || fail "exact.csv at t = 6.4 us: $(sed -n 3p "$work/sampled/exact.csv")"
+ls "$work/sampled" | grep -q snapshot_ && fail "output.snapshots = []: no snapshot file"
+python3 -c "import json, sys; o = json.load(open(sys.argv[1]))['observed'][0]; assert o['name'] == 'A' and abs(o['reference_position'][0] - 0.1333 / 80) < 1e-15, o" \
+  "$work/sampled/run.json" || fail "run.json: the observed particle's reference position"
+# and mpm compare reads observers.csv as any other CSV, at the particle's reference position
+"$mpm" compare "$work/sampled/observers.csv" "$bar" --at 0.00166625 --column A.v_x=v_x >/dev/null || fail "compare observers.csv"
+bad "^error: --set\(1\):1: output.every: give output.every or output.times, not both" run "$bar" --out "$work/never" \
+  --set output.every=2 --set 'output.times=[1e-5]'
+bad "^error: --set\(1\):1: output.times: times must increase" run "$bar" --out "$work/never" --set 'output.times=[2e-5, 1e-5]'
+bad "^error: --set\(1\):1: output.times: times must lie in \[0, solver.end_time\]" run "$bar" --out "$work/never" --set 'output.times=[1.0]'
+bad "^error: --set\(1\):1: observer\[0\].position: lies outside the body \[0, 0.1333\] on x, where exact = \"dyka_bar\"" \
+  run "$bar" --out "$work/never" --set 'observer[0].position=[-0.001]'
+[[ -e "$work/never" ]] && fail "a bad run made its output folder"
+
+# --- help: both commands in mpm --help and the usage string, each with its own --help.
+"$mpm" --help | grep -q "usage: mpm exact SCENE.toml" || fail "mpm --help lacks mpm exact"
+"$mpm" --help | grep -q "usage: mpm compare RESULT.csv SCENE.toml" || fail "mpm --help lacks mpm compare"
+"$mpm" 2>&1 | grep -q "mpm exact SCENE.toml" || fail "the usage string lacks mpm exact"
+"$mpm" 2>&1 | grep -q "mpm compare RESULT.csv" || fail "the usage string lacks mpm compare"
+"$mpm" exact --help | grep -q "manufactured_large" || fail "mpm exact --help lacks a solution"
+"$mpm" compare --help | grep -q "rms_normalised" || fail "mpm compare --help"
+
+echo "cli_exact_compare: $failures failed"
+[[ $failures -eq 0 ]]

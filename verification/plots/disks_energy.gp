@@ -1,0 +1,16 @@
+# The colliding disks (scenes/colliding_disks.toml): kinetic, strain and total energy against time,
+# and the total momentum. Called by verification/disks_figures.sh with data and out set.
+load dir."/common.gp"
+set key top right
+set xlabel "t (s)"
+draw = "set multiplot layout 2,1; \
+  set ylabel 'energy (J per m of thickness)'; \
+  plot data.'/disks_energy.csv' using 1:2 with lines lw 1.5 title 'kinetic', \
+       '' using 1:3 with lines lw 1.5 title 'strain', \
+       '' using 1:4 with lines lw 2 lc rgb 'black' title 'total'; \
+  set ylabel 'momentum (kg m/s per m)'; \
+  plot data.'/disks_energy.csv' using 1:5 with lines lw 1.5 title 'momentum, x', \
+       '' using 1:6 with lines lw 1.5 dt 2 title 'momentum, y'; \
+  unset multiplot"
+w = 7; h = 5.5
+load dir."/output.gp"
