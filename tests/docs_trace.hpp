@@ -10,7 +10,8 @@
 ///     - test: \ref tests_eq16 "doctests of Eq. (16)"
 ///
 /// or `- no kernel: <why>` instead of the kernel line. The doctests of mpm/ and tests/ name the equations
-/// they check in their TEST_CASE names ("Eq. (16): ...", "Eqs. (19)-(22): ...", "Eq. (A.5), Eq. (A.19): ...").
+/// they check in their TEST_CASE names, each on its own ("Eq. (16): ...", "Eq. (A.5), Eq. (A.19): ..."),
+/// so that `mpm_tests -tc='*Eq. (N)*'` runs them; a range "Eqs. (19)-(22)" is reported as a problem.
 /// This header parses both and lists what is missing (tests/docs_trace.cpp runs it under ctest), and
 /// writes the page of tests by equation that `make docs` renders (anchors tests_eq16, tests_eqA5).
 /// It knows no part of the solver: it reads text only.
@@ -18,8 +19,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <regex>
 #include <set>
@@ -45,64 +48,26 @@ inline std::string anchor_suffix(const std::string& label) {
   return suffix;
 }
 
-/// Splits "A.12" into ("A.", 12) and "7" into ("", 7); false for anything else.
-inline bool split_label(const std::string& label, std::string& prefix, int& number) {
-  static const std::regex shape(R"(^(A\.)?([0-9]{1,3})$)");
-  std::smatch match;
-  if (!std::regex_match(label, match, shape)) return false;
-  prefix = match[1].str();
-  number = std::stoi(match[2].str());
-  return true;
+/// Every equation a text names as "Eq. (16)" or "Eq. (A.5)", in order, each once: exactly the labels N
+/// for which doctest's filter `-tc='*Eq. (N)*'` (a wildcard match that ignores case) selects a test of
+/// that name. A range or list after "Eqs." ("Eqs. (19)-(22)", "Eqs. (14), (15)") names nothing: the
+/// filter a user types for Eq. (20) would not run such a test.
+inline std::vector<std::string> equations_named(const std::string& text) {
+  static const std::regex named(R"(eq\. \(((?:A\.)?[0-9]{1,3})\))", std::regex::icase);
+  std::vector<std::string> labels;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), named); it != std::sregex_iterator(); ++it) {
+    std::string label = (*it)[1].str();
+    if (!label.empty() && label[0] == 'a') label[0] = 'A';
+    if (std::find(labels.begin(), labels.end(), label) == labels.end()) labels.push_back(label);
+  }
+  return labels;
 }
 
-/// Every equation a text names: "Eq. (16)", "Eqs. (19)-(22)" (each of 19, 20, 21, 22),
-/// "Eqs. (19)-(22) and (31)-(33)", "Eqs. (14), (15)". Labels as in equation_labels().
-inline std::vector<std::string> equations_named(const std::string& text) {
-  std::vector<std::string> named;
-  std::size_t at = 0;
-  while ((at = text.find("Eq", at)) != std::string::npos) {
-    std::size_t i = at + 2;
-    at = i;
-    if (i < text.size() && text[i] == 's') ++i;
-    if (i >= text.size() || text[i] != '.') continue;
-    ++i;
-    std::string previous_prefix;
-    int previous_number = 0;
-    bool range_open = false;
-    while (true) {
-      while (i < text.size() && text[i] == ' ') ++i;
-      if (i >= text.size() || text[i] != '(') break;
-      const std::size_t close = text.find(')', i);
-      if (close == std::string::npos) break;
-      const std::string label = text.substr(i + 1, close - i - 1);
-      std::string prefix;
-      int number = 0;
-      if (!split_label(label, prefix, number)) break;
-      if (range_open && prefix == previous_prefix && number > previous_number) {
-        for (int n = previous_number + 1; n <= number; ++n) named.push_back(prefix + std::to_string(n));
-      } else {
-        named.push_back(label);
-      }
-      previous_prefix = prefix;
-      previous_number = number;
-      i = close + 1;
-      // What joins this label to the next: "-" opens a range, ", " or " and " lists another.
-      if (i < text.size() && text[i] == '-') {
-        range_open = true;
-        ++i;
-      } else if (text.compare(i, 2, ", ") == 0 && i + 2 < text.size() && text[i + 2] == '(') {
-        range_open = false;
-        i += 2;
-      } else if (text.compare(i, 5, " and ") == 0 && i + 5 < text.size() && text[i + 5] == '(') {
-        range_open = false;
-        i += 5;
-      } else {
-        break;
-      }
-    }
-    at = i;
-  }
-  return named;
+/// True when a text gives equations as "Eqs. (...)" (a range or a list), which no filter
+/// `-tc='*Eq. (N)*'` matches.
+inline bool names_equations_in_plural(const std::string& text) {
+  static const std::regex plural(R"(eqs\. \()", std::regex::icase);
+  return std::regex_search(text, plural);
 }
 
 /// One doctest: its name, and where it is (path relative to the source root, 1-based line).
@@ -331,6 +296,10 @@ inline Trace trace(const Sources& sources) {
   for (const auto& [file, text] : sources.code)
     for (const TestCase& test : test_cases_in(text, file)) {
       result.test_cases.push_back(test);
+      if (names_equations_in_plural(test.name))
+        result.problems.push_back(test.file + ":" + std::to_string(test.line) + ": the doctest \"" + test.name +
+                                  "\" names equations as \"Eqs. (...)\", which no filter -tc='*Eq. (N)*' runs: "
+                                  "write \"Eq. (N)\" for each");
       std::set<std::string> labels;
       for (const std::string& label : equations_named(test.name)) labels.insert(label);
       for (const std::string& label : labels) result.tests_by_equation[label].push_back(test);
@@ -388,7 +357,51 @@ inline std::vector<std::string> check(const Sources& sources) {
     if (!section.test_anchor.empty() && section.test_anchor != test_anchor)
       errors.push_back(eq + "its test line refers to " + section.test_anchor + ", not " + test_anchor + at);
     if ((!section.kernels.empty() || !section.test_anchor.empty()) && !has_tests)
-      errors.push_back(eq + "no TEST_CASE in mpm/ or tests/ names it (\"Eq. (" + label + "): ...\" or a range \"Eqs. (M)-(N)\")");
+      errors.push_back(eq + "no TEST_CASE in mpm/ or tests/ names it (\"Eq. (" + label + "): ...\")");
+  }
+  return errors;
+}
+
+/// The filter a user types for the tests of one equation: `*Eq. (16)*`, given to `-tc=`.
+inline std::string equation_filter(const std::string& label) { return "*Eq. (" + label + ")*"; }
+
+/// How many test cases `program --list-test-cases -tc='*Eq. (N)*'` lists (doctest's own count of the
+/// test cases passing the filter), or -1 when the program cannot be run or says no count.
+inline int filtered_test_count(const std::string& program, const std::string& label) {
+  const std::string command = "'" + program + "' --list-test-cases '-tc=" + equation_filter(label) + "' 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return -1;
+  std::string output;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
+  const int status = pclose(pipe);
+  static const std::regex count_line(R"(unskipped test cases passing the current filters: ([0-9]+))");
+  std::smatch match;
+  if (status != 0 || !std::regex_search(output, match, count_line)) return -1;
+  return std::stoi(match[1].str());
+}
+
+/// The equations with a kernel that the filter `-tc='*Eq. (N)*'` does not reach: `count(label)` says how
+/// many test cases the filter selects (filtered_test_count on the test program in the real check), and
+/// it must be at least one, and as many as the TEST_CASEs of the sources that name the equation (fewer
+/// means a test file is not compiled into the program). One message per equation, naming it.
+inline std::vector<std::string> check_filter(const Sources& sources, const std::function<int(const std::string&)>& count) {
+  const Trace parsed = trace(sources);
+  std::vector<std::string> errors;
+  for (const std::string& label : equation_labels()) {
+    const auto found = parsed.sections.find(label);
+    if (found == parsed.sections.end() || found->second.front().kernels.empty()) continue;
+    const std::string filter = "-tc='" + equation_filter(label) + "'";
+    const int selected = count(label);
+    const auto named = parsed.tests_by_equation.find(label);
+    const int in_sources = named == parsed.tests_by_equation.end() ? 0 : static_cast<int>(named->second.size());
+    if (selected < 0)
+      errors.push_back("Eq. (" + label + "): the test program did not run with " + filter + " (is it built?)");
+    else if (selected == 0)
+      errors.push_back("Eq. (" + label + "): it has a kernel, but mpm_tests " + filter + " runs no test case");
+    else if (selected < in_sources)
+      errors.push_back("Eq. (" + label + "): mpm_tests " + filter + " runs " + std::to_string(selected) + " test cases, "
+                       "the sources name it in " + std::to_string(in_sources));
   }
   return errors;
 }
@@ -436,9 +449,9 @@ inline std::string tests_page(const Sources& sources) {
   std::ostringstream page;
   page << "# Tests by equation {#tests_by_equation}\n\n"
        << "Generated by `make docs` from the `TEST_CASE` names of mpm/ and tests/: a doctest checks an equation "
-          "when its name says so (\"Eq. (16): ...\", or a range \"Eqs. (19)-(22): ...\"). Run the tests of one "
-          "equation with `build/bin/mpm_tests -tc=\"*Eq. (16)*\"`; the check `docs_trace` (run by ctest) fails when "
-          "an equation of the paper has a kernel but no test.\n\n"
+          "when its name says so, each equation on its own (\"Eq. (16): ...\", \"Eq. (19), Eq. (20): ...\"). "
+          "Run the tests of one equation with `build/bin/mpm_tests -tc=\"*Eq. (16)*\"`; the check `docs_trace` (run by "
+          "ctest) fails when an equation of the paper has a kernel but that filter runs no test.\n\n"
        << "| equation | stated on | doctests |\n|---|---|---|\n";
   for (const std::string& label : equation_labels()) {
     const auto tests = parsed.tests_by_equation.find(label);
@@ -472,8 +485,7 @@ inline std::string tests_page(const Sources& sources) {
       page << "No doctest names Eq. (" << label << ").\n\n";
       continue;
     }
-    page << "Doctests that name Eq. (" << label << ") (`build/bin/mpm_tests -tc=\"*Eq. (" << label << ")*\"` runs those "
-         << "that spell it out; a range such as \"Eqs. (19)-(22)\" counts for each equation in it):\n\n";
+    page << "Doctests that name Eq. (" << label << ") (`build/bin/mpm_tests -tc=\"*Eq. (" << label << ")*\"` runs them):\n\n";
     for (const TestCase& test : tests->second)
       page << "- <a href=\"" << source_listing_html(test.file) << "#" << line_anchor(test.line) << "\">" << test.file << ":"
            << test.line << "</a>: `" << test.name << "`\n";

@@ -59,11 +59,11 @@ void check_fall(const std::string& integrator, Expected expected_offset) {
 
 }  // namespace
 
-TEST_CASE("Eqs. (19)-(22): free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
+TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
   check_fall("fe", [](double g, double dt, double t) { return 0.5 * g * dt * t; });
 }
 
-TEST_CASE("Eqs. (26)-(33): free fall, predictor-corrector: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2 to 1e-11 m") {
+TEST_CASE("Eq. (26), Eq. (27), Eq. (28), Eq. (29), Eq. (30), Eq. (31), Eq. (32), Eq. (33): free fall, predictor-corrector: x^n = x0 + v0 t + g t^2/2 + g dt t - g dt^2/2 to 1e-11 m") {
   check_fall("npc", [](double g, double dt, double t) { return g * dt * t - 0.5 * g * dt * dt; });
 }
 

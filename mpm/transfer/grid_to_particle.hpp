@@ -83,7 +83,7 @@ void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim
   });
 }
 
-TEST_CASE("Eq. (18), Eqs. (19)-(22), Eqs. (31)-(33): G2P on the worked example by hand") {
+TEST_CASE("Eq. (18), Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (31), Eq. (32), Eq. (33): G2P on the worked example by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   grid.nodal_mass = {1.5, 2.5, 2.0};

@@ -72,7 +72,7 @@ void nodal_mass_and_velocity_predictor(const Particles<Dim>& particles, const St
                                                             : Vector<Dim>::Zero();
 }
 
-TEST_CASE("Eq. (8), Eq. (13), Eqs. (21)-(22), Eqs. (26)-(29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
+TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), Eq. (29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   nodal_mass_and_momentum(example.particles, example.stencils, grid);
