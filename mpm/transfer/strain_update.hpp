@@ -116,6 +116,7 @@ TEST_CASE("Eq. (16), Eq. (17): a uniaxial stretch v = r x on moving particles: t
   const double stretch = (particles.position[1][0] - particles.position[0][0]) / 0.2;
   CHECK(stretch == doctest::Approx(std::pow(1.0001, 5000)).epsilon(1e-12));
   CHECK(particles.strain[0](0, 0) == doctest::Approx(0.5).epsilon(1e-12));
+  CHECK(particles.stress[0](0, 0) == doctest::Approx(100.0 * 0.5).epsilon(1e-12));  // E times the total strain
   CHECK(std::abs(particles.strain[0](0, 0) - std::log(stretch)) < 3e-5);  // 0.5 - 0.499975
   CHECK(std::abs(particles.strain[0](0, 0) - (stretch - 1.0)) > 0.14);    // 0.6487 - 0.5
   CHECK(particles.density[1] * stretch == doctest::Approx(4.0).epsilon(1e-12));
