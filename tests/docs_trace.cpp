@@ -6,7 +6,9 @@
 ///                                                 (with build/bin/mpm_tests run under each equation's
 ///                                                 filter -tc='*Eq. (N)*'), and the checker itself on
 ///                                                 small synthetic inputs
-///     build/bin/docs_trace --tests-page FILE.md   write the generated page of tests by equation
+///     build/bin/docs_trace --tests-page FILE.md [MUTANTS.csv]
+///                                                 write the generated page of tests by equation, with
+///                                                 the mutants of make mutants (results/mutants/mutants.csv)
 ///
 /// The real check fails with one message per missing piece, each naming its equation, e.g.
 /// "Eq. (41): no TEST_CASE in mpm/ or tests/ names it".
@@ -217,6 +219,31 @@ TEST_CASE("docs_trace: filtered_test_count runs the test program with the filter
   CHECK(docs_trace::filtered_test_count(MPM_SOURCE_DIR "/no/such/program", "16") == -1);
 }
 
+TEST_CASE("docs_trace: the mutants of make mutants on each equation's page of tests") {
+  const std::string csv =
+      "id,equations,file,what,fate,stage,killed_by,equivalent,seconds\n"
+      "gamma_swap,26 29,mpm/transfer/particle_to_grid.hpp,\"gamma for (1 - gamma), |x|\",killed,own doctests,\"Eq. (26): \"\"x\"\"\",,5.0\n"
+      "indices,16,mpm/transfer/strain_update.hpp,swapped,survived,mpm_tests,,the symmetric part,80.0\n";
+  const auto mutants = docs_trace::mutants_from_csv(csv);
+  REQUIRE(mutants.size() == 2);
+  CHECK(mutants[0].equations == std::vector<std::string>{"26", "29"});
+  CHECK(mutants[0].what == "gamma for (1 - gamma), |x|");
+  CHECK(mutants[0].killed_by == "Eq. (26): \"x\"");
+  CHECK(mutants[1].equivalent == "the symmetric part");
+  Sources sources = all_without_kernels();
+  sources.pages["paper/02_sample.md"] =
+      "# Two {#paper_two}\n\n" + section("16", "- kernel: \\ref mpm::strain_rate \"strain_rate()\" in mpm/transfer/strain_update.hpp") +
+      section("A.5", "- kernel: \\ref mpm::exact::ElasticBar::stress \"stress()\" in mpm/exact/bar.hpp");
+  const std::string page = docs_trace::tests_page(sources, mutants);
+  CHECK(page.find("2 mutants of the kernels, 1 killed by the tests, 1 surviving as equivalent") != std::string::npos);
+  CHECK(page.find("| `indices` | mpm/transfer/strain_update.hpp | `swapped` | `survived (mpm_tests), equivalent: the symmetric part` |  |") !=
+        std::string::npos);
+  CHECK(page.find("`gamma for (1 - gamma), \u2223x\u2223`") != std::string::npos);  // a bar would end the cell
+  CHECK(page.find("No mutant of `make mutants` names Eq. (A.5).") != std::string::npos);
+  CHECK(page.find("make mutants` has not been run") == std::string::npos);
+  CHECK(docs_trace::tests_page(sources).find("make mutants` has not been run") != std::string::npos);
+}
+
 TEST_CASE("docs_trace: Doxygen's names of source listings and line anchors") {
   CHECK(docs_trace::source_listing_html("mpm/exact/bar.hpp") == "bar_8hpp_source.html");
   CHECK(docs_trace::source_listing_html("mpm/transfer/grid_to_particle.hpp") == "grid__to__particle_8hpp_source.html");
@@ -239,9 +266,10 @@ TEST_CASE("docs_trace: every equation (1)-(44), (A.1)-(A.19) of paper/ has its s
 }
 
 int main(int argc, char** argv) {
-  if (argc == 3 && std::string(argv[1]) == "--tests-page") {
+  if ((argc == 3 || argc == 4) && std::string(argv[1]) == "--tests-page") {
+    const auto mutants = argc == 4 ? docs_trace::mutants_from_csv(docs_trace::read_text(argv[3])) : std::vector<docs_trace::MutantRecord>{};
     std::ofstream out(argv[2]);
-    out << docs_trace::tests_page(docs_trace::read_sources(MPM_SOURCE_DIR));
+    out << docs_trace::tests_page(docs_trace::read_sources(MPM_SOURCE_DIR), mutants);
     if (!out) {
       std::cerr << "docs_trace: could not write " << argv[2] << "\n";
       return 1;
