@@ -119,7 +119,9 @@ class Copy:
         self.lock = threading.Lock()
 
     def make(self):
+        # Afresh, tree and build folder: objects left by an earlier run may have been compiled from a mutant.
         shutil.rmtree(self.tree, ignore_errors=True)
+        shutil.rmtree(self.build, ignore_errors=True)
         os.makedirs(self.tree)
         for name in COPIED:
             source = os.path.join(ROOT, name)
@@ -277,7 +279,6 @@ def main():
                 copy.restore(mutant)
             mutant.seconds += time.time() - began
             print(f"mutants: {mutant.id}: {mutant.fate} by mpm_tests ({time.time() - began:.0f} s)", flush=True)
-        copy.build_target("mpm_tests", jobs)  # leave the copy's program unmutated
 
     elapsed = time.time() - start
     problems = []
