@@ -2,7 +2,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: deps configure build test figures bench docs clean sanitize
+.PHONY: deps configure build test figures bench docs clean sanitize mutants
 
 deps:
 	@bash .ci/install-deps.sh
@@ -38,6 +38,13 @@ sanitize: deps
 figures: configure
 	@cmake --build $(BUILD_DIR) --target figure_programs -j $(JOBS)
 	@bash verification/make_figures.sh $(BUILD_DIR)
+
+# Mutation testing (tests/mutants/run.py): each mutant of tests/mutants/mutants.tsv applied to a copy of
+# the tree in $(BUILD_DIR)/mutants/, rebuilt and tested; fates in results/mutants/. At most 2 copies
+# side by side (each compiles on one core; the survivors' rebuilds of mpm_tests use JOBS).
+MUTANT_JOBS ?= 2
+mutants: deps
+	@python3 tests/mutants/run.py --build-dir $(BUILD_DIR) --jobs $(MUTANT_JOBS)
 
 bench: build
 	@bash benchmarks/run.sh $(BUILD_DIR)

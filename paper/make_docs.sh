@@ -21,7 +21,9 @@ if [[ ! -f $build/CMakeCache.txt ]]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release > "$out/configure.log" 2>&1 || { cat "$out/configure.log"; exit 1; }
 fi
 cmake --build "$build" --target docs_trace > "$out/build.log" 2>&1 || { cat "$out/build.log"; exit 1; }
-"$build/bin/docs_trace" --tests-page "$out/generated/tests_by_equation.md"
+# With the mutants of make mutants, when it has been run (results/mutants/mutants.csv).
+mutants=(); [[ -f results/mutants/mutants.csv ]] && mutants=(results/mutants/mutants.csv)
+"$build/bin/docs_trace" --tests-page "$out/generated/tests_by_equation.md" "${mutants[@]}"
 
 for name in $(sed -n 's/.*\\image html \([A-Za-z0-9_.-]*\).*/\1/p' paper/*.md | sort -u); do
   if [[ -f results/figures/$name ]]; then

@@ -45,7 +45,7 @@ diff <(tail -n +2 "$work/resolved.toml") <(tail -n +2 "$work/out") >/dev/null ||
   fail "the printed scene, read back and printed again, differs"
 
 # --- a run: run.json, snapshots.pvd, exact.csv, mpm plot ------------------------------------------
-expect 0 -- run "$scene" --out "$work/bar" --set 'exact="dyka_bar"'
+expect 0 -- run "$scene" --out "$work/bar"  # the scene sets exact = "dyka_bar" itself
 grep -q '"courant" : "max"' "$work/bar/run.json" || fail "run.json: the resolved scene lacks its defaults"
 grep -q '"exact" : "dyka_bar"' "$work/bar/run.json" || fail "run.json: the resolved scene lacks the exact key"
 # issue 18: the version (git at build time), the command line and the units, in valid JSON

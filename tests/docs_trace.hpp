@@ -10,7 +10,8 @@
 ///     - test: \ref tests_eq16 "doctests of Eq. (16)"
 ///
 /// or `- no kernel: <why>` instead of the kernel line. The doctests of mpm/ and tests/ name the equations
-/// they check in their TEST_CASE names ("Eq. (16): ...", "Eqs. (19)-(22): ...", "Eq. (A.5), Eq. (A.19): ...").
+/// they check in their TEST_CASE names, each on its own ("Eq. (16): ...", "Eq. (A.5), Eq. (A.19): ..."),
+/// so that `mpm_tests -tc='*Eq. (N)*'` runs them; a range "Eqs. (19)-(22)" is reported as a problem.
 /// This header parses both and lists what is missing (tests/docs_trace.cpp runs it under ctest), and
 /// writes the page of tests by equation that `make docs` renders (anchors tests_eq16, tests_eqA5).
 /// It knows no part of the solver: it reads text only.
@@ -18,8 +19,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <regex>
 #include <set>
@@ -45,64 +48,26 @@ inline std::string anchor_suffix(const std::string& label) {
   return suffix;
 }
 
-/// Splits "A.12" into ("A.", 12) and "7" into ("", 7); false for anything else.
-inline bool split_label(const std::string& label, std::string& prefix, int& number) {
-  static const std::regex shape(R"(^(A\.)?([0-9]{1,3})$)");
-  std::smatch match;
-  if (!std::regex_match(label, match, shape)) return false;
-  prefix = match[1].str();
-  number = std::stoi(match[2].str());
-  return true;
+/// Every equation a text names as "Eq. (16)" or "Eq. (A.5)", in order, each once: exactly the labels N
+/// for which doctest's filter `-tc='*Eq. (N)*'` (a wildcard match that ignores case) selects a test of
+/// that name. A range or list after "Eqs." ("Eqs. (19)-(22)", "Eqs. (14), (15)") names nothing: the
+/// filter a user types for Eq. (20) would not run such a test.
+inline std::vector<std::string> equations_named(const std::string& text) {
+  static const std::regex named(R"(eq\. \(((?:A\.)?[0-9]{1,3})\))", std::regex::icase);
+  std::vector<std::string> labels;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), named); it != std::sregex_iterator(); ++it) {
+    std::string label = (*it)[1].str();
+    if (!label.empty() && label[0] == 'a') label[0] = 'A';
+    if (std::find(labels.begin(), labels.end(), label) == labels.end()) labels.push_back(label);
+  }
+  return labels;
 }
 
-/// Every equation a text names: "Eq. (16)", "Eqs. (19)-(22)" (each of 19, 20, 21, 22),
-/// "Eqs. (19)-(22) and (31)-(33)", "Eqs. (14), (15)". Labels as in equation_labels().
-inline std::vector<std::string> equations_named(const std::string& text) {
-  std::vector<std::string> named;
-  std::size_t at = 0;
-  while ((at = text.find("Eq", at)) != std::string::npos) {
-    std::size_t i = at + 2;
-    at = i;
-    if (i < text.size() && text[i] == 's') ++i;
-    if (i >= text.size() || text[i] != '.') continue;
-    ++i;
-    std::string previous_prefix;
-    int previous_number = 0;
-    bool range_open = false;
-    while (true) {
-      while (i < text.size() && text[i] == ' ') ++i;
-      if (i >= text.size() || text[i] != '(') break;
-      const std::size_t close = text.find(')', i);
-      if (close == std::string::npos) break;
-      const std::string label = text.substr(i + 1, close - i - 1);
-      std::string prefix;
-      int number = 0;
-      if (!split_label(label, prefix, number)) break;
-      if (range_open && prefix == previous_prefix && number > previous_number) {
-        for (int n = previous_number + 1; n <= number; ++n) named.push_back(prefix + std::to_string(n));
-      } else {
-        named.push_back(label);
-      }
-      previous_prefix = prefix;
-      previous_number = number;
-      i = close + 1;
-      // What joins this label to the next: "-" opens a range, ", " or " and " lists another.
-      if (i < text.size() && text[i] == '-') {
-        range_open = true;
-        ++i;
-      } else if (text.compare(i, 2, ", ") == 0 && i + 2 < text.size() && text[i + 2] == '(') {
-        range_open = false;
-        i += 2;
-      } else if (text.compare(i, 5, " and ") == 0 && i + 5 < text.size() && text[i + 5] == '(') {
-        range_open = false;
-        i += 5;
-      } else {
-        break;
-      }
-    }
-    at = i;
-  }
-  return named;
+/// True when a text gives equations as "Eqs. (...)" (a range or a list), which no filter
+/// `-tc='*Eq. (N)*'` matches.
+inline bool names_equations_in_plural(const std::string& text) {
+  static const std::regex plural(R"(eqs\. \()", std::regex::icase);
+  return std::regex_search(text, plural);
 }
 
 /// One doctest: its name, and where it is (path relative to the source root, 1-based line).
@@ -331,6 +296,10 @@ inline Trace trace(const Sources& sources) {
   for (const auto& [file, text] : sources.code)
     for (const TestCase& test : test_cases_in(text, file)) {
       result.test_cases.push_back(test);
+      if (names_equations_in_plural(test.name))
+        result.problems.push_back(test.file + ":" + std::to_string(test.line) + ": the doctest \"" + test.name +
+                                  "\" names equations as \"Eqs. (...)\", which no filter -tc='*Eq. (N)*' runs: "
+                                  "write \"Eq. (N)\" for each");
       std::set<std::string> labels;
       for (const std::string& label : equations_named(test.name)) labels.insert(label);
       for (const std::string& label : labels) result.tests_by_equation[label].push_back(test);
@@ -388,7 +357,51 @@ inline std::vector<std::string> check(const Sources& sources) {
     if (!section.test_anchor.empty() && section.test_anchor != test_anchor)
       errors.push_back(eq + "its test line refers to " + section.test_anchor + ", not " + test_anchor + at);
     if ((!section.kernels.empty() || !section.test_anchor.empty()) && !has_tests)
-      errors.push_back(eq + "no TEST_CASE in mpm/ or tests/ names it (\"Eq. (" + label + "): ...\" or a range \"Eqs. (M)-(N)\")");
+      errors.push_back(eq + "no TEST_CASE in mpm/ or tests/ names it (\"Eq. (" + label + "): ...\")");
+  }
+  return errors;
+}
+
+/// The filter a user types for the tests of one equation: `*Eq. (16)*`, given to `-tc=`.
+inline std::string equation_filter(const std::string& label) { return "*Eq. (" + label + ")*"; }
+
+/// How many test cases `program --list-test-cases -tc='*Eq. (N)*'` lists (doctest's own count of the
+/// test cases passing the filter), or -1 when the program cannot be run or says no count.
+inline int filtered_test_count(const std::string& program, const std::string& label) {
+  const std::string command = "'" + program + "' --list-test-cases '-tc=" + equation_filter(label) + "' 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return -1;
+  std::string output;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
+  const int status = pclose(pipe);
+  static const std::regex count_line(R"(unskipped test cases passing the current filters: ([0-9]+))");
+  std::smatch match;
+  if (status != 0 || !std::regex_search(output, match, count_line)) return -1;
+  return std::stoi(match[1].str());
+}
+
+/// The equations with a kernel that the filter `-tc='*Eq. (N)*'` does not reach: `count(label)` says how
+/// many test cases the filter selects (filtered_test_count on the test program in the real check), and
+/// it must be at least one, and as many as the TEST_CASEs of the sources that name the equation (fewer
+/// means a test file is not compiled into the program). One message per equation, naming it.
+inline std::vector<std::string> check_filter(const Sources& sources, const std::function<int(const std::string&)>& count) {
+  const Trace parsed = trace(sources);
+  std::vector<std::string> errors;
+  for (const std::string& label : equation_labels()) {
+    const auto found = parsed.sections.find(label);
+    if (found == parsed.sections.end() || found->second.front().kernels.empty()) continue;
+    const std::string filter = "-tc='" + equation_filter(label) + "'";
+    const int selected = count(label);
+    const auto named = parsed.tests_by_equation.find(label);
+    const int in_sources = named == parsed.tests_by_equation.end() ? 0 : static_cast<int>(named->second.size());
+    if (selected < 0)
+      errors.push_back("Eq. (" + label + "): the test program did not run with " + filter + " (is it built?)");
+    else if (selected == 0)
+      errors.push_back("Eq. (" + label + "): it has a kernel, but mpm_tests " + filter + " runs no test case");
+    else if (selected < in_sources)
+      errors.push_back("Eq. (" + label + "): mpm_tests " + filter + " runs " + std::to_string(selected) + " test cases, "
+                       "the sources name it in " + std::to_string(in_sources));
   }
   return errors;
 }
@@ -427,26 +440,151 @@ inline std::string html_escape(const std::string& text) {
   return escaped;
 }
 
+/// One mutant of `make mutants`, as results/mutants/mutants.csv records it.
+struct MutantRecord {
+  std::string id, file, what, fate, stage, killed_by, equivalent;
+  std::vector<std::string> equations;
+};
+
+/// The rows of a CSV text (RFC 4180: fields in double quotes may hold commas, newlines and "" for ").
+inline std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string field;
+  bool quoted = false, any = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        field += c;
+      }
+      continue;
+    }
+    if (c == '"') {
+      quoted = any = true;
+    } else if (c == ',') {
+      row.push_back(field);
+      field.clear();
+      any = true;
+    } else if (c == '\n' || c == '\r') {
+      if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      if (any || !field.empty()) {
+        row.push_back(field);
+        rows.push_back(row);
+      }
+      row.clear();
+      field.clear();
+      any = false;
+    } else {
+      field += c;
+      any = true;
+    }
+  }
+  if (any || !field.empty()) {
+    row.push_back(field);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// The mutants of results/mutants/mutants.csv (columns by their header's names); empty for an empty text.
+inline std::vector<MutantRecord> mutants_from_csv(const std::string& text) {
+  const auto rows = csv_rows(text);
+  std::vector<MutantRecord> mutants;
+  if (rows.empty()) return mutants;
+  std::map<std::string, std::size_t> column;
+  for (std::size_t i = 0; i < rows[0].size(); ++i) column[rows[0][i]] = i;
+  auto field = [&](const std::vector<std::string>& row, const std::string& name) {
+    const auto at = column.find(name);
+    return at != column.end() && at->second < row.size() ? row[at->second] : std::string();
+  };
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    MutantRecord m{field(rows[r], "id"), field(rows[r], "file"), field(rows[r], "what"), field(rows[r], "fate"),
+                   field(rows[r], "stage"), field(rows[r], "killed_by"), field(rows[r], "equivalent"), {}};
+    std::istringstream labels(field(rows[r], "equations"));
+    for (std::string label; labels >> label;) m.equations.push_back(label);
+    mutants.push_back(m);
+  }
+  return mutants;
+}
+
+/// A table cell's text as a code span: no line breaks, no backquotes, and U+2223 for the bar of |x|
+/// (a bar would end the cell).
+inline std::string code_cell(const std::string& text) {
+  std::string out = "`";
+  for (char c : text) {
+    if (c == '\n' || c == '\r') out += ' ';
+    else if (c == '`') out += '\'';
+    else if (c == '|') out += "\u2223";
+    else out += c;
+  }
+  return out + "`";
+}
+
 /// The page of tests by equation (Doxygen Markdown): one subpage per equation, id tests_eq16 or
 /// tests_eqA5 and title "Eq. (16): <its title on the paper page>" (so the search box finds
 /// "Eq. (16)"), linking back to the statement and listing every TEST_CASE that names the equation,
 /// with a link to its line in the source listing.
-inline std::string tests_page(const Sources& sources) {
+inline std::string mutants_of(const std::vector<MutantRecord>& mutants, const std::string& label) {
+  std::ostringstream table;
+  table << "| mutant | file | what it changes | fate | killed by |\n|---|---|---|---|---|\n";
+  int count = 0;
+  for (const MutantRecord& m : mutants) {
+    if (std::find(m.equations.begin(), m.equations.end(), label) == m.equations.end()) continue;
+    ++count;
+    std::string fate = m.fate + (m.stage.empty() ? "" : " (" + m.stage + ")");
+    if (!m.equivalent.empty()) fate += ", equivalent: " + m.equivalent;
+    table << "| " << code_cell(m.id) << " | " << m.file << " | " << code_cell(m.what) << " | " << code_cell(fate) << " | "
+          << (m.killed_by.empty() ? "" : code_cell(m.killed_by)) << " |\n";
+  }
+  return count == 0 ? "" : table.str();
+}
+
+/// `mutants`: the records of results/mutants/mutants.csv (make mutants), shown on each equation's page;
+/// empty when make mutants has not been run.
+inline std::string tests_page(const Sources& sources, const std::vector<MutantRecord>& mutants = {}) {
   const Trace parsed = trace(sources);
   std::ostringstream page;
   page << "# Tests by equation {#tests_by_equation}\n\n"
        << "Generated by `make docs` from the `TEST_CASE` names of mpm/ and tests/: a doctest checks an equation "
-          "when its name says so (\"Eq. (16): ...\", or a range \"Eqs. (19)-(22): ...\"). Run the tests of one "
-          "equation with `build/bin/mpm_tests -tc=\"*Eq. (16)*\"`; the check `docs_trace` (run by ctest) fails when "
-          "an equation of the paper has a kernel but no test.\n\n"
-       << "| equation | stated on | doctests |\n|---|---|---|\n";
+          "when its name says so, each equation on its own (\"Eq. (16): ...\", \"Eq. (19), Eq. (20): ...\"). "
+          "Run the tests of one equation with `build/bin/mpm_tests -tc=\"*Eq. (16)*\"`; the check `docs_trace` (run by "
+          "ctest) fails when an equation of the paper has a kernel but that filter runs no test.\n\n";
+  if (mutants.empty()) {
+    page << "`make mutants` has not been run here (results/mutants/mutants.csv): run it, then `make docs`, for the "
+            "mutants of each equation's kernels and their fate.\n\n";
+  } else {
+    int killed = 0, equivalent = 0;
+    for (const MutantRecord& m : mutants) {
+      killed += m.fate == "killed" ? 1 : 0;
+      equivalent += m.fate == "survived" && !m.equivalent.empty() ? 1 : 0;
+    }
+    page << "Mutants (`make mutants`, tests/mutants/mutants.tsv, fates from results/mutants/mutants.csv): " << mutants.size()
+         << " mutants of the kernels, " << killed << " killed by the tests, " << equivalent
+         << " surviving as equivalent (each with its reason), " << mutants.size() - killed - equivalent << " other. "
+         << "Each equation's page lists its mutants.\n\n";
+  }
+  page << "| equation | stated on | doctests | mutants killed |\n|---|---|---|---|\n";
   for (const std::string& label : equation_labels()) {
     const auto tests = parsed.tests_by_equation.find(label);
     const std::size_t count = tests == parsed.tests_by_equation.end() ? 0 : tests->second.size();
     const auto section = parsed.sections.find(label);
     page << "| \\ref tests_eq" << anchor_suffix(label) << " \"Eq. (" << label << ")\" | ";
     if (section != parsed.sections.end()) page << "\\ref eq" << anchor_suffix(label) << " \"" << section->second.front().title << "\"";
-    page << " | " << count << " |\n";
+    int of_label = 0, killed = 0;
+    for (const MutantRecord& m : mutants)
+      if (std::find(m.equations.begin(), m.equations.end(), label) != m.equations.end()) {
+        ++of_label;
+        killed += m.fate == "killed" ? 1 : 0;
+      }
+    page << " | " << count << " | ";
+    if (of_label > 0) page << killed << " of " << of_label;
+    page << " |\n";
   }
   page << "\n";
   for (const std::string& label : equation_labels()) page << "- \\subpage tests_eq" << anchor_suffix(label) << "\n";
@@ -470,14 +608,19 @@ inline std::string tests_page(const Sources& sources) {
     const auto tests = parsed.tests_by_equation.find(label);
     if (tests == parsed.tests_by_equation.end()) {
       page << "No doctest names Eq. (" << label << ").\n\n";
-      continue;
+    } else {
+      page << "Doctests that name Eq. (" << label << ") (`build/bin/mpm_tests -tc=\"*Eq. (" << label << ")*\"` runs them):\n\n";
+      for (const TestCase& test : tests->second)
+        page << "- <a href=\"" << source_listing_html(test.file) << "#" << line_anchor(test.line) << "\">" << test.file << ":"
+             << test.line << "</a>: `" << test.name << "`\n";
+      page << "\n";
     }
-    page << "Doctests that name Eq. (" << label << ") (`build/bin/mpm_tests -tc=\"*Eq. (" << label << ")*\"` runs those "
-         << "that spell it out; a range such as \"Eqs. (19)-(22)\" counts for each equation in it):\n\n";
-    for (const TestCase& test : tests->second)
-      page << "- <a href=\"" << source_listing_html(test.file) << "#" << line_anchor(test.line) << "\">" << test.file << ":"
-           << test.line << "</a>: `" << test.name << "`\n";
-    page << "\n";
+    const std::string table = mutants_of(mutants, label);
+    if (!table.empty())
+      page << "Mutants of its kernels (`make mutants`; a mutant is killed when a test fails; \"own doctests\": those of "
+              "the mutated header, \"mpm_tests\": the whole test program):\n\n" << table << "\n";
+    else if (!mutants.empty() && section != parsed.sections.end() && !section->second.front().kernels.empty())
+      page << "No mutant of `make mutants` names Eq. (" << label << ").\n\n";
   }
   return page.str();
 }

@@ -63,12 +63,12 @@ void check_fall(const std::vector<std::string>& settings, Expected expected_offs
 
 }  // namespace
 
-TEST_CASE("Eqs. (19)-(22): free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
+TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): free fall, forward Euler: x^n = x0 + v0 t + g t^2/2 + g dt t/2 to 1e-11 m over 2000 steps") {
   check_fall({"solver.integrator=\"fe\""}, [](double g, double dt, double t) { return 0.5 * g * dt * t; },
              [](double, double) { return 0.0; });
 }
 
-TEST_CASE("Eq. (33): free fall, predictor-corrector with Eq. (33) as printed: x^n = x0 + v0 t + g t^2/2 to 1e-11 m, gamma 0.5 and 0.6") {
+TEST_CASE("Eq. (26), Eq. (27), Eq. (28), Eq. (29), Eq. (30), Eq. (31), Eq. (32), Eq. (33): free fall, predictor-corrector with Eq. (33) as printed: x^n = x0 + v0 t + g t^2/2 to 1e-11 m, gamma 0.5 and 0.6") {
   for (const std::string gamma : {"0.5", "0.6"})
     check_fall({"solver.integrator=\"npc\"", "solver.newmark_gamma=" + gamma}, [](double, double, double) { return 0.0; },
                [](double, double) { return 0.0; });

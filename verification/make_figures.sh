@@ -6,7 +6,8 @@
 #   results/report.md  each figure with the paper's claims about it, the measured numbers, and
 #                      whether each claim holds
 # A check that fails a bound the theory gives makes this script (and `make figures`) fail; a
-# claim of the paper that our runs do not support is reported as such, and does not.
+# claim of the paper that our runs do not support is reported as such, and does not. So does a
+# number quoted in paper/ or README.md that differs from these results (check_book_numbers.py).
 #
 # Each suite writes its data, its figures and a report fragment results/report/NN_name.md, and
 # exits 1 when one of its hard checks fails. Each suite uses every core (never more threads than
@@ -52,5 +53,8 @@ elapsed=$(( $(date +%s) - start ))
   cat "$out"/report/*.md
 } >"$out/report.md"
 echo "figures: wrote $out/figures/, data in $out/data/, report $out/report.md, in ${elapsed} s"
+# The numbers paper/ and README.md quote from these runs, each marked with its source, against them.
+(cd "$root" && python3 verification/check_book_numbers.py "$out" paper/*.md README.md) || {
+  echo "figures: a number quoted in paper/ or README.md differs from results/ (above): update the text"; status=1; }
 [[ $status -eq 0 ]] || echo "figures: FAILED (a hard check failed: see the report and the logs in $out/report/)"
 exit $status

@@ -281,7 +281,7 @@ TEST_CASE("Eq. (A.19): exact::ElasticBar: boundary relations, v(L,t) = 0 and sig
   }
 }
 
-TEST_CASE("Eqs. (A.16)-(A.19): exact::ElasticBar: the Dyka bar, velocity of the free end (paper/06_exact_bar.md)") {
+TEST_CASE("Eq. (A.16), Eq. (A.17), Eq. (A.18), Eq. (A.19): exact::ElasticBar: the Dyka bar, velocity of the free end (paper/06_exact_bar.md)") {
   // L = 0.1333 m, a = L/4, v0 = -5 m/s on [0, a]. Hand derivation: R^I_0 = R^II_0 = v0/2 on [0, a], and
   // v(0,t) = 2 F(ct). Unfolding F (paper/06_exact_bar.md): F = v0/2 on [0, a], -v0/2 on [2L - a, 2L + a],
   // +v0/2 on [4L - a, 4L + a], ... so v(0,t) = v0 for ct < a, 0 until 2L - a, -v0 until 2L + a, 0 until
@@ -355,7 +355,7 @@ TEST_CASE("Eq. (A.5), Eq. (A.19): exact::ElasticBar: Dyka tension plateau Z|v0|/
   }
 }
 
-TEST_CASE("Eqs. (A.16)-(A.19): exact::ElasticBar: a bar hitting the wall as a whole gives the square wave") {
+TEST_CASE("Eq. (A.16), Eq. (A.17), Eq. (A.18), Eq. (A.19): exact::ElasticBar: a bar hitting the wall as a whole gives the square wave") {
   // Uniform v0 = +1 m/s towards the fixed end, sigma0 = 0: R^I_0 = R^II_0 = v0/2 on [0, L], hence
   // F = +v0/2 on (0, L), -v0/2 on (L, 3L), +v0/2 on (3L, 4L), v = F(ct - X) + F(ct + X),
   // sigma = Z [F(ct + X) - F(ct - X)]. Phase by phase (c t measured in L):
@@ -391,7 +391,7 @@ TEST_CASE("Eqs. (A.16)-(A.19): exact::ElasticBar: a bar hitting the wall as a wh
   CHECK(bar.velocity(0.0, length / c) == doctest::Approx(0.0));  // at the switch: average of v0 and -v0
 }
 
-TEST_CASE("Eqs. (A.17)-(A.19): exact::ElasticBar: a stress pulse splits into two halves, sigma = -Z v right-going and +Z v left-going") {
+TEST_CASE("Eq. (A.17), Eq. (A.18), Eq. (A.19): exact::ElasticBar: a stress pulse splits into two halves, sigma = -Z v right-going and +Z v left-going") {
   // sigma0 = s on [0.4L, 0.6L], v0 = 0: R^I_0 = -s/(2Z), R^II_0 = s/(2Z). At ct = 0.25 L the halves are
   // centred at 0.75L (right-going: sigma = s/2, v = -s/(2Z)) and 0.25L (left-going: sigma = s/2, v = +s/(2Z)).
   // A compressive pulse (s < 0) pushes the material outwards on both sides.
@@ -492,7 +492,7 @@ TEST_CASE("Eq. (A.1), Eq. (A.4): momentum balance rho v_t = sigma_X in integral 
   CHECK(std::abs(wrong - right) > 0.1);
 }
 
-TEST_CASE("Eqs. (A.2)-(A.3), Eq. (A.5): sigma_t = E v_X in integral form over segments, through reflections") {
+TEST_CASE("Eq. (A.2), Eq. (A.3), Eq. (A.5): sigma_t = E v_X in integral form over segments, through reflections") {
   // (A.2) sigma = E eps and (A.3) eps_t = v_X give (A.5) sigma_t = E v_X; over [a, b] x [t1, t2]:
   //   int_a^b sigma(X, t2) dX - int_a^b sigma(X, t1) dX = E int_t1^t2 (v(b, t) - v(a, t)) dt.
   const double young = 4.0, density = 1.0;

@@ -35,4 +35,28 @@ TEST_CASE("Eq. (12), Eq. (30): nodal updates: the momentum balance and the corre
   CHECK(grid.nodal_velocity[1][0] == 0.0);
 }
 
+TEST_CASE("Eq. (12): p_I += dt f_I on every node with mass, the first and the last too; massless nodes untouched") {
+  GridFields<1> grid(3);
+  grid.nodal_mass = {2.0, 0.0, 1.0};
+  grid.nodal_momentum = {Vector<1>(1.0), Vector<1>(0.0), Vector<1>(2.0)};
+  grid.nodal_force = {Vector<1>(4.0), Vector<1>(7.0), Vector<1>(-3.0)};
+  update_nodal_momentum(0.1, grid);
+  CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.4));
+  CHECK(grid.nodal_momentum[1][0] == 0.0);
+  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(1.7));  // 2 + 0.1 (-3)
+}
+
+TEST_CASE("Eq. (30): the corrector at gamma = 0.6 by hand: gamma dt f_I / m_I, not (1 - gamma) dt f_I / m_I") {
+  // At gamma = 1/2 the two weights are equal; at 0.6: 0.5 + 0.6*0.1*4/2 = 0.62 (not 0.5 + 0.4*0.1*4/2 = 0.58),
+  // and -1 + 0.6*0.1*(-3)/0.5 = -1.36 on the second node.
+  GridFields<1> grid(3);
+  grid.nodal_mass = {2.0, 0.5, 0.0};
+  grid.nodal_velocity = {Vector<1>(0.5), Vector<1>(-1.0), Vector<1>(0.0)};
+  grid.nodal_force = {Vector<1>(4.0), Vector<1>(-3.0), Vector<1>(7.0)};
+  newmark_corrector(0.6, 0.1, grid);
+  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(0.62));
+  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-1.36));
+  CHECK(grid.nodal_velocity[2][0] == 0.0);
+}
+
 }  // namespace mpm

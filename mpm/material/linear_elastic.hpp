@@ -81,7 +81,23 @@ TEST_CASE("Eq. (3): Hooke's law: 1D, plane strain, and the constrained-column ra
   Matrix<2> stress;
   stress << 3e4, -1e4, -1e4, 7e4;
   CHECK((soil.stress<2>(soil.strain<2>(stress)) - stress).norm() < 1e-10 * stress.norm());
-  CHECK(steel.strain<1>(Matrix<1>::Constant(2e8))(0, 0) == doctest::Approx(1e-3));
+  CHECK(steel.strain<1>(Matrix<1>::Constant(2e8))(0, 0) == doctest::Approx(1e-3).epsilon(1e-12));  // Approx compares within 1e-5 of max(1, |x|)
+}
+
+TEST_CASE("Eq. (3): plane strain by hand for a strain with every component: sigma = lambda tr(eps) I + 2 G eps, sigma_zz = lambda tr(eps)") {
+  // E = 5e6 Pa, nu = 0.3: lambda = 0.3 * 5e6 / (1.3 * 0.4) = 2884615.385 Pa, 2G = 5e6 / 1.3 = 3846153.846 Pa.
+  // eps = [[1e-3, 2e-4], [2e-4, -3e-3]], tr = -2e-3: lambda tr = -5769.231 Pa, so sigma_xx = -5769.231 + 3846.154
+  // = -1923.077, sigma_yy = -5769.231 - 11538.462 = -17307.692, sigma_xy = 769.231 and sigma_zz = -5769.231.
+  const LinearElastic soil{5e6, 0.3, 6000.0};
+  Matrix<2> strain;
+  strain << 1e-3, 2e-4, 2e-4, -3e-3;
+  const Matrix<2> sigma = soil.stress<2>(strain);
+  CHECK(sigma(0, 0) == doctest::Approx(-1923.0769231));
+  CHECK(sigma(1, 1) == doctest::Approx(-17307.692308));
+  CHECK(sigma(0, 1) == doctest::Approx(769.23076923));
+  CHECK(sigma(1, 0) == doctest::Approx(769.23076923));
+  CHECK(soil.stress_zz<2>(strain) == doctest::Approx(-5769.2307692));
+  CHECK(soil.stress_zz<1>(Matrix<1>::Constant(1e-3)) == 0.0);
 }
 
 }  // namespace mpm

@@ -106,7 +106,7 @@ void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim
   });
 }
 
-TEST_CASE("Eq. (18), Eqs. (19)-(22), Eqs. (31)-(33): G2P on the worked example by hand") {
+TEST_CASE("Eq. (18), Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (31), Eq. (32), Eq. (33): G2P on the worked example by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   grid.nodal_mass = {1.5, 2.5, 2.0};
@@ -161,7 +161,7 @@ TEST_CASE("Eq. (23): the Newmark average of the particle velocity by hand, at ga
   CHECK(particles.acceleration[0][0] == doctest::Approx(1.0));
 }
 
-TEST_CASE("Eqs. (19)-(22): the PIC/FLIP blend of forward Euler by hand, and flip_fraction = 1 bit for bit FLIP") {
+TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): the PIC/FLIP blend of forward Euler by hand, and flip_fraction = 1 bit for bit FLIP") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   grid.nodal_mass = {1.5, 2.5, 2.0};
@@ -175,6 +175,19 @@ TEST_CASE("Eqs. (19)-(22): the PIC/FLIP blend of forward Euler by hand, and flip
   CHECK(flip.velocity[0][0] == doctest::Approx(1.1));
   CHECK(blend.velocity[0][0] == doctest::Approx(1.18));
   CHECK(blend.position[0][0] == flip.position[0][0]);
+}
+
+TEST_CASE("Eq. (33): the position update with the predicted nodal velocity at gamma = 0.6 by hand: v_I - gamma dt a_I") {
+  // The grid of the worked example above: a_I = (2, -2, 2), v_I = (1, -0.6, -1). At gamma = 0.6, dt = 0.1,
+  // v_I - 0.06 a_I = (0.88, -0.48, -1.12); particle 0 (N = 0.75, 0.25): 0.66 - 0.12 = 0.54, a = 1, so
+  // x = 0.25 + 0.1 (0.54) + 0.005 (1) = 0.309 ((1 - gamma) = 0.4 would give 0.311).
+  testing::WorkedExample example;
+  auto& grid = example.fields;
+  grid.nodal_mass = {1.5, 2.5, 2.0};
+  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(4.0)};
+  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
+  newmark_particle_update(example.stencils, grid, 0.6, 0.1, NewmarkPositionVelocity::predicted, example.particles);
+  CHECK(example.particles.position[0][0] == doctest::Approx(0.309));
 }
 
 }  // namespace mpm

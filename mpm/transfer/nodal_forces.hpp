@@ -42,7 +42,7 @@ void add_nodal_forces(const Particles<Dim>& particles, const Stencils<Dim>& sten
   });
 }
 
-TEST_CASE("Eq. (9), Eq. (10), Eqs. (14)-(15): nodal forces on the worked example: the internal force by hand, the body force sums to the weight") {
+TEST_CASE("Eq. (9), Eq. (10), Eq. (14), Eq. (15): nodal forces on the worked example: the internal force by hand, the body force sums to the weight") {
   testing::WorkedExample example;
   const ParticleBodyForces<1> none{{Vector<1>(0.0), Vector<1>(0.0)}, true, true};
   add_nodal_forces(example.particles, example.stencils, none, example.fields);

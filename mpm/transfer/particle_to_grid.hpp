@@ -72,7 +72,7 @@ void nodal_mass_and_velocity_predictor(const Particles<Dim>& particles, const St
                                                             : Vector<Dim>::Zero();
 }
 
-TEST_CASE("Eq. (8), Eq. (13), Eqs. (21)-(22), Eqs. (26)-(29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
+TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), Eq. (29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
   testing::WorkedExample example;
   auto& grid = example.fields;
   nodal_mass_and_momentum(example.particles, example.stencils, grid);
@@ -93,6 +93,24 @@ TEST_CASE("Eq. (8), Eq. (13), Eqs. (21)-(22), Eqs. (26)-(29): P2G on the worked 
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
   CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.52));
   CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-1.5));
+}
+
+TEST_CASE("Eq. (26), Eq. (28), Eq. (29): the predictor at gamma = 0.6 by hand: (1 - gamma) dt a_p, not gamma dt a_p") {
+  // At gamma = 1/2 the two weights are equal; at 0.6 they differ. a_0 = 8, a_1 = -5, dt = 0.1, so
+  // (1 - gamma) dt = 0.04: v_0 + 0.04 a_0 = 1.32 and v_1 + 0.04 a_1 = -1.2 (gamma dt = 0.06 would give
+  // 1.48 and -1.3). By hand: node 0: 0.75*2*1.32 / 1.5 = 1.32; node 1: (0.25*2*1.32 + 0.5*4*(-1.2)) / 2.5
+  // = (0.66 - 2.4) / 2.5 = -0.696; node 2: 0.5*4*(-1.2) / 2 = -1.2.
+  testing::WorkedExample example;
+  example.particles.acceleration[0] = Vector<1>(8.0);
+  example.particles.acceleration[1] = Vector<1>(-5.0);
+  auto& grid = example.fields;
+  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.6, 0.1, grid);
+  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.32));
+  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.696));
+  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-1.2));
+  // The momentum left beside it is the projected p_I of v_p^k alone: (1.5, -1.5, -2).
+  CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.5));
+  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-2.0));
 }
 
 }  // namespace mpm

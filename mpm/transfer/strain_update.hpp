@@ -5,12 +5,17 @@
 /// The small-strain kinematics of Eq. (1), \f$ \boldsymbol\varepsilon = \nabla^s \mathbf u \f$, are
 /// integrated in time from the velocity gradient (Eq. 16) rather than from displacements, and mass
 /// conservation, Eq. (4), \f$ \dot\rho + \rho\,\nabla\cdot\mathbf v = 0 \f$, becomes the density update Eq. (17).
-/// Integrated on the moving particles, the strain is in effect a logarithmic (finite) strain: the
-/// soil block's settlement converges to the finite-strain column, not the small-strain one (report).
+/// Integrated on the moving particles, the strain is the time integral of the rate of deformation,
+/// which is the logarithmic strain ln(lambda) only while the principal axes of stretch do not rotate
+/// (a uniaxial stretch, a confined column: the doctest below), not under rotation or simple shear. The
+/// soil block is such a confined column: its settlement converges to the finite-strain column, not the
+/// small-strain one (report).
 ///
 /// Contract: read nodal_velocity and the stencils; write the particles' epsilon_p, rho_p, sigma_p.
 #pragma once
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 #include "mpm/core/parallel.hpp"
 #include "mpm/grid/grid_fields.hpp"
@@ -74,6 +79,47 @@ TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density a
   CHECK(rate(1, 0) == doctest::Approx(0.5));
   CHECK(rate(0, 0) == doctest::Approx(0.0));
   CHECK(rate(1, 1) == doctest::Approx(0.0));
+}
+
+TEST_CASE("Eq. (17): rho / (1 + x), x = dt tr(eps_dot): positive for any expansion, in compression only while x > -1; it differs from rho e^{-x} by rho x^2 / 2, first order") {
+  // 1/(1+x) = 1 - x + x^2 - ..., e^{-x} = 1 - x + x^2/2 - ...: the x^2 terms differ, so the two agree to
+  // first order only: (1/(1+x) - e^{-x}) / x^2 = 1/2 - 5x/6 + ... -> 1/2.
+  for (const double x : {1e-2, -1e-2, 1e-3}) {
+    const double difference = updated_density(3.0, 1.0, x) - 3.0 * std::exp(-x);
+    CHECK(difference / (3.0 * x * x) == doctest::Approx(0.5).epsilon(2.0 * std::abs(x)));
+  }
+  CHECK(updated_density(3.0, 0.5, 2e6) == doctest::Approx(3.0 / (1.0 + 1e6)));  // expansion: always > 0
+  CHECK(updated_density(3.0, 0.5, 2e6) > 0.0);
+  CHECK(updated_density(3.0, 0.5, -1.0) == doctest::Approx(6.0));  // x = -0.5: compression, twice as dense
+  CHECK(updated_density(3.0, 0.5, -3.0) == doctest::Approx(-6.0));  // x = -1.5: past the limit, negative
+}
+
+TEST_CASE("Eq. (16), Eq. (17): a uniaxial stretch v = r x on moving particles: the accumulated strain is ln(lambda), not lambda - 1; rho lambda = rho_0 exactly") {
+  // Two particles move with v = r x (r = 1/s, reproduced exactly by linear shape functions) for T = 0.5 s
+  // in steps of 1e-4 s: their distance grows by (1 + r dt) a step, lambda = (1.0001)^5000 = 1.64866, so
+  // ln(lambda) = 5000 ln(1.0001) = 0.499975 and lambda - 1 = 0.6487. The strain adds r dt a step: 0.5.
+  // The density is divided by (1 + r dt) a step, as the distance is multiplied: rho lambda = rho_0.
+  const double r = 1.0, dt = 1e-4;
+  const Grid<1> grid(Vector<1>(0.0), 1.0, {2});
+  LinearShape<1> shape(grid);
+  Particles<1> particles;
+  particles.add(Vector<1>(0.5), 1.0, 4.0, Vector<1>(0.5 * r), Vector<1>(0.25));
+  particles.add(Vector<1>(0.7), 1.0, 4.0, Vector<1>(0.7 * r), Vector<1>(0.25));
+  Stencils<1> stencils;
+  stencils.resize(particles.size(), shape.capacity());
+  const std::vector<Vector<1>> nodal_velocity{Vector<1>(0.0), Vector<1>(r), Vector<1>(2.0 * r)};
+  for (int step = 0; step < 5000; ++step) {
+    compute_stencils(shape, particles.position, stencils);
+    update_strain_density_stress(stencils, nodal_velocity, LinearElastic{100.0, 0.0, 4.0}, dt, particles);
+    for (int p = 0; p < 2; ++p) particles.position[p][0] += dt * r * particles.position[p][0];
+  }
+  const double stretch = (particles.position[1][0] - particles.position[0][0]) / 0.2;
+  CHECK(stretch == doctest::Approx(std::pow(1.0001, 5000)).epsilon(1e-12));
+  CHECK(particles.strain[0](0, 0) == doctest::Approx(0.5).epsilon(1e-12));
+  CHECK(particles.stress[0](0, 0) == doctest::Approx(100.0 * 0.5).epsilon(1e-12));  // E times the total strain
+  CHECK(std::abs(particles.strain[0](0, 0) - std::log(stretch)) < 3e-5);  // 0.5 - 0.499975
+  CHECK(std::abs(particles.strain[0](0, 0) - (stretch - 1.0)) > 0.14);    // 0.6487 - 0.5
+  CHECK(particles.density[1] * stretch == doctest::Approx(4.0).epsilon(1e-12));
 }
 
 }  // namespace mpm

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# verification/check_book_numbers.py (run by make figures against results/) on a results folder and
+# pages made by hand: a number that matches its source passes; a stale one, a missing row, a missing
+# file and a regular expression that matches nothing each fail, naming the page's line.
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+check=$root/verification/check_book_numbers.py
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+mkdir -p "$work/results/data"
+printf 'shape,integrator,cells,rms_over_v0\nlinear,fe,40,0.17183\nlinear,npc,40,0.16424\n' >"$work/results/data/sweep.csv"
+printf '| mass | largest relative error 2.48e-14 | **holds** |\n' >"$work/results/report.md"
+page=$work/page.md
+expect() {  # expect CODE PATTERN: runs the check on $page
+  local code=$1 pattern=$2
+  python3 "$check" "$work/results" "$page" >"$work/out" 2>&1
+  local got=$?
+  [[ $got -eq $code ]] || fail "exit $got, want $code: $(cat "$work/out")"
+  grep -qE "$pattern" "$work/out" || fail "no /$pattern/ in: $(cat "$work/out")"
+}
+printf 'RMS 0.1718<!-- check sweep.csv shape=linear integrator=fe cells=40 : rms_over_v0 --> and +0.16<!-- check sweep.csv shape=linear integrator=npc cells=40.0 : rms_over_v0 -->;\nmass 2.48e-14<!-- check report.md /largest relative error ([-+0-9.e]+)/ -->.\n' >"$page"
+expect 0 "3 quoted numbers checked.*0 differ"
+printf 'line one\nRMS 0.1719<!-- check sweep.csv shape=linear integrator=fe cells=40 : rms_over_v0 -->\n' >"$page"
+expect 1 "page.md:2: 0.1719: the results say 0.17183"
+printf 'mass 2.6e-14<!-- check report.md /largest relative error ([-+0-9.e]+)/ -->\n' >"$page"
+expect 1 "page.md:1: 2.6e-14: the results say 2.48e-14"
+printf 'RMS 0.17<!-- check sweep.csv shape=ugimp integrator=fe cells=40 : rms_over_v0 -->\n' >"$page"
+expect 1 "0 rows of sweep.csv match"
+printf 'RMS 0.17<!-- check nothing.csv shape=linear : rms_over_v0 -->\n' >"$page"
+expect 1 "no .*nothing.csv"
+printf 'RMS 0.17<!-- check sweep.csv shape=linear integrator=fe : rms -->\n' >"$page"
+expect 1 "sweep.csv has no column rms"
+printf 'mass 1e-14<!-- check report.md /smallest error ([0-9.e-]+)/ -->\n' >"$page"
+expect 1 "matches nothing"
+echo "book_numbers: $failures failures"
+[[ $failures -eq 0 ]]
