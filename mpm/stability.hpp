@@ -107,9 +107,12 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
   } else if (!stable(low)) {
     limits.cfl_limit = 0.0;
     return limits;
-  } else if (stable(high)) {
-    limits.cfl_limit = high;
-    return limits;
+  } else {
+    while (stable(high) && high < 1e3) low = high, high *= 2.0;  // widen until unstable
+    if (stable(high)) {
+      limits.cfl_limit = std::numeric_limits<double>::infinity();
+      return limits;
+    }
   }
   while (high - low > relative_tolerance * high) {
     const double middle = 0.5 * (low + high);
@@ -123,15 +126,15 @@ extern template StabilityLimits stability_limits<1>(const io::Scene&, double);
 extern template StabilityLimits stability_limits<2>(const io::Scene&, double);
 
 /// The CFL limit of a scene's method, for `mpm run`'s warning: its shape function, integrator and options,
-/// its largest particles per cell and its Poisson ratio, on a small uniform body (16 cells in 1D; 6 x 6
-/// cells, or 4 x 4 from 2 particles per cell, in 2D), to 1e-3. A small body has fewer modes than the scene,
+/// its largest particles per cell and its Poisson ratio, on a small uniform body (16 cells in 1D; in 2D 6 x 6
+/// cells at 1 particle per cell, 4 x 4 at 2 and 2 x 2 from 3, at most 448 unknowns), to 1e-3. A small body has fewer modes than the scene,
 /// so its limit can lie a little above the scene's (2D linear NPC: 1.447 on 8 x 8 cells against 1.414 in 1D).
 inline double scene_cfl_limit(const io::Scene& scene) {
   StabilityBody body;
   body.dimension = scene.dimension;
   for (const auto& settings : scene.bodies)
     for (int ppc : settings.particles_per_cell) body.ppc = std::max(body.ppc, std::min(ppc, 4));
-  body.cells = scene.dimension == 1 ? 16 : body.ppc == 1 ? 6 : 4;
+  body.cells = scene.dimension == 1 ? 16 : body.ppc == 1 ? 6 : body.ppc == 2 ? 4 : 2;
   body.poisson_ratio = scene.poisson_ratio;
   io::Scene uniform = stability_scene(body);
   uniform.shape = scene.shape;

@@ -4,7 +4,7 @@
 /// A bar of N cells held at both ends, one particle per cell at the centres, linear shape functions,
 /// c = h = 1, started at rest in the shape of its mode j, v_p = V sin(j pi X_p / N). For this body the
 /// transfers of the step map the mode onto itself (paper/10_integrator_analysis.md): projection to the nodes
-/// multiplies it by cos(kh/2), the strain rate and the nodal force each by sin(kh/2)/h and the
+/// multiplies it by cos(kh/2), the strain rate and the nodal force each by 2 sin(kh/2)/h and the
 /// interpolation back by cos(kh/2), k = j pi / N, so that it is a mode of frequency omega = (c/h) sin(kh).
 /// The energy (kinetic plus strain) of the particles is then |A^n z0|^2 / 2 per unit mass with the 2x2
 /// amplification matrix A of the analysis and z0 = (0, V): the step shares no code with it.

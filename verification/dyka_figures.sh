@@ -43,22 +43,20 @@ g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability
   echo
   echo "![dyka_stability](figures/dyka_stability.png)"
   echo
-  echo "Bisection to 1e-4 on the exit code of \`mpm run\` (0: bounded for 5 ms; 3: stopped by the solver's own diagnosis, here the energy above twice its initial value), 40 cells, at the paper's amplitude v0 = 5 m/s and at v0/100, beside the limit from the method's own linearised step (\`mpm stability --cells 40\`, a bar held at both ends; paper/10_integrator_analysis.md) and from the one-mode analysis."
+  echo "Each method's limit from its own linearised step (\`mpm stability --cells 40\`, a bar held at both ends; paper/10_integrator_analysis.md) and from the one-mode analysis, beside runs of the Dyka bar (40 cells, 20 ms, about 190 periods) at a scan of CFL numbers from 0.90 to 1.05 times the step's limit ($(echo 0.90 0.92 0.94 0.95 0.96 0.97 0.98 0.985 0.99 0.995 1.005 1.01 1.02 1.05)), at the paper's amplitude v0 = 5 m/s and at v0/100. A run is unstable when the solver stops it (energy above 100 times its initial value, NaN, a particle off the grid). Every CFL of the scan is run: the stable CFLs need not form an interval. *Stable up to*: the largest scanned CFL below which every scanned run is stable; *unstable below the limit*: the scanned CFLs below the step's limit whose runs the solver stopped."
   echo
-  echo "| method | runs, v0: stable / unstable CFL | runs, v0/100: stable / unstable CFL | linearised step | one-mode analysis | the solver's diagnosis at v0 |"
-  echo "|---|---|---|---|---|---|"
-  tail -n +2 "$data/dyka_stability.csv" | awk -F, '{d=$8; for(i=9;i<=NF;i++) d=d","$i; printf "| %s | %s / %s | %s / %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7, d}'
+  echo "| method | linearised step | one-mode analysis | v0: stable up to / first unstable | v0: unstable below the limit | v0/100: stable up to / first unstable | v0/100: unstable below the limit | the solver's diagnosis at v0's first unstable CFL |"
+  echo "|---|---|---|---|---|---|---|---|"
+  tail -n +2 "$data/dyka_stability.csv" | awk -F, '{d=$10; for(i=11;i<=NF;i++) d=d","$i; printf "| %s | %s | %s | %s / %s | %s | %s / %s | %s | %s |\n", $1, $6, $7, ($2 == "nan" ? "below the scan" : $2), $3, ($8 == "" ? "none" : $8), ($4 == "nan" ? "below the scan" : $4), $5, ($9 == "" ? "none" : $9), d}'
   echo
-  # How far the runs' limits lie from the step's: the damped Eq. (32) rows, the undamped rows (forward Euler, the average).
   tail -n +2 "$data/dyka_stability.csv" | awk -F, '
     function gap(run, step) { return 100 * (run - step) / step }
-    { damped = $1 ~ /_npc/ && $1 !~ /average/;
-      large = gap($2, $6); small = gap($4, $6);
-      if (damped) { dl = (dl == "" || large * large > dl * dl) ? large : dl; ds = (ds == "" || small * small > ds * ds) ? small : ds }
-      else { ul = (ul == "" || large < ul) ? large : ul; us = (us == "" || small * small > us * us) ? small : us } }
+    { damped = $1 ~ /_npc/ && $1 !~ /average/ && $1 !~ /gamma1$/;
+      if (damped) { nd++; if ($8 == "" && $9 == "") clean_d++; worst_d = (gap($3, $6) > worst_d) ? gap($3, $6) : worst_d; if (gap($5, $6) > worst_d) worst_d = gap($5, $6) }
+      else { nu++; if ($9 == "") clean_small++; if ($8 != "") { windows++; list = list " " $1 " (" $8 ")" } } }
     END {
-      printf "- **The linearised step predicts where the damped predictor-corrector fails:** over its %s rows the runs'"'"' limits lie within %+.2f %% (v0) and %+.2f %% (v0/100) of the step'"'"'s limit.\n", "Eq. (32)", dl, ds;
-      printf "- **The undamped schemes fail earlier at the paper'"'"'s amplitude than at a hundredth of it:** forward Euler and the Newmark average, whose highest mode is not damped, stay within %+.2f %% of the step'"'"'s limit at v0/100 but fail up to %+.2f %% below it at v0. In a linear system the growth of a mode does not depend on its amplitude, so the difference is a nonlinear effect of the bar'"'"'s motion, which the linearisation about rest leaves out; Eq. (32), which damps the highest mode, shows none.\n", us, ul }'
+      printf "- **Eq. (32) with gamma < 1, damped, fails where its linearised step says:** on %d of its %d rows every scanned run below the step'"'"'s limit is stable at both amplitudes, and the first unstable scanned CFL lies at most %+.2f %% above the limit.\n", clean_d, nd, worst_d;
+      printf "- **The undamped schemes (forward Euler, the Newmark average, Eq. (32) at gamma = 1):** at v0/100 every scanned run below the limit is stable on %d of %d rows. At the paper'"'"'s amplitude %d of them have runs stopped below the limit:%s. A linear system'"'"'s growth does not depend on its amplitude, so these are nonlinear effects of the bar'"'"'s motion, which the linearisation about rest leaves out; the damping of Eq. (32) (gamma < 1) removes them.\n", clean_small, nu, windows, (list == "" ? " none" : list) }'
   echo
 } >"$MPM_RESULTS/report/21_dyka_stability.md"
 ls "$figures"/dyka_* >/dev/null 2>&1 || status=1

@@ -373,7 +373,7 @@ int main(int argc, char** argv) {
         const auto &npc_average = result(fair_name(shape, "npcavg", cells)), &fe_blend = result(fair_name(shape, "feblend", cells));
         own_time += npc.rms < fe.rms_own_time;
         average += npc.rms < npc_average.rms;
-        blend += npc.rms < fe_blend.rms;
+        blend += npc.rms < 0.99 * fe_blend.rms;
         blend_gap = std::max(blend_gap, std::abs(fe_blend.rms - npc.rms) / npc.rms);
         own_row += " " + std::to_string(cells) + ": " + fixed(fe.rms_own_time / speed_v0) + " (at t: " + fixed(fe.rms / speed_v0) + ") against " +
                    fixed(npc.rms / speed_v0) + ";";
@@ -387,8 +387,9 @@ int main(int argc, char** argv) {
       add(list, {"NPC as printed (Eq. 32, damped) is more accurate than the undamped Newmark average (" + shape + ")",
                  "Eq. (32) below the average on " + std::to_string(average) + count + "; RMS/v0 of the average against Eq. (32):" + average_row,
                  average == static_cast<int>(fair_meshes.size()), false});
-      add(list, {"NPC's lower RMS is more than its damping: NPC is more accurate than FE given the same energy loss by a PIC/FLIP blend (" + shape + ")",
-                 "NPC below FE + blend on " + std::to_string(blend) + count + ", the two within " + fixed(100.0 * blend_gap, 2) +
+      add(list, {"NPC's lower RMS is more than its damping: NPC is more accurate, by more than 1 %, than FE given the same energy loss by a PIC/FLIP "
+                 "blend (" + shape + "; the blend's fraction calibrated on linear shapes, paper/10_integrator_analysis.md)",
+                 "NPC more than 1 % below FE + blend on " + std::to_string(blend) + count + ", the two within " + fixed(100.0 * blend_gap, 2) +
                      " % of each other on every mesh (FLIP fraction " + fixed(lowest_fraction, 5) + "-" + fixed(highest_fraction, 5) +
                      "); RMS/v0 of FE + blend against NPC:" + blend_row,
                  blend == static_cast<int>(fair_meshes.size()), false});
@@ -473,8 +474,9 @@ int main(int argc, char** argv) {
              << order_text(order_of[shape + "_" + integrator + "_transition"]) << " | " << order_text(order_of[shape + "_" + integrator + "_crossing"])
              << " |\n";
   report << "\n";
-  report << "The same orders with forward Euler's velocity compared with the exact solution at t + dt/2, the time it approximates "
-            "(the predictor-corrector's belong to t: unchanged):\n\n"
+  report << "The same orders with forward Euler's velocity compared with the exact solution at t + dt/2, the time it approximates on "
+            "smooth data (the predictor-corrector's, first order at t and at any shift of it, unchanged). The impact starts from a jump, "
+            "and the shift raises forward Euler's RMS on every mesh of the sweep:\n\n"
          << "| shape | integrator | negligible | transition | crossing |\n|---|---|---|---|---|\n";
   for (const auto& shape : shapes)
     report << "| " << shape << " | fe | " << order_text(own_time_order_of[shape + "_fe_negligible"]) << " | "

@@ -139,6 +139,10 @@ TEST_CASE("Integrator modes: Eq. (32) damps exp(-2 pi (1 - gamma) Omega) per per
   // Eq. (32) at gamma = 1/2: tr = 2 - 3 Omega^2 / 2 and det = 1 - Omega^2 / 2 give cos(Omega_bar) = tr / (2 sqrt(det))
   const double eq32_phase = std::acos((2.0 - 1.5 * Omega * Omega) / (2.0 * std::sqrt(1.0 - 0.5 * Omega * Omega)));
   CHECK(mode_phase_per_step(ModeScheme::npc_eq32, Omega, 0.5) == doctest::Approx(eq32_phase).epsilon(1e-13).scale(0.0));
+  // Eq. (32)'s period shortens by (1/24 + (1 - gamma^2)/8) Omega^2 + O(Omega^4): 3.25 times central differences' at gamma = 1/2
+  for (const double gamma : {0.5, 0.75})
+    CHECK(mode_period_error(ModeScheme::npc_eq32, 0.01, gamma) ==
+          doctest::Approx(-(1.0 / 24.0 + (1.0 - gamma * gamma) / 8.0) * 1e-4).epsilon(1e-3).scale(0.0));
 }
 
 }  // namespace mpm
