@@ -194,3 +194,20 @@ TEST_CASE("Eq. (23): the Newmark average on the small-amplitude vibrating bar: v
   CHECK(eq32_order <= 1.2);
   CHECK(average_error.back() < 0.1 * eq32_error.back());
 }
+
+TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): forward Euler's velocity on the vibrating bar: first order against v(t), second against v(t + dt/2)") {
+  const verification::BarScene bar(mpm::testing::source_path("scenes/vibrating_bar.toml"));
+  std::vector<int> cells{32, 64, 128, 256};
+  std::vector<double> at_t, at_own_time;
+  for (int n : cells) {
+    const auto result = verification::run_bar(bar, verification::BarCase{"linear", "fe", n, 1, 0.5, 1e-6, {}}, nullptr);
+    REQUIRE_FALSE(result.failed);
+    at_t.push_back(result.velocity_error);
+    at_own_time.push_back(result.velocity_error_own_time);
+  }
+  const double order_t = verification::fitted_order(cells, at_t, 3), order_own = verification::fitted_order(cells, at_own_time, 3);
+  INFO("at t: ", at_t[0], " -> ", at_t.back(), " (order ", order_t, "); at t + dt/2: ", at_own_time[0], " -> ", at_own_time.back(), " (order ", order_own, ")");
+  CHECK(order_t <= 1.2);
+  CHECK(order_own >= 1.8);
+  CHECK(at_own_time.back() < 0.1 * at_t.back());
+}

@@ -175,6 +175,11 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): the PIC/FLIP blend of forward
   CHECK(flip.velocity[0][0] == doctest::Approx(1.1));
   CHECK(blend.velocity[0][0] == doctest::Approx(1.18));
   CHECK(blend.position[0][0] == flip.position[0][0]);
+  // the PIC part takes the updated p_I / m_I whatever moves the particle: with the literal Eqs. (20)-(21)
+  // (positions from v_I^k = 1, -0.6, -1) the velocity is still 0.8 * 1.1 + 0.2 * 1.5
+  Particles<1> literal = example.particles;
+  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::start, literal, 0.8);
+  CHECK(literal.velocity[0][0] == doctest::Approx(1.18));
 }
 
 TEST_CASE("Eq. (33): the position update with the predicted nodal velocity at gamma = 0.6 by hand: v_I - gamma dt a_I") {
