@@ -22,23 +22,10 @@
 
 #include "mpm/io/exact_solution.hpp"
 #include "mpm/io/scene.hpp"
+#include "mpm/cli/parse_number.hpp"
 #include "mpm/io/text_lines.hpp"
 
 namespace mpm::cli {
-
-/// The whole text as a finite number; nullopt for anything else ("1e-3" yes, "1e-3s", "", "nan" no).
-inline std::optional<double> parse_number(const std::string& text) {
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return std::nullopt;
-  std::size_t end = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &end);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  if (end != text.size() || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
 
 /// "X" or "X,Y" with `dimension` entries; nullopt for anything else.
 inline std::optional<std::vector<double>> parse_point(const std::string& text, int dimension) {

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/cli/parse_number.hpp"
+
 #include "mpm/shape/bspline.hpp"
 #include "mpm/shape/lme.hpp"
 #include "mpm/shape/linear.hpp"
@@ -110,13 +112,9 @@ inline int shape_command(const std::vector<std::string>& arguments, std::ostream
   };
   // A number is the whole of its text and finite: "2x", "0.5," and "nan" are not numbers.
   auto read_number = [](const std::string& text, double& number) {
-    std::size_t end = 0;
-    try {
-      number = std::stod(text, &end);
-    } catch (const std::exception&) {
-      return false;
-    }
-    return end == text.size() && std::isfinite(number);
+    const auto parsed = parse_number(text);
+    if (parsed) number = *parsed;
+    return parsed.has_value();
   };
   for (size_t k = 0; k < arguments.size(); ++k) {
     const std::string& option = arguments[k];

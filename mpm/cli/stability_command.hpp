@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/cli/parse_number.hpp"
+
 #include "mpm/stability.hpp"
 
 namespace mpm::cli {
@@ -58,13 +60,9 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
     return 2;
   };
   auto read_number = [](const std::string& text, double& number) {
-    std::size_t end = 0;
-    try {
-      number = std::stod(text, &end);
-    } catch (const std::exception&) {
-      return false;
-    }
-    return end == text.size() && std::isfinite(number);
+    const auto parsed = parse_number(text);
+    if (parsed) number = *parsed;
+    return parsed.has_value();
   };
   auto read_whole = [&](const std::string& text, int& number, int low, int high) {
     double value = 0.0;
