@@ -2,6 +2,7 @@
 /// Compiles the doctests that sit beside the kernels of grid/, particles/, material/, transfer/,
 /// integrators/, loading/ and analysis/ into the test program.
 #include "mpm/analysis/energy.hpp"
+#include "mpm/analysis/linearised_step.hpp"
 #include "mpm/analysis/mode_analysis.hpp"
 #include "mpm/analysis/rms_error.hpp"
 #include "mpm/grid/boundary.hpp"

@@ -10,6 +10,8 @@
 /// cancel the first; the stencils stay at the rest positions, which is the linearisation of the second.
 /// The step is stable while the spectral radius \f$ \rho(\mathbf S) \le 1 \f$.
 #pragma once
+#include <doctest/doctest.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <vector>
@@ -20,6 +22,9 @@
 #include "mpm/model.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/particles/stencils.hpp"
+#include "mpm/integrators/forward_euler.hpp"
+#include "mpm/integrators/newmark_predictor_corrector.hpp"
+#include "mpm/shape/linear.hpp"
 
 namespace mpm {
 
@@ -111,6 +116,27 @@ inline double highest_mode_omega_dt(const Eigen::MatrixXd& energy_keeping_step) 
   double highest = 0.0;
   for (const auto& eigenvalue : solver.eigenvalues()) highest = std::max(highest, std::sqrt(std::max(0.0, 2.0 - 2.0 * eigenvalue.real())));
   return highest;
+}
+
+TEST_CASE("Linearised step: a bar of 4 cells held at both ends, its highest mode and the limits by hand") {
+  // Linear shapes, one particle per cell at the centres, c = h = 1: the modes sin(j pi x / 4) have
+  // omega = sin(j pi / 4) (paper/10_integrator_analysis.md), the highest omega = 1 at j = 2, so Omega = dt.
+  Model<1> model;
+  model.grid = Grid<1>(Vector<1>(0.0), 1.0, {4});
+  model.material = LinearElastic{1.0, 0.0, 1.0};
+  model.fixed = {{0, 0}, {4, 0}};
+  Particles<1> bar;
+  for (int cell = 0; cell < 4; ++cell) bar.add(Vector<1>(cell + 0.5), 1.0, 1.0, Vector<1>::Zero(), Vector<1>(0.5));
+  LinearShape<1> shape(model.grid);
+  const ForwardEuler euler;
+  CHECK(highest_mode_omega_dt(linearised_step_matrix(model, bar, shape, euler, 0.3)) == doctest::Approx(0.3).epsilon(1e-9).scale(0.0));
+  // 4 particles x (v, eps, a) unknowns; forward Euler's limit Omega < 2, Eq. (32)'s sqrt(2) at gamma = 1/2
+  CHECK(linearised_step_matrix(model, bar, shape, euler, 0.3).rows() == 12);
+  CHECK(spectral_radius(linearised_step_matrix(model, bar, shape, euler, 1.99)) <= 1.0 + 1e-9);
+  CHECK(spectral_radius(linearised_step_matrix(model, bar, shape, euler, 2.01)) > 1.1);
+  NewmarkPredictorCorrector predictor_corrector;
+  CHECK(spectral_radius(linearised_step_matrix(model, bar, shape, predictor_corrector, 1.40)) <= 1.0 + 1e-9);
+  CHECK(spectral_radius(linearised_step_matrix(model, bar, shape, predictor_corrector, 1.43)) > 1.0 + 1e-3);
 }
 
 }  // namespace mpm
