@@ -108,8 +108,9 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
     limits.cfl_limit = 0.0;
     return limits;
   } else {
-    while (stable(high) && high < 1e3) low = high, high *= 2.0;  // widen until unstable
-    if (stable(high)) {
+    bool high_is_stable = stable(high);
+    while (high_is_stable && high < 1e3) low = high, high *= 2.0, high_is_stable = stable(high);  // widen until unstable
+    if (high_is_stable) {
       limits.cfl_limit = std::numeric_limits<double>::infinity();
       return limits;
     }

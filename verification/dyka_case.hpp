@@ -96,8 +96,8 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   // last row takes the step before it); the recorder samples every step.
   std::vector<double> exact_own_time = result.exact;
   if (scene.integrator == "fe")
-    for (size_t n = 0; n + 1 < result.time.size() || (n + 1 == result.time.size() && n > 0); ++n) {
-      const double step = n + 1 < result.time.size() ? result.time[n + 1] - result.time[n] : result.time[n] - result.time[n - 1];
+    for (size_t n = 0; n < result.time.size(); ++n) {
+      const double step = n + 1 < result.time.size() ? result.time[n + 1] - result.time[n] : n > 0 ? result.time[n] - result.time[n - 1] : 0.0;
       exact_own_time[n] = bar.velocity(reference_position, result.time[n] + 0.5 * step);
     }
   if (!result.failed) result.rms_own_time = mpm::rms_error(result.velocity, exact_own_time);
