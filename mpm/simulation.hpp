@@ -96,7 +96,7 @@ class Simulation {
     stencils_.resize(particles_.size(), shape_.capacity());
     body_force_.per_unit_mass.resize(particles_.size());
     grid_fields_.prepare_threads(threads_for(particles_.size()));
-    ParticleSurvey<Dim> survey = survey_particles(particles_, model_.grid);
+    ParticleSurvey<Dim> survey = survey_particles(particles_, model_.grid, model_.materials);
     initial_energy_ = survey.balances.total();
 
     RunSummary& summary = summary_;
@@ -114,7 +114,7 @@ class Simulation {
 
     while (time < control_.end_time) {
       // 1. Time step, Eq. (42), landing exactly on output times and on the end time.
-      double dt = courant_time_step(survey.fastest_speed(), survey.wave_speed(model_.material.young_modulus),
+      double dt = courant_time_step(survey.fastest_speed(), survey.wave_speed(),
                                     model_.grid.spacing(), control_.cfl, control_.courant);
       const double target = next_stop(time, next_snapshot, next_sample);
       const bool lands = time + dt * (1.0 + 1e-9) >= target;
@@ -134,7 +134,7 @@ class Simulation {
       summary.smallest_time_step = std::min(summary.smallest_time_step, dt);
       summary.largest_time_step = std::max(summary.largest_time_step, dt);
       // 4. Health, from one pass over the particles that also gives the balances and the next dt's speeds.
-      survey = survey_particles(particles_, model_.grid);
+      survey = survey_particles(particles_, model_.grid, model_.materials);
       const Balances<Dim>& now = survey.balances;
       summary.largest_mass_error = std::max(summary.largest_mass_error, nodal_mass_error(now.mass));
       external_work_ += dt * body_force_power(particles_, body_force_, now.momentum);

@@ -72,7 +72,7 @@ template <int Dim>
 StabilityLimits stability_limits(const io::Scene& scene, double relative_tolerance = 1e-6) {
   use_threads(1);
   const Setup<Dim> setup = build_setup<Dim>(scene);
-  const double wave_speed = std::sqrt(setup.model.material.young_modulus / setup.model.material.density);
+  const double wave_speed = std::sqrt(setup.model.materials[0].young_modulus / setup.model.materials[0].density);
   const double cell_size = setup.model.grid.spacing();
   auto time_step = [&](double cfl) { return cfl * cell_size / wave_speed; };
   auto radius_at = [&](double cfl) {
@@ -127,7 +127,7 @@ extern template StabilityLimits stability_limits<1>(const io::Scene&, double);
 extern template StabilityLimits stability_limits<2>(const io::Scene&, double);
 
 /// The CFL limit of a scene's method, for `mpm run`'s warning: its shape function, integrator and options,
-/// its largest particles per cell and its Poisson ratio, on a small uniform body (16 cells in 1D; in 2D 6 x 6
+/// its largest particles per cell and its bodies' largest Poisson ratio, on a small uniform body (16 cells in 1D; in 2D 6 x 6
 /// cells at 1 particle per cell, 4 x 4 at 2 and 2 x 2 from 3, at most 448 unknowns), to 1e-3. A small body has fewer modes than the scene,
 /// so its limit can lie a little above the scene's (2D linear NPC: 1.447 on 8 x 8 cells against 1.414 in 1D).
 inline double scene_cfl_limit(const io::Scene& scene) {
@@ -136,7 +136,8 @@ inline double scene_cfl_limit(const io::Scene& scene) {
   for (const auto& settings : scene.bodies)
     for (int ppc : settings.particles_per_cell) body.ppc = std::max(body.ppc, std::min(ppc, 4));
   body.cells = scene.dimension == 1 ? 16 : body.ppc == 1 ? 6 : body.ppc == 2 ? 4 : 2;
-  body.poisson_ratio = scene.poisson_ratio;
+  for (const auto& settings : scene.bodies)  // the largest Poisson ratio: the fastest P-wave for its E, the lowest limit
+    body.poisson_ratio = std::max(body.poisson_ratio, settings.material.poisson_ratio);
   io::Scene uniform = stability_scene(body);
   uniform.shape = scene.shape;
   uniform.integrator = scene.integrator;

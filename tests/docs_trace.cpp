@@ -244,6 +244,14 @@ TEST_CASE("docs_trace: the mutants of make mutants on each equation's page of te
   CHECK(docs_trace::tests_page(sources).find("make mutants` has not been run") != std::string::npos);
 }
 
+TEST_CASE("docs_trace: a test name with a semicolon is one ctest cannot select, named with its file and line") {
+  docs_trace::Sources sources;
+  sources.code["mpm/a.hpp"] = std::string("\n") + "TEST_" + "CASE(\"Eq. (16): fine, with a comma\") {}\n" + "TEST_" + "CASE(\"x; y\") {}\n";
+  const auto errors = docs_trace::check_ctest_names(sources);
+  REQUIRE(errors.size() == 1);
+  CHECK(errors[0].rfind("mpm/a.hpp:3: TEST_CASE \"x; y\"", 0) == 0);
+}
+
 TEST_CASE("docs_trace: Doxygen's names of source listings and line anchors") {
   CHECK(docs_trace::source_listing_html("mpm/exact/bar.hpp") == "bar_8hpp_source.html");
   CHECK(docs_trace::source_listing_html("mpm/transfer/grid_to_particle.hpp") == "grid__to__particle_8hpp_source.html");
@@ -257,6 +265,7 @@ TEST_CASE("docs_trace: every equation (1)-(44), (A.1)-(A.19) of paper/ has its s
   for (const std::string& error :
        docs_trace::check_filter(sources, [](const std::string& label) { return docs_trace::filtered_test_count(MPM_TESTS_PROGRAM, label); }))
     errors.push_back(error);
+  for (const std::string& error : docs_trace::check_ctest_names(sources)) errors.push_back(error);
   for (const std::string& error : errors) FAIL_CHECK(error);
   int traced = 0;
   for (const std::string& label : docs_trace::equation_labels())

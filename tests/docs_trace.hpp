@@ -362,6 +362,19 @@ inline std::vector<std::string> check(const Sources& sources) {
   return errors;
 }
 
+/// The TEST_CASEs that ctest would never run: doctest_discover_tests registers each name as a CMake list
+/// element, so a ';' cuts the name, and ctest's `--test-case=` filter then selects no test case (and passes).
+/// One message per such name, with its file and line.
+inline std::vector<std::string> check_ctest_names(const Sources& sources) {
+  std::vector<std::string> errors;
+  for (const auto& [file, text] : sources.code)
+    for (const TestCase& test : test_cases_in(text, file))
+      if (test.name.find(';') != std::string::npos)
+        errors.push_back(file + ":" + std::to_string(test.line) + ": TEST_CASE \"" + test.name +
+                         "\": a ';' in its name cuts it for ctest, which then runs no test case; write ',' instead");
+  return errors;
+}
+
 /// The filter a user types for the tests of one equation: `*Eq. (16)*`, given to `-tc=`.
 inline std::string equation_filter(const std::string& label) { return "*Eq. (" + label + ")*"; }
 

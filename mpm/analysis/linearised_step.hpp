@@ -123,7 +123,7 @@ TEST_CASE("Linearised step: a bar of 4 cells held at both ends, its highest mode
   // omega = sin(j pi / 4) (paper/10_integrator_analysis.md), the highest omega = 1 at j = 2, so Omega = dt.
   Model<1> model;
   model.grid = Grid<1>(Vector<1>(0.0), 1.0, {4});
-  model.material = LinearElastic{1.0, 0.0, 1.0};
+  model.materials = {LinearElastic{1.0, 0.0, 1.0}};
   model.fixed = {{0, 0}, {4, 0}};
   Particles<1> bar;
   for (int cell = 0; cell < 4; ++cell) bar.add(Vector<1>(cell + 0.5), 1.0, 1.0, Vector<1>::Zero(), Vector<1>(0.5));

@@ -99,7 +99,7 @@ inline double mode_stability_limit(ModeScheme scheme, double newmark_gamma) {
   return scheme == ModeScheme::npc_eq32 ? 2.0 / std::sqrt(3.0 - 2.0 * newmark_gamma) : 2.0;
 }
 
-TEST_CASE("Integrator modes: det A and tr A by hand; the limits from the spectral radius agree with the closed forms") {
+TEST_CASE("Integrator modes: det A and tr A by hand, the limits from the spectral radius agree with the closed forms") {
   const double Omega = 0.3, gamma = 0.6;
   // Eq. (32): det = 1 - (1 - gamma) Omega^2, tr = 2 - (2 - gamma) Omega^2
   CHECK(mode_amplification(ModeScheme::npc_eq32, Omega, gamma).determinant() == doctest::Approx(1.0 - 0.4 * 0.09).epsilon(1e-14));
@@ -122,7 +122,7 @@ TEST_CASE("Integrator modes: det A and tr A by hand; the limits from the spectra
   CHECK(mode_stability_limit(ModeScheme::npc_eq32, 0.5) == doctest::Approx(std::sqrt(2.0)));
 }
 
-TEST_CASE("Integrator modes: Eq. (32) damps exp(-2 pi (1 - gamma) Omega) per period, the others not at all; periods lengthen at O(Omega^2)") {
+TEST_CASE("Integrator modes: Eq. (32) damps exp(-2 pi (1 - gamma) Omega) per period, the others not at all, periods lengthen at O(Omega^2)") {
   for (const double gamma : {0.5, 0.75}) {
     const double Omega = 0.01;
     CHECK(mode_energy_per_period(ModeScheme::npc_eq32, Omega, gamma) ==

@@ -15,6 +15,7 @@
 #include "mpm/core/parallel.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/integrators/time_step.hpp"
+#include "mpm/material/linear_elastic.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm {
@@ -23,13 +24,13 @@ template <int Dim>
 struct ParticleSurvey {
   Balances<Dim> balances;
   double fastest_speed_squared = 0.0;                                 ///< \f$ \max_p |\mathbf v_p|^2 \f$
-  double smallest_density = std::numeric_limits<double>::infinity();  ///< \f$ \min_p \rho_p \f$
+  double stiffest_ratio = 0.0;  ///< \f$ \max_p E_p/\rho_p \f$, E_p the Young's modulus of particle p's material
   int unhealthy = 0;  ///< particles with a NaN or infinity in their state, or off the grid
 
   /// \f$ \max_p |\mathbf v_p| \f$ (sqrt is monotone: the same number as the max of the norms).
   double fastest_speed() const { return std::sqrt(fastest_speed_squared); }
-  /// \f$ \max_p \sqrt{E/\rho_p} = \sqrt{E / \min_p \rho_p} \f$, bit for bit (division and sqrt are monotone).
-  double wave_speed(double young_modulus) const { return std::sqrt(young_modulus / smallest_density); }
+  /// \f$ \max_p \sqrt{E_p/\rho_p} \f$, bit for bit (sqrt is monotone).
+  double wave_speed() const { return std::sqrt(stiffest_ratio); }
 };
 
 /// Whether particle p's state is finite and its position on the grid.
@@ -41,13 +42,13 @@ bool healthy(const Particles<Dim>& particles, const Grid<Dim>& grid, int p) {
 
 /// One pass over the particles (on every core): the balances are summed in the order of balances().
 template <int Dim>
-ParticleSurvey<Dim> survey_particles(const Particles<Dim>& particles, const Grid<Dim>& grid) {
+ParticleSurvey<Dim> survey_particles(const Particles<Dim>& particles, const Grid<Dim>& grid, const std::vector<LinearElastic>& materials) {
   return parallel_sum(
       particles.size(), ParticleSurvey<Dim>(),
       [&](int p, ParticleSurvey<Dim>& survey) {
         add_to_balances(particles, p, survey.balances);
         survey.fastest_speed_squared = std::max(survey.fastest_speed_squared, particles.velocity[p].squaredNorm());
-        survey.smallest_density = std::min(survey.smallest_density, particles.density[p]);
+        survey.stiffest_ratio = std::max(survey.stiffest_ratio, materials[particles.material[p]].young_modulus / particles.density[p]);
         if (!healthy(particles, grid, p)) ++survey.unhealthy;
       },
       [](ParticleSurvey<Dim>& total, const ParticleSurvey<Dim>& part) {
@@ -56,7 +57,7 @@ ParticleSurvey<Dim> survey_particles(const Particles<Dim>& particles, const Grid
         total.balances.momentum += part.balances.momentum;
         total.balances.mass += part.balances.mass;
         total.fastest_speed_squared = std::max(total.fastest_speed_squared, part.fastest_speed_squared);
-        total.smallest_density = std::min(total.smallest_density, part.smallest_density);
+        total.stiffest_ratio = std::max(total.stiffest_ratio, part.stiffest_ratio);
         total.unhealthy += part.unhealthy;
       });
 }
@@ -72,24 +73,30 @@ TEST_CASE("Particle survey: the balances and Eq. (42)'s speeds of one pass equal
     particles.stress[p] = 1e6 * particles.strain[p];
   }
   const double E = 1e7, h = grid.spacing();
+  const std::vector<LinearElastic> material{LinearElastic{E, 0.0, 1000.0}};
   use_threads(1);
-  const ParticleSurvey<2> one = survey_particles(particles, grid);
+  const ParticleSurvey<2> one = survey_particles(particles, grid, material);
   const Balances<2> sums = balances(particles);
   CHECK(one.balances.kinetic == sums.kinetic);
   CHECK(one.balances.strain == sums.strain);
   CHECK(one.balances.momentum == sums.momentum);
   CHECK(one.unhealthy == 0);
   for (CourantSpeed rule : {CourantSpeed::maximum, CourantSpeed::sum})
-    CHECK(courant_time_step(one.fastest_speed(), one.wave_speed(E), h, 0.5, rule) == courant_time_step(particles, E, h, 0.5, rule));
+    CHECK(courant_time_step(one.fastest_speed(), one.wave_speed(), h, 0.5, rule) == courant_time_step(particles, E, h, 0.5, rule));
   use_threads(2);
-  const ParticleSurvey<2> two = survey_particles(particles, grid);
+  const ParticleSurvey<2> two = survey_particles(particles, grid, material);
   CHECK(two.balances.kinetic == doctest::Approx(sums.kinetic).epsilon(1e-14));
   CHECK(two.balances.strain == doctest::Approx(sums.strain).epsilon(1e-14));
   CHECK(two.fastest_speed_squared == one.fastest_speed_squared);
-  CHECK(two.smallest_density == one.smallest_density);
+  CHECK(two.stiffest_ratio == one.stiffest_ratio);
+  // Two materials: the wave speed is the largest of sqrt(E_p / rho_p) over the particles, here of particle
+  // 1000, made of a material 4 times stiffer: twice its speed in the first material.
+  particles.material[1000] = 1;
+  const std::vector<LinearElastic> two_materials{material[0], LinearElastic{4.0 * E, 0.0, 1000.0}};
+  CHECK(survey_particles(particles, grid, two_materials).wave_speed() == doctest::Approx(2.0 * std::sqrt(E / particles.density[1000])));
   particles.velocity[2999][1] = std::nan("");
   particles.position[5] = Vector<2>(-1.0, 1.0);
-  CHECK(survey_particles(particles, grid).unhealthy == 2);
+  CHECK(survey_particles(particles, grid, two_materials).unhealthy == 2);
   use_threads(0);
 }
 

@@ -340,7 +340,7 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
   }
 }
 
-TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs = c; a CSV is read field by field") {
+TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs = c, a CSV is read field by field") {
   // exact + c at every sample: every difference is c, so rms = sqrt(N c^2 / N) = c and max_abs = c at the first time.
   const std::vector<double> times{0.0, 1.0, 2.0, 3.0}, exact{1.0, -2.0, 0.5, 4.0};
   std::vector<double> computed;

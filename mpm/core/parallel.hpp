@@ -163,7 +163,7 @@ void scatter_to_nodes(int count, std::vector<T>& field, std::vector<std::vector<
   scatter_to_nodes(count, body, ScatterTarget<T>{field, copies});
 }
 
-TEST_CASE("Parallel loops: blocks cover every item once; sums and scatters equal the serial loop") {
+TEST_CASE("Parallel loops: blocks cover every item once, sums and scatters equal the serial loop") {
   for (int count : {0, 1, 7, 5000})
     for (int blocks : {1, 2, 3, 8}) {
       int covered = 0;

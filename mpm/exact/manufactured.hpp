@@ -211,7 +211,7 @@ class ManufacturedLarge {
 // motion alone (displacement or position map), never from the closed-form stress or body force.
 // Soil-like material: L = 1 m, E = 10 MPa, nu = 0.3, rho = 2000 kg/m^3.
 
-TEST_CASE("exact::ManufacturedSmall: b = u_tt - div sigma / rho by finite differences of u; u = 0 on the boundary") {
+TEST_CASE("exact::ManufacturedSmall: b = u_tt - div sigma / rho by finite differences of u, u = 0 on the boundary") {
   const ManufacturedMaterial material{1.0, 10e6, 0.3, 2000.0};
   const ManufacturedSmall mms(material, 1e-3);
   const double lambda = material.lame_lambda(), G = material.shear_modulus(), T = 2.0 * ManufacturedMaterial::pi / material.angular_frequency();

@@ -116,7 +116,7 @@ TEST_CASE("exact::VibratingBar: the second mode, by hand") {
   CHECK_THROWS_AS(VibratingBar(L, 200e9, 7833.0, 5.0, 0), std::invalid_argument);
 }
 
-TEST_CASE("exact::VibratingBar: wave equation, v = u_t and sigma = E u_X by finite differences; free and fixed ends") {
+TEST_CASE("exact::VibratingBar: wave equation, v = u_t and sigma = E u_X by finite differences, free and fixed ends") {
   const double E = 200e9, rho = 7833.0, L = 0.1333;
   const VibratingBar bar(L, E, rho, 5.0);
   const double T = bar.period(), dX = 1e-4 * L, dt = 1e-4 * T;

@@ -54,7 +54,7 @@ void store_reactions(const std::vector<FixedDof>& fixed, std::vector<Vector<Dim>
   }
 }
 
-TEST_CASE("Boundary: a face yields one dof per node and component; reactions take the force") {
+TEST_CASE("Boundary: a face yields one dof per node and component, reactions take the force") {
   const Grid<2> grid(Vector<2>::Zero(), 1.0, {3, 2});
   const auto bottom = fixed_dofs_on_face(grid, Face{1, 0}, {1});
   CHECK(bottom.size() == 4);

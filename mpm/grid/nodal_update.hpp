@@ -21,7 +21,7 @@ void newmark_corrector(double newmark_gamma, double dt, GridFields<Dim>& grid) {
     if (grid.nodal_mass[node] > 0.0) grid.nodal_velocity[node] += newmark_gamma * dt * grid.nodal_force[node] / grid.nodal_mass[node];
 }
 
-TEST_CASE("Eq. (12), Eq. (30): nodal updates: the momentum balance and the corrector by hand; massless nodes untouched") {
+TEST_CASE("Eq. (12), Eq. (30): nodal updates: the momentum balance and the corrector by hand, massless nodes untouched") {
   GridFields<1> grid(2);
   grid.nodal_mass = {2.0, 0.0};
   grid.nodal_momentum = {Vector<1>(1.0), Vector<1>(0.0)};
@@ -35,7 +35,7 @@ TEST_CASE("Eq. (12), Eq. (30): nodal updates: the momentum balance and the corre
   CHECK(grid.nodal_velocity[1][0] == 0.0);
 }
 
-TEST_CASE("Eq. (12): p_I += dt f_I on every node with mass, the first and the last too; massless nodes untouched") {
+TEST_CASE("Eq. (12): p_I += dt f_I on every node with mass, the first and the last too, massless nodes untouched") {
   GridFields<1> grid(3);
   grid.nodal_mass = {2.0, 0.0, 1.0};
   grid.nodal_momentum = {Vector<1>(1.0), Vector<1>(0.0), Vector<1>(2.0)};

@@ -49,7 +49,7 @@ struct ForwardEuler {
     nodal_velocity_from_momentum(grid);
     timers.lap(Phase::grid);
     // 4. Update stress first: strain rate, Eq. (16); density, Eq. (17); stress, Eq. (3).
-    update_strain_density_stress(stencils, grid.nodal_velocity, model.material, dt, particles);
+    update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
     timers.lap(Phase::stress);
     // 5. Nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(particles, stencils, body_force, grid);

@@ -59,7 +59,7 @@ struct NewmarkPredictorCorrector {
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
     timers.lap(Phase::grid);
     // Steps 4-5. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
-    update_strain_density_stress(stencils, grid.nodal_velocity, model.material, dt, particles);
+    update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
     timers.lap(Phase::stress);
     // Step 6. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(particles, stencils, body_force, grid);

@@ -327,7 +327,7 @@ class SceneExactSolution {
   }
 };
 
-TEST_CASE("SceneExactSolution: the Dyka bar's pieces from the scene, each jump exact; the values at the free end by hand") {
+TEST_CASE("SceneExactSolution: the Dyka bar's pieces from the scene, each jump exact, the values at the free end by hand") {
   // The bar [1, 1.1333] (origin 1): body at rest, a box at -5 m/s on x <= 1.05 (X <= 0.05, not on a cell line),
   // then a box at +2 m/s on [1.12, 1.2]; the initial stress -1 MPa from a formula on X > 0.1.
   const std::string text =
@@ -362,7 +362,7 @@ TEST_CASE("SceneExactSolution: the Dyka bar's pieces from the scene, each jump e
   CHECK_THROWS_AS(SceneExactSolution(scene, StrainMeasure::finite), std::invalid_argument);
 }
 
-TEST_CASE("SceneExactSolution: the column's sigma_xx = nu/(1 - nu) sigma_yy; the finite-strain column is static") {
+TEST_CASE("SceneExactSolution: the column's sigma_xx = nu/(1 - nu) sigma_yy, the finite-strain column is static") {
   const std::string text =
       "dimension = 2\nexact = \"soil_column\"\n[grid]\nlength = [10.0, 10.0]\ncells = [5, 5]\n[material]\nyoung_modulus = 5e6\n"
       "poisson_ratio = 0.25\ndensity = 6000.0\n[[body]]\nmin = [0.0, 0.0]\nmax = [10.0, 10.0]\n"

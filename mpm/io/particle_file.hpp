@@ -119,7 +119,7 @@ inline std::vector<FileParticle> read_particle_file(const std::string& path, int
   return error.empty() ? particles : std::vector<FileParticle>{};
 }
 
-TEST_CASE("Particle file: columns by name, mass from volume, velocity optional; each bad row located") {
+TEST_CASE("Particle file: columns by name, mass from volume, velocity optional, each bad row located") {
   const std::string path = (std::filesystem::temp_directory_path() / "mpm_particle_file_test.csv").string();
   auto read = [&](const std::string& text, int dimension, std::string& error) {
     std::ofstream(path) << text;

@@ -284,7 +284,7 @@ inline void write_run_json(const std::string& path, const Scene& scene, const Ru
   close_checked(out, path);
 }
 
-TEST_CASE("run.json: strings escaped; every field written has its unit") {
+TEST_CASE("run.json: strings escaped, every field written has its unit") {
   CHECK(json_string("failed: \"x\"\n\\") == "\"failed: \\\"x\\\"\\n\\\\\"");
   CHECK(json_string(std::string("a\tb")) == "\"a\\u0009b\"");
   const std::string path = (std::filesystem::temp_directory_path() / ("mpm_run_json_" + std::to_string(getpid()) + ".json")).string();

@@ -22,8 +22,18 @@
 
 namespace mpm::io {
 
+/// A linear elastic material, Eq. (3): the scene's [material], or a body's own (its keys young_modulus,
+/// poisson_ratio and density, each defaulting to [material]'s).
+struct MaterialSettings {
+  double young_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;  ///< E (Pa), nu, rho_0 (kg/m^3)
+  bool operator==(const MaterialSettings& other) const {
+    return young_modulus == other.young_modulus && poisson_ratio == other.poisson_ratio && density == other.density;
+  }
+};
+
 struct BodySettings {
   std::vector<double> min, max, velocity;
+  MaterialSettings material;                      ///< the body's young_modulus, poisson_ratio, density: by default [material]'s
   std::vector<int> particles_per_cell;
   std::string placement = "uniform";
   std::string shape = "box";                      ///< box | ellipse | polygon (mpm/particles/body_shape.hpp) | file
@@ -248,13 +258,20 @@ inline Scene read_scene(const SceneFile& file) {
         grid.fail("cells", "cells must be square: length/cells must be equal on every axis");
     grid.reject_unknown_keys();
   }
+  // A material's keys: those of [material], or a body's own, each defaulting to [material]'s.
+  auto read_material = [&](SceneReader& material, std::optional<MaterialSettings> defaults) {
+    MaterialSettings settings;
+    settings.young_modulus = material.positive("young_modulus", defaults ? std::optional(defaults->young_modulus) : std::nullopt);
+    settings.poisson_ratio = material.number("poisson_ratio", defaults ? defaults->poisson_ratio : 0.0);
+    if (!(settings.poisson_ratio >= 0.0 && settings.poisson_ratio < 0.5)) material.fail("poisson_ratio", "must be in [0, 0.5)");
+    settings.density = material.positive("density", defaults ? std::optional(defaults->density) : std::nullopt);
+    return settings;
+  };
   {  // [material]
     SceneReader material(file, detail::table_or_empty(file, root, "material", true), "material");
-    scene.young_modulus = material.positive("young_modulus");
-    scene.poisson_ratio = material.number("poisson_ratio", 0.0);
-    if (!(scene.poisson_ratio >= 0.0 && scene.poisson_ratio < 0.5)) material.fail("poisson_ratio", "must be in [0, 0.5)");
-    scene.density = material.positive("density");
+    const MaterialSettings settings = read_material(material, std::nullopt);
     material.reject_unknown_keys();
+    scene.young_modulus = settings.young_modulus, scene.poisson_ratio = settings.poisson_ratio, scene.density = settings.density;
   }
   auto inside_grid = [&](SceneReader& reader, const std::string& key, const std::vector<double>& point, bool on_lines) {
     for (int axis = 0; axis < dim; ++axis) {
@@ -268,6 +285,7 @@ inline Scene read_scene(const SceneFile& file) {
   };
   each_table(file, root, "body", [&](SceneReader& reader) {
     BodySettings body;
+    body.material = read_material(reader, MaterialSettings{scene.young_modulus, scene.poisson_ratio, scene.density});
     body.min = reader.numbers("min", dim);
     body.max = reader.numbers("max", dim);
     inside_grid(reader, "min", body.min, true);
@@ -289,7 +307,7 @@ inline Scene read_scene(const SceneFile& file) {
       namespace fs = std::filesystem;
       const fs::path path = fs::path(body.file).is_absolute() ? fs::path(body.file) : fs::path(file.path).parent_path() / body.file;
       std::string problem;
-      body.particles = read_particle_file(path.string(), dim, scene.density, body.velocity, problem);
+      body.particles = read_particle_file(path.string(), dim, body.material.density, body.velocity, problem);
       if (!problem.empty()) reader.fail("file", problem);
       for (size_t p = 0; p < body.particles.size(); ++p) {
         const double position[2] = {body.particles[p].x, body.particles[p].y};
@@ -440,30 +458,46 @@ inline Scene read_scene(const SceneFile& file) {
         return true;
     return false;
   };
-  // The exact solutions hold for one body filling the box [origin, origin + length] (the bar, the column).
+  // The exact solutions hold for one homogeneous body filling the box [origin, origin + length] (the bar,
+  // the column): one [[body]] or several boxes side by side (layers of a column seeded differently, say),
+  // all of the scene's [material]. Bodies never overlap (check_bodies_apart), so boxes inside the box whose
+  // volumes add up to its volume fill it.
+  if (scene.exact != "none")
+    for (size_t k = 0; k < scene.bodies.size(); ++k)
+      if (!(scene.bodies[k].material == MaterialSettings{scene.young_modulus, scene.poisson_ratio, scene.density}))
+        SceneReader(file, *file.table["body"].as_array()->get(k)->as_table(), "body[" + std::to_string(k) + "]")
+            .fail("min", "is of a material other than [material]'s: exact = \"" + scene.exact + "\" holds for one homogeneous body");
   auto fills_box = [&] {
-    if (scene.bodies.size() != 1 || scene.bodies[0].shape != "box") return false;
-    for (int axis = 0; axis < dim; ++axis)
-      if (std::abs(scene.bodies[0].min[axis] - scene.origin[axis]) > 1e-9 * scene.spacing ||
-          std::abs(scene.bodies[0].max[axis] - scene.origin[axis] - scene.length[axis]) > 1e-9 * scene.spacing)
-        return false;
-    return true;
+    double volume = 0.0, box_volume = 1.0;
+    for (int axis = 0; axis < dim; ++axis) box_volume *= scene.length[axis];
+    for (const BodySettings& body : scene.bodies) {
+      if (body.shape != "box") return false;
+      double body_volume = 1.0;
+      for (int axis = 0; axis < dim; ++axis) {
+        if (body.min[axis] < scene.origin[axis] - 1e-9 * scene.spacing ||
+            body.max[axis] > scene.origin[axis] + scene.length[axis] + 1e-9 * scene.spacing)
+          return false;
+        body_volume *= body.max[axis] - body.min[axis];
+      }
+      volume += body_volume;
+    }
+    return std::abs(volume - box_volume) <= 1e-9 * box_volume;
   };
   if (scene.exact == "dyka_bar" && !(dim == 1 && fills_box() && has_fixed(0, true, 0) && scene.gravity[0] == 0.0))
     root.fail("exact", "'dyka_bar' is the 1D bar free at xmin and fixed at xmax without gravity: needs dimension = 1, "
-                       "one [[body]] filling [origin, origin + length], a [[fixed]] face = \"xmax\" holding \"x\", "
+                       "[[body]] boxes filling [origin, origin + length], a [[fixed]] face = \"xmax\" holding \"x\", "
                        "and no gravity");
   if (scene.exact == "soil_column" &&
       !(dim == 2 && fills_box() && has_fixed(1, false, 1) && scene.gravity[0] == 0.0 && scene.gravity[1] < 0.0 &&
         (scene.poisson_ratio == 0.0 || (has_fixed(0, false, 0) && has_fixed(0, true, 0)))))
-    root.fail("exact", "'soil_column' is the 2D column on a roller base under gravity: needs dimension = 2, one [[body]] "
+    root.fail("exact", "'soil_column' is the 2D column on a roller base under gravity: needs dimension = 2, [[body]] boxes "
                        "filling [origin, origin + length], a [[fixed]] face = \"ymin\" holding \"y\", "
                        "gravity.acceleration = [0, -g], and rollers on xmin and xmax unless poisson_ratio = 0");
   const bool manufactured = scene.exact == "manufactured_small" || scene.exact == "manufactured_large";
   if (scene.exact == "vibrating_bar") {
     if (!(dim == 1 && fills_box() && has_fixed(0, true, 0) && scene.gravity[0] == 0.0))
       root.fail("exact", "'vibrating_bar' is the 1D bar free at xmin and fixed at xmax without gravity: needs dimension = 1, "
-                         "one [[body]] filling [origin, origin + length], a [[fixed]] face = \"xmax\" holding \"x\", "
+                         "[[body]] boxes filling [origin, origin + length], a [[fixed]] face = \"xmax\" holding \"x\", "
                          "and no gravity");
     if (!scene.exact_velocity_amplitude)
       parameters.fail("velocity_amplitude", "required by exact = \"vibrating_bar\": the velocity amplitude V (m/s) of "
@@ -479,7 +513,7 @@ inline Scene read_scene(const SceneFile& file) {
     if (!(dim == 2 && fills_box() && std::abs(scene.length[0] - scene.length[1]) <= 1e-9 * scene.length[0] && supported &&
           scene.gravity[0] == 0.0 && scene.gravity[1] == 0.0))
       root.fail("exact", "'" + scene.exact + "' is the square [origin, origin + L]^2 in plane strain without gravity: needs "
-                         "dimension = 2, equal grid lengths, one [[body]] filling the box, and " +
+                         "dimension = 2, equal grid lengths, [[body]] boxes filling the box, and " +
                          (small ? std::string("every face fixed in x and y") : std::string("rollers on every face (xmin, xmax holding \"x\"; ymin, ymax holding \"y\")")));
     if (scene.formulas.body_force || scene.formulas.initial_velocity || scene.formulas.initial_stress || !scene.initial_velocities.empty() ||
         std::any_of(scene.bodies[0].velocity.begin(), scene.bodies[0].velocity.end(), [](double v) { return v != 0.0; }))
@@ -506,7 +540,7 @@ inline Scene read_scene(const SceneFile& file) {
   return scene;
 }
 
-TEST_CASE("Scene validation: a minimal scene reads; each kind of mistake names its key and line") {
+TEST_CASE("Scene validation: a minimal scene reads, each kind of mistake names its key and line") {
   const std::string minimal =
       "dimension = 1\n[grid]\nlength = [1.0]\ncells = [10]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
       "[[body]]\nmin = [0.0]\nmax = [1.0]\n[solver]\nend_time = 1.0\n";
@@ -525,10 +559,22 @@ TEST_CASE("Scene validation: a minimal scene reads; each kind of mistake names i
   };
   CHECK(message_of(minimal + "cfl = -2\n") == "error: m.toml:13: solver.cfl: must be > 0, got -2.000000");
   CHECK(message_of(minimal + "shape = \"quadratic\"\n") ==
-        "error: m.toml:13: solver.shape: 'quadratic' is not allowed; use one of linear | ugimp | lme");
+        "error: m.toml:13: solver.shape: 'quadratic' is not allowed; use one of linear | ugimp | lme | bspline2 | bspline3");
   CHECK(message_of(minimal + "cfll = 0.5\n").rfind("error: m.toml:13: solver.cfll: unknown key", 0) == 0);
   CHECK(message_of(minimal + "[[body]]\nmin = [0.05]\nmax = [1.0]\n").rfind("error: m.toml:14: body[1].min: must lie on grid lines", 0) == 0);
   CHECK(message_of(minimal + "[[fixed]]\nface = \"ymin\"\ncomponents = [\"x\"]\n").rfind("error: m.toml:14: fixed[0].face:", 0) == 0);
+
+  // A material per body: each key defaults to [material]'s; a bad one is located at its key; an exact
+  // solution, which holds for one material, refuses a body of another.
+  const std::string halves = "dimension = 1\n[grid]\nlength = [1.0]\ncells = [10]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
+                             "[[body]]\nmin = [0.0]\nmax = [0.5]\n[[body]]\nmin = [0.5]\nmax = [1.0]\ndensity = 3.0\n"
+                             "[solver]\nend_time = 1.0\n";
+  const Scene two = read_scene(parse_scene_text(halves, "m.toml"));
+  CHECK(two.bodies.at(0).material == MaterialSettings{1.0, 0.0, 1.0});
+  CHECK(two.bodies.at(1).material == MaterialSettings{1.0, 0.0, 3.0});
+  CHECK(message_of(halves + "[[body]]\nmin = [0.0]\nmax = [0.1]\nyoung_modulus = -2.0\n").rfind("error: m.toml:20: body[2].young_modulus: must be > 0", 0) == 0);
+  CHECK(message_of("exact = \"dyka_bar\"\n" + halves + "[[fixed]]\nface = \"xmax\"\ncomponents = [\"x\"]\n")
+            .rfind("error: m.toml:13: body[1].min: is of a material other than [material]'s", 0) == 0);
 }
 
 }  // namespace mpm::io

@@ -111,7 +111,7 @@ inline SceneCost estimate_cost(const Scene& scene) {
   else if (scene.shape == "ugimp" || scene.shape == "bspline2") cost.nodes_per_particle = std::pow(3.0, d);
   else if (scene.shape == "bspline3") cost.nodes_per_particle = std::pow(4.0, d);
   else cost.nodes_per_particle = std::pow(2.0 * std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 2.0, d);
-  const double particle_arrays = 4 + 8 + 8 + 5 * 8.0 * d + 2 * 8.0 * d * d + 8;  // Particles<Dim>
+  const double particle_arrays = 4 + 8 + 8 + 5 * 8.0 * d + 2 * 8.0 * d * d + 8 + 4;  // Particles<Dim>
   const double stencil = 4 + cost.nodes_per_particle * (4 + 8 + 8.0 * d);         // Stencils<Dim>
   cost.particle_bytes = cost.particles * (3 * particle_arrays + stencil + 8.0 * d);
   cost.node_bytes = cost.nodes * (8 + 4 * 8.0 * d);  // GridFields<Dim>
@@ -122,7 +122,8 @@ inline SceneCost estimate_cost(const Scene& scene) {
     for (const auto& particle : body.particles) fastest = std::max(fastest, std::hypot(particle.v_x, particle.v_y));
   }
   for (const auto& box : scene.initial_velocities) fastest = std::max(fastest, norm(box.velocity));
-  const double wave_speed = std::sqrt(scene.young_modulus / scene.density);
+  double wave_speed = 0.0;  // the fastest material's (Eq. 42)
+  for (const auto& body : scene.bodies) wave_speed = std::max(wave_speed, std::sqrt(body.material.young_modulus / body.material.density));
   const double speed = scene.control.courant == CourantSpeed::maximum ? std::max(fastest, wave_speed) : fastest + wave_speed;
   cost.time_step = scene.control.cfl * scene.spacing / speed;
   cost.steps = std::ceil(scene.control.end_time / cost.time_step);

@@ -55,11 +55,31 @@ inline std::optional<ManufacturedMotion> manufactured_motion(const Scene& scene)
   return motion;
 }
 
+/// The scene's materials: [material] first, then each body's own material that differs from those before
+/// it, in the order of the bodies (body_material gives a body's index).
+inline std::vector<LinearElastic> materials_of(const Scene& scene) {
+  std::vector<MaterialSettings> distinct{{scene.young_modulus, scene.poisson_ratio, scene.density}};
+  for (const BodySettings& body : scene.bodies)
+    if (std::find(distinct.begin(), distinct.end(), body.material) == distinct.end()) distinct.push_back(body.material);
+  std::vector<LinearElastic> materials;
+  for (const MaterialSettings& material : distinct) materials.push_back({material.young_modulus, material.poisson_ratio, material.density});
+  return materials;
+}
+
+/// The index in materials_of(scene) of body k's material.
+inline int body_material(const Scene& scene, size_t k) {
+  const std::vector<LinearElastic> materials = materials_of(scene);
+  const MaterialSettings& wanted = scene.bodies[k].material;
+  for (size_t m = 0; m < materials.size(); ++m)
+    if (MaterialSettings{materials[m].young_modulus, materials[m].poisson_ratio, materials[m].density} == wanted) return static_cast<int>(m);
+  return 0;  // unreachable: materials_of lists every body's material
+}
+
 template <int Dim>
 Model<Dim> build_model(const Scene& scene) {
   Model<Dim> model;
   model.grid = build_grid<Dim>(scene);
-  model.material = LinearElastic{scene.young_modulus, scene.poisson_ratio, scene.density};
+  model.materials = materials_of(scene);
   for (const auto& fixed : scene.fixed) {
     // A fixed face is a rigid wall at the face of the scene's box [origin, origin + length]: its
     // nodes and the margin nodes beyond it are held, so a support that reaches past the wall
@@ -91,25 +111,29 @@ Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
   Particles<Dim> particles;
   for (size_t k = 0; k < scene.bodies.size(); ++k) {
     const BodySettings& body = scene.bodies[k];
+    const int material = body_material(scene, k);
+    const double density = body.material.density;
     if (body.shape == "file") {  // its particles as read (mpm/io/particle_file.hpp); l_p = V^(1/Dim) / 2 per axis
       for (const FileParticle& particle : body.particles) {
         const double position[2] = {particle.x, particle.y}, velocity[2] = {particle.v_x, particle.v_y};
         Vector<Dim> x, v;
         for (int axis = 0; axis < Dim; ++axis) x[axis] = position[axis], v[axis] = velocity[axis];
-        const double half = 0.5 * std::pow(particle.mass / scene.density, 1.0 / Dim);
-        particles.add(x, particle.mass, scene.density, v, Vector<Dim>::Constant(half));
+        const double half = 0.5 * std::pow(particle.mass / density, 1.0 / Dim);
+        particles.add(x, particle.mass, density, v, Vector<Dim>::Constant(half), material);
       }
       continue;
     }
     std::array<int, Dim> per_cell{};
     for (int axis = 0; axis < Dim; ++axis) per_cell[axis] = body.particles_per_cell[axis];
-    const int added = fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, scene.density, to_vector<Dim>(body.velocity),
+    const int before = particles.size();
+    const int added = fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, density, to_vector<Dim>(body.velocity),
                                body.placement == "gauss" ? Placement::gauss : Placement::uniform, particles, body_shape(body));
+    std::fill(particles.material.begin() + before, particles.material.end(), material);
     if (added == 0)  // a polygon thinner than the particle spacing: its box holds seeds, none inside it
       throw SceneError(scene.file, 0, "body[" + std::to_string(k) + "].vertices",
                        "the polygon holds no particle: make it wider than the particle spacing, or raise particles_per_cell");
   }
-  apply_scene_formulas<Dim>(scene.formulas, LinearElastic{scene.young_modulus, scene.poisson_ratio, scene.density},
+  apply_scene_formulas<Dim>(scene.formulas, materials_of(scene),
                             scene.control.end_time, particles);  // [initial_field], before the boxes
   if constexpr (Dim == 2) {
     if (const auto motion = manufactured_motion(scene))

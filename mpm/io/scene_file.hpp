@@ -407,7 +407,7 @@ class SceneReader {
   std::set<std::string> known_;
 };
 
-TEST_CASE("Scene file: overrides land in nested tables and arrays of tables; errors carry file and line") {
+TEST_CASE("Scene file: overrides land in nested tables and arrays of tables, errors carry file and line") {
   SceneFile scene = parse_scene_text("dimension = 1\n[solver]\ncfl = 0.5\n[[body]]\nmin = [0.0]\n", "test.toml");
   apply_override(scene, "solver.cfl=0.2", 1);
   apply_override(scene, "grid.cells=[160]", 2);

@@ -317,7 +317,7 @@ BodyForceField<Dim> body_force_field(const SceneFormulas& formulas) {
 /// [body_force] is finite at every particle at t = 0 and at the end time.
 /// \throws SceneError naming the key of a formula that is not finite at a particle.
 template <int Dim>
-void apply_scene_formulas(const SceneFormulas& formulas, const LinearElastic& material, double end_time, Particles<Dim>& particles) {
+void apply_scene_formulas(const SceneFormulas& formulas, const std::vector<LinearElastic>& materials, double end_time, Particles<Dim>& particles) {
   auto at = [&](const FormulaList& list, int p, double time) {
     return list.at(particles.position[p].data(), particles.reference_position[p].data(), time, particles.id[p], Dim);
   };
@@ -331,7 +331,7 @@ void apply_scene_formulas(const SceneFormulas& formulas, const LinearElastic& ma
       else stress[p] << value[0], value[2], value[2], value[1];
     }
     int next = 0;  // set_initial_stress visits the particles in order
-    set_initial_stress<Dim>([&](const Vector<Dim>&) { return stress[next++]; }, material, particles);
+    set_initial_stress<Dim>([&](const Vector<Dim>&) { return stress[next++]; }, materials, particles);
   }
   if (formulas.body_force)
     for (int p = 0; p < particles.size(); ++p) at(*formulas.body_force, p, 0.0), at(*formulas.body_force, p, end_time);
@@ -377,7 +377,7 @@ TEST_CASE("Scene formulas: constants, a formula against a hand value, each bad f
   CHECK(b[1] == -9.81);
   Particles<2> particles;
   particles.add(Vector<2>(2.0, 4.0), 1.0, 8000.0, Vector<2>::Zero(), Vector<2>(0.5, 0.5));
-  apply_scene_formulas<2>(block, LinearElastic{200e9, 0.0, 8000.0}, 1.0, particles);
+  apply_scene_formulas<2>(block, {LinearElastic{200e9, 0.0, 8000.0}}, 1.0, particles);
   CHECK(particles.stress[0](0, 0) == doctest::Approx(-8000.0 * 9.81 * 6.0));
   CHECK(particles.stress[0](1, 0) == doctest::Approx(8.0));
 
@@ -399,7 +399,7 @@ TEST_CASE("Scene formulas: constants, a formula against a hand value, each bad f
   Particles<1> bar_particles;
   bar_particles.add(Vector<1>(0.25), 1.0, 8000.0, Vector<1>(0.0), Vector<1>(0.25));
   try {
-    apply_scene_formulas<1>(singular, LinearElastic{200e9, 0.0, 8000.0}, 1.0, bar_particles);
+    apply_scene_formulas<1>(singular, {LinearElastic{200e9, 0.0, 8000.0}}, 1.0, bar_particles);
     FAIL("an infinite velocity must be rejected");
   } catch (const SceneError& error) {
     CHECK(error.message().rfind("error: f.toml:5: initial_field.velocity: '1 / (X - 0.25)' is inf at particle 0", 0) == 0);

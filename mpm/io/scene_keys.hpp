@@ -64,6 +64,9 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"body[].file", nullptr, false, "-",
        "file: a CSV of the body's particles, x[,y] (m), volume (m^Dim) or mass (kg), optional v_x[,v_y] (m/s), by column "
        "name; relative to the scene's folder; every particle inside [min, max]", true},
+      {"body[].young_modulus", nullptr, false, "Pa", "the body's own material: E (default [material]'s)", true},
+      {"body[].poisson_ratio", nullptr, false, "-", "the body's own material: nu in [0, 0.5) (default [material]'s)", true},
+      {"body[].density", nullptr, false, "kg/m^3", "the body's own material: rho_0, its particles' masses (default [material]'s)", true},
       {"initial_velocity[].min", nullptr, false, "m", "lower corner of a box; particles in it start with `velocity`"},
       {"initial_velocity[].max", nullptr, false, "m", "upper corner of the box"},
       {"initial_velocity[].velocity", nullptr, false, "m/s", "their initial velocity (later boxes win)"},

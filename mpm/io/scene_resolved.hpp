@@ -106,6 +106,11 @@ inline toml::table resolved_table(const Scene& scene) {
                       {"velocity", numbers_array(body.velocity)},
                       {"placement", body.placement},
                       {"shape", body.shape}};
+    if (!(body.material == MaterialSettings{scene.young_modulus, scene.poisson_ratio, scene.density})) {  // a material of its own
+      entry.insert("young_modulus", body.material.young_modulus);
+      entry.insert("poisson_ratio", body.material.poisson_ratio);
+      entry.insert("density", body.material.density);
+    }
     if (!body.file.empty()) entry.insert("file", body.file);
     if (!body.vertices.empty()) {
       toml::array vertices;

@@ -31,8 +31,9 @@ void set_initial_velocity(const InitialVelocityField<Dim>& velocity, Particles<D
 /// \f$ \boldsymbol\sigma_p = \boldsymbol\sigma_0(\mathbf X_p) \f$, with \f$ \boldsymbol\varepsilon_p = \mathbf D^{-1} \boldsymbol\sigma_p \f$
 /// and \f$ \sigma_{zz,p} \f$ from Eq. (3), for every particle.
 template <int Dim>
-void set_initial_stress(const InitialStressField<Dim>& stress, const LinearElastic& material, Particles<Dim>& particles) {
+void set_initial_stress(const InitialStressField<Dim>& stress, const std::vector<LinearElastic>& materials, Particles<Dim>& particles) {
   for (int p = 0; p < particles.size(); ++p) {
+    const LinearElastic& material = materials[particles.material[p]];
     particles.strain[p] = material.strain<Dim>(stress(particles.reference_position[p]));
     particles.stress[p] = material.stress<Dim>(particles.strain[p]);
     particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
@@ -50,7 +51,7 @@ TEST_CASE("Initial fields: the first mode's velocity and a prestress, set per pa
   Particles<2> block;
   block.add(Vector<2>(1.0, 2.0), 1.0, 1.0, Vector<2>::Zero(), Vector<2>(0.5, 0.5));
   const LinearElastic soil{5e6, 0.3, 6000.0};
-  set_initial_stress<2>([](const Vector<2>& x) { return Matrix<2>((Matrix<2>() << -x[1], 0.5, 0.5, -3.0).finished() * 1e4); }, soil, block);
+  set_initial_stress<2>([](const Vector<2>& x) { return Matrix<2>((Matrix<2>() << -x[1], 0.5, 0.5, -3.0).finished() * 1e4); }, {soil}, block);
   CHECK(block.stress[0](0, 0) == doctest::Approx(-2e4));
   CHECK(block.stress[0](0, 1) == doctest::Approx(0.5e4));
   CHECK(block.stress[0](1, 1) == doctest::Approx(-3e4));

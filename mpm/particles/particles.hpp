@@ -24,12 +24,13 @@ struct Particles {
   std::vector<Matrix<Dim>> stress;                 ///< sigma_p, in-plane components
   std::vector<double> stress_zz;                   ///< sigma_zz of plane strain (0 in 1D)
   std::vector<Vector<Dim>> half_length;            ///< l_p per axis: half the initial particle spacing (uGIMP)
+  std::vector<int> material;                       ///< the particle's material: an index into Model::materials
 
   int size() const { return static_cast<int>(mass.size()); }
   double volume(int p) const { return mass[p] / density[p]; }  ///< V_p = m_p / rho_p
 
   void add(const Vector<Dim>& x, double particle_mass, double particle_density, const Vector<Dim>& v,
-           const Vector<Dim>& particle_half_length) {
+           const Vector<Dim>& particle_half_length, int material_index = 0) {
     id.push_back(size());
     mass.push_back(particle_mass);
     density.push_back(particle_density);
@@ -41,6 +42,7 @@ struct Particles {
     stress.push_back(Matrix<Dim>::Zero());
     stress_zz.push_back(0.0);
     half_length.push_back(particle_half_length);
+    material.push_back(material_index);
   }
 };
 

@@ -617,7 +617,7 @@ void check_lme_symmetric_point(LmeShape<Dim>& lme, const Grid<Dim>& grid, const 
 
 }  // namespace testing
 
-TEST_CASE("Eq. (35), Eq. (36) by hand: at a node and at a cell centre lambda = 0 and N is the normalised Gaussian prior; grad N by Eq. (41)") {
+TEST_CASE("Eq. (35), Eq. (36) by hand: at a node and at a cell centre lambda = 0 and N is the normalised Gaussian prior, grad N by Eq. (41)") {
   // Tolerances: what |r|/h <= 1e-13 allows (testing::check_lme_symmetric_point), a few 1e-13 at most.
   LmeOptions options;
   options.newton_tolerance = 1e-13;
@@ -1007,7 +1007,7 @@ TEST_CASE("Eq. (34): N maximises the entropy less beta U among the partitions of
   CHECK(lme_entropy(3, corner) == 0.0);
 }
 
-TEST_CASE("Eq. (37), Eq. (38), Eq. (40): r and J are the gradient and Hessian of log Z (finite differences in lambda); f_I by hand") {
+TEST_CASE("Eq. (37), Eq. (38), Eq. (40): r and J are the gradient and Hessian of log Z (finite differences in lambda), f_I by hand") {
   // Eq. (40) by hand: beta = 3, lambda = (0.5, -1), x - x_I = (1, 2): -3 (1 + 4) + (0.5 - 2) = -16.5.
   CHECK(lme_exponent<2>(3.0, Vector<2>(0.5, -1.0), Vector<2>(1.0, 2.0)) == -16.5);
   // The 16 neighbours of a point, a lambda away from the root: log Z is smooth in lambda, and central

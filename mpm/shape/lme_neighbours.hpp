@@ -80,7 +80,7 @@ inline int lme_neighbours(const Grid<Dim>& grid, double radius_squared, int capa
   }
 }
 
-TEST_CASE("LME neighbours: every node within R and no other; the lattice bound is reached and never exceeded") {
+TEST_CASE("LME neighbours: every node within R and no other, the lattice bound is reached and never exceeded") {
   // By hand: R = 1.5 h around x = 2.25 h on a line: nodes 1, 2, 3 (offsets 1.25, 0.25, -0.75); node 0
   // (2.25) and node 4 (1.75) are beyond R.
   const Grid<1> line(Vector<1>(0.0), 1.0, {10});

@@ -41,11 +41,12 @@ inline double updated_density(double density, double dt, double volumetric_strai
 }
 
 /// Steps 4-5: \f$ \boldsymbol\varepsilon_p \mathrel{+}= \Delta t\,\dot{\boldsymbol\varepsilon}_p \f$ (Eq. 16),
-/// the density by Eq. (17), and the stress by Hooke's law, Eq. (3).
+/// the density by Eq. (17), and the stress by Hooke's law, Eq. (3), of the particle's own material.
 template <int Dim>
 void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& nodal_velocity,
-                                  const LinearElastic& material, double dt, Particles<Dim>& particles) {
+                                  const std::vector<LinearElastic>& materials, double dt, Particles<Dim>& particles) {
   parallel_for(particles.size(), [&](int p) {
+    const LinearElastic& material = materials[particles.material[p]];
     const Matrix<Dim> rate = strain_rate(stencils, p, nodal_velocity);
     particles.strain[p] += dt * rate;
     particles.density[p] = updated_density(particles.density[p], dt, rate.trace());
@@ -54,12 +55,24 @@ void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vect
   });
 }
 
+TEST_CASE("Eq. (3): each particle's stress by its own material: two bodies, E = 100 and 300 Pa, the same strain") {
+  // The worked example's two particles, the second of material 1: the same nodal velocities give
+  // particle 0 the strain -0.016 (stress -1.6 Pa at E = 100) and particle 1 -0.004: -0.4 Pa at E = 100, -1.2 at 300.
+  testing::WorkedExample example;
+  example.particles.material[1] = 1;
+  const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
+  update_strain_density_stress(example.stencils, nodal_velocity, {LinearElastic{100.0, 0.0, 4.0}, LinearElastic{300.0, 0.0, 4.0}}, 0.01,
+                               example.particles);
+  CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-1.6));
+  CHECK(example.particles.stress[1](0, 0) == doctest::Approx(-1.2));
+}
+
 TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density and stress: the worked example and a 2D shear") {
   testing::WorkedExample example;
   const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
   CHECK(strain_rate(example.stencils, 0, nodal_velocity)(0, 0) == doctest::Approx(-1.6));
   CHECK(strain_rate(example.stencils, 1, nodal_velocity)(0, 0) == doctest::Approx(-0.4));
-  update_strain_density_stress(example.stencils, nodal_velocity, LinearElastic{100.0, 0.0, 4.0}, 0.01, example.particles);
+  update_strain_density_stress(example.stencils, nodal_velocity, {LinearElastic{100.0, 0.0, 4.0}}, 0.01, example.particles);
   CHECK(example.particles.strain[0](0, 0) == doctest::Approx(-0.016));
   CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-1.6));        // E eps = 100 (-0.016)
   CHECK(example.particles.density[0] == doctest::Approx(4.0 / (1.0 - 0.016)));  // compression: denser
@@ -81,7 +94,7 @@ TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density a
   CHECK(rate(1, 1) == doctest::Approx(0.0));
 }
 
-TEST_CASE("Eq. (17): rho / (1 + x), x = dt tr(eps_dot): positive for any expansion, in compression only while x > -1; it differs from rho e^{-x} by rho x^2 / 2, first order") {
+TEST_CASE("Eq. (17): rho / (1 + x), x = dt tr(eps_dot): positive for any expansion, in compression only while x > -1, it differs from rho e^{-x} by rho x^2 / 2, first order") {
   // 1/(1+x) = 1 - x + x^2 - ..., e^{-x} = 1 - x + x^2/2 - ...: the x^2 terms differ, so the two agree to
   // first order only: (1/(1+x) - e^{-x}) / x^2 = 1/2 - 5x/6 + ... -> 1/2.
   for (const double x : {1e-2, -1e-2, 1e-3}) {
@@ -94,7 +107,7 @@ TEST_CASE("Eq. (17): rho / (1 + x), x = dt tr(eps_dot): positive for any expansi
   CHECK(updated_density(3.0, 0.5, -3.0) == doctest::Approx(-6.0));  // x = -1.5: past the limit, negative
 }
 
-TEST_CASE("Eq. (16), Eq. (17): a uniaxial stretch v = r x on moving particles: the accumulated strain is ln(lambda), not lambda - 1; rho lambda = rho_0 exactly") {
+TEST_CASE("Eq. (16), Eq. (17): a uniaxial stretch v = r x on moving particles: the accumulated strain is ln(lambda), not lambda - 1, rho lambda = rho_0 exactly") {
   // Two particles move with v = r x (r = 1/s, reproduced exactly by linear shape functions) for T = 0.5 s
   // in steps of 1e-4 s: their distance grows by (1 + r dt) a step, lambda = (1.0001)^5000 = 1.64866, so
   // ln(lambda) = 5000 ln(1.0001) = 0.499975 and lambda - 1 = 0.6487. The strain adds r dt a step: 0.5.
@@ -110,7 +123,7 @@ TEST_CASE("Eq. (16), Eq. (17): a uniaxial stretch v = r x on moving particles: t
   const std::vector<Vector<1>> nodal_velocity{Vector<1>(0.0), Vector<1>(r), Vector<1>(2.0 * r)};
   for (int step = 0; step < 5000; ++step) {
     compute_stencils(shape, particles.position, stencils);
-    update_strain_density_stress(stencils, nodal_velocity, LinearElastic{100.0, 0.0, 4.0}, dt, particles);
+    update_strain_density_stress(stencils, nodal_velocity, {LinearElastic{100.0, 0.0, 4.0}}, dt, particles);
     for (int p = 0; p < 2; ++p) particles.position[p][0] += dt * r * particles.position[p][0];
   }
   const double stretch = (particles.position[1][0] - particles.position[0][0]) / 0.2;
