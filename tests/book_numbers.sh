@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # verification/check_book_numbers.py (run by make figures against results/) on a results folder and
-# pages made by hand: a number that matches its source passes; a stale one, a missing row, a missing
-# file and a regular expression that matches nothing each fail, naming the page's line.
+# pages made by hand: a number that matches its source passes (also scaled by a factor, a per cent); a stale
+# one, a missing row, a missing file, a bad factor and a regular expression that matches nothing each fail,
+# naming the page's line.
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 check=$root/verification/check_book_numbers.py
@@ -34,5 +35,11 @@ printf 'RMS 0.17<!-- check sweep.csv shape=linear integrator=fe : rms -->\n' >"$
 expect 1 "sweep.csv has no column rms"
 printf 'mass 1e-14<!-- check report.md /smallest error ([0-9.e-]+)/ -->\n' >"$page"
 expect 1 "matches nothing"
+printf 'RMS 17.18<!-- check sweep.csv shape=linear integrator=fe cells=40 : rms_over_v0 * 100 --> %%\n' >"$page"
+expect 0 "1 quoted numbers checked.*0 differ"
+printf 'RMS 17.3<!-- check sweep.csv shape=linear integrator=fe cells=40 : rms_over_v0 * 100 --> %%\n' >"$page"
+expect 1 "page.md:1: 17.3: the results say 17.18"
+printf 'RMS 17.18<!-- check sweep.csv shape=linear integrator=fe cells=40 : rms_over_v0 * a hundred -->\n' >"$page"
+expect 1 "the factor after"
 echo "book_numbers: $failures failures"
 [[ $failures -eq 0 ]]

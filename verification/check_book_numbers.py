@@ -11,7 +11,8 @@ Markdown viewers show the number and hide the comment):
     2.48e-14<!-- check report.md /Mass is conserved.*?largest relative error ([-+0-9.e]+)/ -->
 
 A CSV of RESULTS_DIR/data: the one row whose columns equal every KEY=VALUE (numbers compared as
-numbers), the named column. report.md (RESULTS_DIR/report.md): the first group of the regular
+numbers), the named column; `: COLUMN * FACTOR` scales it first, e.g. `: energy_drift * 100` for a
+fraction quoted in per cent. report.md (RESULTS_DIR/report.md): the first group of the regular
 expression's first match (across lines). The quoted number must be the source's value rounded to
 the digits it shows: 0.1718 stands for anything in [0.17175, 0.17185], 2.48e-14 for [2.475e-14,
 2.485e-14]; a leading + or - is part of the number. Prints one line per number that differs or
@@ -59,7 +60,12 @@ def source_value(results, spec):
             return None, f"/{match.group(1)}/ matches nothing in {path}"
         return found.group(1), None
     keys, _, column = rest.partition(":")
-    column = column.strip()
+    column, _, factor = column.partition("*")
+    column, factor = column.strip(), factor.strip()
+    try:
+        scale = float(factor) if factor else 1.0
+    except ValueError:
+        return None, f"the factor after '*' must be a number: {factor}"
     path = os.path.join(results, "data", source)
     if not column:
         return None, "no ': column' after the keys"
@@ -75,7 +81,12 @@ def source_value(results, spec):
     chosen = [row for row in rows if all(k in row and same(row[k], v) for k, v in conditions)]
     if len(chosen) != 1:
         return None, f"{len(chosen)} rows of {source} match {keys.strip()}, not one"
-    return chosen[0][column], None
+    if not factor:
+        return chosen[0][column], None
+    try:
+        return repr(float(chosen[0][column]) * scale), None
+    except ValueError:
+        return chosen[0][column], None
 
 
 def check(results, files):

@@ -1,6 +1,7 @@
 // One Dyka-bar case of the verification suite: run scenes/dyka_bar.toml with overrides in-process,
 // record v_A(t), and compare it with the exact solution of the appendix (mpm/exact/bar.hpp).
 #pragma once
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iomanip>
@@ -22,6 +23,8 @@ struct DykaResult {
   /// row at t holds v(t + dt/2) (paper/10_integrator_analysis.md), the predictor-corrector's v(t)
   double rms_own_time = 0.0;
   double final_energy_ratio = 0.0;  ///< kinetic + strain energy at the end over its initial value
+  double smallest_energy_ratio = 0.0, largest_energy_ratio = 0.0;  ///< its least and greatest value over the run
+  double largest_energy_step_increase = 0.0;  ///< the largest rise of that ratio in one step (negative: it fell in every step)
   double largest_speed = 0.0;  ///< max |v_A|, m/s
   double wall_seconds = 0.0;
   double mass_error = 0.0;     ///< largest relative |sum m_I - sum m_p| of the run
@@ -101,7 +104,15 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
       exact_own_time[n] = bar.velocity(reference_position, result.time[n] + 0.5 * step);
     }
   if (!result.failed) result.rms_own_time = mpm::rms_error(result.velocity, exact_own_time);
-  if (!recorder.energy.empty() && recorder.energy.front() > 0.0) result.final_energy_ratio = recorder.energy.back() / recorder.energy.front();
+  if (!recorder.energy.empty() && recorder.energy.front() > 0.0) {
+    const double initial = recorder.energy.front();
+    result.final_energy_ratio = recorder.energy.back() / initial;
+    result.smallest_energy_ratio = *std::min_element(recorder.energy.begin(), recorder.energy.end()) / initial;
+    result.largest_energy_ratio = *std::max_element(recorder.energy.begin(), recorder.energy.end()) / initial;
+    result.largest_energy_step_increase = -1e300;
+    for (size_t n = 1; n < recorder.energy.size(); ++n)
+      result.largest_energy_step_increase = std::max(result.largest_energy_step_increase, (recorder.energy[n] - recorder.energy[n - 1]) / initial);
+  }
   return result;
 }
 

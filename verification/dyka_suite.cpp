@@ -7,7 +7,9 @@
 //
 // Cases: the mesh sweep of Fig. 6 (10 to 2560 cells, paper/08_test_cases.md) for linear, uGIMP and LME
 // gamma 3 with forward Euler and the predictor-corrector (also Figs. 7, 9, 10 and the work-
-// precision chart); the gamma sweep of Fig. 8 (40 cells).
+// precision chart); the gamma sweep of Fig. 8 (40 cells); the energy over 10 periods at 40 cells (the runs of
+// tests/energy.cpp, into dyka_energy.csv); each choice of paper/09_choices.md switched on its own (dyka_choices.csv),
+// for the numbers paper/ quotes.
 //
 // FE against NPC, fairly (paper/10_integrator_analysis.md): on the meshes without grid crossing, every
 // shape also runs the predictor-corrector with the Newmark average (undamped) and forward Euler damped by
@@ -217,18 +219,74 @@ int main(int argc, char** argv) {
   for (const auto& mesh : blends)
     for (const auto& run : mesh) by_name[run.name] = &run;
 
+  // The choices of paper/09_choices.md, each switched on its own on the sweep's run (40 cells unless stated; the
+  // free end's margin cells at 2560 too, where a particle reaches past them), and compared with that run.
+  struct ChoiceCase {
+    std::string choice, shape, integrator;
+    int cells;
+    std::vector<std::string> overrides;
+    std::string reference;  ///< the run it is compared with
+  };
+  std::vector<ChoiceCase> choice_cases{
+      {"fe_position_start", "linear", "fe", 40, {"solver.fe_position_velocity=\"start\""}, ""},
+      {"fe_position_start", "lme", "fe", 40, {"solver.fe_position_velocity=\"start\""}, ""},
+      {"no_free_end_margin", "lme", "fe", 40, {"grid.margin_min=[0]"}, ""},
+      {"no_free_end_margin", "lme", "fe", 2560, {"grid.margin_min=[0]"}, ""},
+      {"beta_mean_neighbour_distance", "lme", "fe", 40, {"solver.lme_beta=\"mean_neighbour_distance\""}, ""},
+      {"beta_mean_neighbour_distance", "lme", "npc", 40, {"solver.lme_beta=\"mean_neighbour_distance\""}, ""},
+      {"lme_tol_1e-5", "lme", "npc", 40, {"solver.lme_tol=1e-5"}, ""},
+      {"courant_sum", "linear", "fe", 40, {"solver.courant=\"sum\""}, ""},
+      {"courant_sum", "linear", "npc", 40, {"solver.courant=\"sum\""}, ""},
+      {"default_snapshots", "linear", "fe", 40, {"output.snapshots=[0.0, 1.0e-4, 2.0e-4]"}, ""},
+      {"rigid_support_margin_gamma0.8", "lme", "npc", 40, {"grid.margin_max=[4]", "solver.lme_gamma=0.80"}, gamma_name("npc", 0.8)},
+  };
+  std::vector<verification::DykaResult> choice_runs(choice_cases.size());
+  std::vector<std::string> choice_names;
+  for (auto& c : choice_cases) {
+    choice_names.push_back("dyka_choice_" + c.choice + "_" + c.shape + "_" + c.integrator + "_" + std::to_string(c.cells));
+    if (c.reference.empty()) c.reference = sweep_name(c.shape, c.integrator, c.cells);
+  }
+  verification::run_cases("dyka", choice_names, std::vector<bool>(choice_cases.size(), false), cores, [&](size_t k, int threads) {
+    std::vector<std::string> overrides = mesh_settings(choice_cases[k].shape, choice_cases[k].cells);
+    overrides.push_back("solver.integrator=\"" + choice_cases[k].integrator + "\"");
+    overrides.insert(overrides.end(), choice_cases[k].overrides.begin(), choice_cases[k].overrides.end());
+    choice_runs[k] = verification::run_dyka(scene, choice_names[k], overrides, threads);
+  });
+
+  // Energy over 10 periods (10 x 4L/c = 1.0551 ms) at 40 cells, the runs of tests/energy.cpp: every shape with
+  // both integrators at CFL 0.5, and the predictor-corrector at CFL 0.1 (its loss falls with the step).
+  struct EnergyCase {
+    std::string shape, integrator;
+    double cfl;
+  };
+  std::vector<EnergyCase> energy_cases;
+  for (const auto& shape : shapes) {
+    for (const auto& integrator : integrators) energy_cases.push_back({shape, integrator, 0.5});
+    energy_cases.push_back({shape, "npc", 0.1});
+  }
+  std::vector<verification::DykaResult> energy_runs(energy_cases.size());
+  std::vector<std::string> energy_names;
+  for (const auto& c : energy_cases) energy_names.push_back("dyka_energy_" + c.shape + "_" + c.integrator + "_cfl" + fixed(c.cfl));
+  verification::run_cases("dyka", energy_names, std::vector<bool>(energy_cases.size(), false), cores, [&](size_t k, int threads) {
+    std::vector<std::string> overrides = verification::shape_settings(energy_cases[k].shape);
+    overrides.insert(overrides.end(), {"solver.integrator=\"" + energy_cases[k].integrator + "\"", "solver.cfl=" + fixed(energy_cases[k].cfl),
+                                       "solver.end_time=1.0551e-3", "output.snapshots=[]"});
+    energy_runs[k] = verification::run_dyka(scene, energy_names[k], overrides, threads);
+  });
+
   // --- Data files --------------------------------------------------------------------------
   std::ofstream sweep(folder + "/dyka_sweep.csv");  // Fig. 6 and the work-precision chart
   sweep << std::setprecision(8)
         << "shape,integrator,cells,h,crossing_ratio,band,rms,rms_over_v0,largest_speed_over_v0,wall_seconds,steps,status,"
-           "rms_own_time_over_v0\n";
+           "rms_own_time_over_v0,newton_mean,newton_max,neighbours_mean\n";
   for (const auto& shape : shapes)
     for (const auto& integrator : integrators)
       for (int cells : sweep_cells) {
         const auto& run = result(sweep_name(shape, integrator, cells));
         sweep << shape << "," << integrator << "," << cells << "," << 0.1333 / cells << "," << crossing_ratio(cells) << ","
               << band_of(cells) << "," << run.rms << "," << run.rms / speed_v0 << "," << run.largest_speed / speed_v0 << ","
-              << run.wall_seconds << "," << run.steps << "," << (run.failed ? "failed" : "ok") << "," << run.rms_own_time / speed_v0 << "\n";
+              << run.wall_seconds << "," << run.steps << "," << (run.failed ? "failed" : "ok") << "," << run.rms_own_time / speed_v0 << ","
+              << run.newton_mean << "," << run.newton_max << "," << run.neighbours_mean << "\n";
       }
   std::ofstream fair(folder + "/dyka_fair.csv");  // FE against NPC, fairly
   fair << std::setprecision(8)
@@ -242,6 +300,43 @@ int main(int argc, char** argv) {
            << average.rms / speed_v0 << "," << blend.rms / speed_v0 << "," << flip_fraction[k] << "," << fe.final_energy_ratio << ","
            << npc.final_energy_ratio << "," << average.final_energy_ratio << "," << blend.final_energy_ratio << "\n";
     }
+  std::ofstream choice_file(folder + "/dyka_choices.csv");  // the measured effects of paper/09_choices.md
+  choice_file << std::setprecision(8)
+              << "choice,shape,integrator,cells,rms_over_v0,reference_rms_over_v0,steps,reference_steps,end_time,status,"
+                 "largest_velocity_difference,rms_velocity_difference\n";
+  for (size_t k = 0; k < choice_cases.size(); ++k) {
+    const auto &run = choice_runs[k], &reference = result(choice_cases[k].reference);
+    // v_A against the reference run's, where both sampled the same times (else nan)
+    double largest = std::nan(""), rms = std::nan("");
+    if (!run.failed && !reference.failed && run.time.size() == reference.time.size() && run.time.size() > 1) {
+      bool same_times = true;
+      std::vector<double> difference;
+      for (size_t n = 0; n < run.time.size(); ++n) {
+        // the step follows the solution (Eq. 42), so the two runs' times may differ by round-off
+        same_times = same_times && std::abs(run.time[n] - reference.time[n]) <= 1e-3 * (reference.time[1] - reference.time[0]);
+        difference.push_back(run.velocity[n] - reference.velocity[n]);
+      }
+      if (same_times) {
+        largest = 0.0;
+        for (double d : difference) largest = std::max(largest, std::abs(d));
+        rms = mpm::rms_error(difference, std::vector<double>(difference.size(), 0.0));
+      }
+    }
+    choice_file << choice_cases[k].choice << "," << choice_cases[k].shape << "," << choice_cases[k].integrator << "," << choice_cases[k].cells
+                << "," << (run.failed ? std::nan("") : run.rms / speed_v0) << "," << reference.rms / speed_v0 << "," << run.steps << ","
+                << reference.steps << "," << (run.time.empty() ? 0.0 : run.time.back()) << "," << (run.failed ? "failed" : "ok") << ","
+                << largest << "," << rms << "\n";
+  }
+  std::ofstream energy_file(folder + "/dyka_energy.csv");  // energy over 10 periods, 40 cells
+  energy_file << std::setprecision(8)
+              << "shape,integrator,cfl,periods,smallest_over_initial,largest_over_initial,final_over_initial,"
+                 "largest_step_increase_over_initial,steps,status\n";
+  for (size_t k = 0; k < energy_cases.size(); ++k) {
+    const auto& run = energy_runs[k];
+    energy_file << energy_cases[k].shape << "," << energy_cases[k].integrator << "," << energy_cases[k].cfl << ",10,"
+                << run.smallest_energy_ratio << "," << run.largest_energy_ratio << "," << run.final_energy_ratio << ","
+                << run.largest_energy_step_increase << "," << run.steps << "," << (run.failed ? "failed" : "ok") << "\n";
+  }
   std::ofstream gamma_file(folder + "/dyka_gamma.csv");  // Fig. 8, second panel
   gamma_file << std::setprecision(8) << "gamma,rms_fe,rms_npc,rms_fe_over_v0,rms_npc_over_v0,rms_fe_own_time_over_v0\n";
   for (double gamma : gammas)
@@ -449,6 +544,29 @@ int main(int argc, char** argv) {
                "mean " + fixed(mean / count, 3) + " iterations per particle-step over the LME runs, largest " + std::to_string(largest),
                mean / count <= 6.0, false});
     sections.push_back({"LME Newton iterations", list});
+  }
+  {  // Energy over 10 periods
+    std::vector<Claim> list;
+    std::string fe_text, npc_text;
+    bool fe_holds = true, npc_holds = true;
+    for (size_t k = 0; k < energy_cases.size(); ++k) {
+      const auto& run = energy_runs[k];
+      const std::string label = energy_cases[k].shape + (energy_cases[k].cfl == 0.5 ? "" : " at CFL " + fixed(energy_cases[k].cfl));
+      if (energy_cases[k].integrator == "fe") {
+        fe_holds = fe_holds && !run.failed && run.smallest_energy_ratio >= 0.965 && run.largest_energy_ratio <= 1.035 &&
+                   std::abs(run.final_energy_ratio - 1.0) <= 0.02;
+        fe_text += label + ": [" + fixed(run.smallest_energy_ratio) + ", " + fixed(run.largest_energy_ratio) + "], at the end " +
+                   fixed(run.final_energy_ratio) + "; ";
+      } else {
+        npc_holds = npc_holds && !run.failed && run.largest_energy_step_increase <= 1e-12 && run.final_energy_ratio < 1.0;
+        npc_text += label + ": " + fixed(run.final_energy_ratio) + " left, largest rise in a step " + fixed(run.largest_energy_step_increase, 2) + "; ";
+      }
+    }
+    add(list, {"Forward Euler conserves energy on average: over 10 periods E/E0 stays within [0.965, 1.035] and ends within 2 % of 1",
+               fe_text, fe_holds, false});
+    add(list, {"The predictor-corrector (Eq. 32) dissipates: E/E0 rises in no step (by at most 1e-12) and falls over 10 periods",
+               npc_text, npc_holds, false});
+    sections.push_back({"Energy over 10 periods (40 cells, CFL 0.5 unless stated; data/dyka_energy.csv)", list});
   }
 
   std::ofstream report(report_path);

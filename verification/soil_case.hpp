@@ -43,6 +43,9 @@ struct SoilResult {
   long steps = 0;
   double wall_seconds = 0.0;    ///< the whole case: set-up, run and recording
   double solver_seconds = 0.0;  ///< the time-step loop alone (RunSummary)
+  double newton_mean = 0.0;     ///< LME: Newton iterations per particle-step on average (0 for other shapes)
+  int newton_max = 0;           ///< LME: the most in one particle-step
+  double neighbours_mean = 0.0; ///< nodes per particle-step on average
   bool failed = false;
   std::string failure;  ///< the solver's diagnosis when it failed
 };
@@ -104,6 +107,9 @@ inline SoilResult run_soil_case(const std::string& scene_path, const std::string
   result.steps = summary.steps;
   result.largest_mass_mismatch = summary.largest_mass_error;
   result.solver_seconds = summary.wall_seconds;
+  result.newton_mean = summary.shape.newton_iterations_mean();
+  result.newton_max = summary.shape.newton_iterations_max();
+  result.neighbours_mean = summary.shape.neighbours_mean();
   return result;
 }
 
