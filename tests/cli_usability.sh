@@ -89,9 +89,14 @@ grep -q "'exact.csv' using 1:2" "$work/bar/plot.gp" || fail "the plot does not d
 # and a 2D run without an exact solution
 expect 0 -- run "$root/scenes/soil_block.toml" --out "$work/block" --set solver.end_time=1.0 --set output.snapshots=[1.0] \
   --set 'exact="soil_column"'
-[[ "$(head -2 "$work/block/exact.csv" | tr '\n' ' ')" == "t,top.y,top.sigma_yy 0,9.5,0 " ]] ||
+[[ "$(head -2 "$work/block/exact.csv" | tr '\n' ' ')" == "t,top.u_y,top.sigma_yy 0,0,0 " ]] ||
   fail "2D exact.csv starts with $(head -2 "$work/block/exact.csv" | tr '\n' ' ')"
+# observers.csv ends with each observer's displacement since t = 0, which exact.csv's u_y sits beside in the plot
+[[ "$(head -1 "$work/block/observers.csv")" == *",top.sigma_xy,top.u_x,top.u_y" ]] || fail "observers.csv header: $(head -1 "$work/block/observers.csv")"
+awk -F, 'NR > 1 && ($10 != $3 - 9.5 && ($10 - ($3 - 9.5)) ^ 2 > 1e-20) { bad = 1 } END { exit bad }' "$work/block/observers.csv" ||
+  fail "observers.csv: top.u_y is not y - Y"
 expect 0 -- plot "$work/block"
+grep -q "'exact.csv' using 1:2 " "$work/block/plot.gp" || fail "the 2D plot does not draw the exact settlement"
 [[ -s "$work/block/observers.png" && -s "$work/block/energy.png" ]] || fail "mpm plot of a 2D run wrote no PNG"
 grep -q 'timestep="1"' "$work/block/snapshots.pvd" || fail "2D snapshots.pvd lacks t = 1"
 grep -q "'exact.csv' using 1:2" "$work/block/plot.gp" || fail "the 2D plot does not draw the exact settlement"

@@ -3,7 +3,7 @@
 /// at the material point each observer names (its `position`, a reference position; the observed particle is
 /// the one nearest it, whose own reference position run.json gives) and at every sample time, beside observers.csv:
 ///   dyka_bar, vibrating_bar  t, then per observer NAME.v_x, NAME.sigma_xx   (paper/06_exact_bar.md, mpm/exact/bar.hpp)
-///   soil_column              t, then per observer NAME.y, NAME.sigma_yy     (paper/07_exact_column.md, mpm/exact/column.hpp)
+///   soil_column              t, then per observer NAME.u_y, NAME.sigma_yy   (paper/07_exact_column.md, mpm/exact/column.hpp)
 ///   manufactured_*           t, then per observer NAME.v_x, NAME.v_y, NAME.sigma_xx, NAME.sigma_yy, NAME.sigma_xy
 /// The columns carry observers.csv's names, so `mpm plot` draws each beside its computed series.
 /// The exact solutions take their parameters from the scene and the initial particles, never from
@@ -69,10 +69,10 @@ class ExactWriter : public Monitor<Dim> {
     out_ << "\n";
   }
 
-  /// The columns per observer: dyka_bar and vibrating_bar v_x, sigma_xx; soil_column y (the current
-  /// height, beside observers.csv's NAME.y), sigma_yy; the manufactured solutions v and sigma.
+  /// The columns per observer: dyka_bar and vibrating_bar v_x, sigma_xx; soil_column u_y (the settlement,
+  /// beside observers.csv's NAME.u_y), sigma_yy; the manufactured solutions v and sigma.
   static std::vector<std::string> exact_columns(const std::string& exact) {
-    if (exact == "soil_column") return {"y", "sigma_yy"};
+    if (exact == "soil_column") return {"u_y", "sigma_yy"};
     if (exact == "dyka_bar" || exact == "vibrating_bar") return {"v_x", "sigma_xx"};
     return {"v_x", "v_y", "sigma_xx", "sigma_yy", "sigma_xy"};
   }
@@ -82,8 +82,7 @@ class ExactWriter : public Monitor<Dim> {
       out_ << time;
       for (const auto& point : reference_) {
         const ExactState state = solution_->at(point, time);
-        for (const auto& column : columns_)
-          out_ << "," << (column == "y" ? point[Dim - 1] + state.u_y : state.quantity(column));
+        for (const auto& column : columns_) out_ << "," << state.quantity(column);
       }
       out_ << "\n";
       check_written(out_, path_);

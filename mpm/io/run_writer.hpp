@@ -1,6 +1,7 @@
 /// \file
 /// Writes what a run produces into its output folder:
-///   observers.csv        t, then per observer NAME.x, NAME.v_x, NAME.sigma_xx (2D adds y components)
+///   observers.csv        t, then per observer NAME.x, NAME.v_x, NAME.sigma_xx (2D adds y components), then
+///                        per observer its displacement since t = 0, NAME.u_x (2D: NAME.u_y), x_p - X_p
 ///   energy.csv           t,kinetic,strain,total,momentum_x (2D adds momentum_y)
 ///   snapshot_NNNN.csv    every particle: id, position, velocity, stress, density
 ///   snapshot_NNNN.vtk    the same as legacy VTK polydata
@@ -60,6 +61,9 @@ class RunWriter : public Monitor<Dim> {
       for (int axis = 0; axis < Dim; ++axis) observers_ << "," << name << ".sigma_" << axis_name(axis) << axis_name(axis);
       if (Dim == 2) observers_ << "," << name << ".sigma_xy";
     }
+    // The displacements come last, so that the columns before them keep their numbers.
+    for (const auto& observer : scene.observers)
+      for (int axis = 0; axis < Dim; ++axis) observers_ << "," << observer.name << ".u_" << axis_name(axis);
     observers_ << "\n";
     energy_ << std::setprecision(12) << "t,kinetic,strain,total,momentum_x" << (Dim == 2 ? ",momentum_y" : "") << "\n";
     for (auto [stream, name] : {std::pair{&observers_, "/observers.csv"}, {&energy_, "/energy.csv"}}) {
@@ -82,6 +86,8 @@ class RunWriter : public Monitor<Dim> {
       for (int axis = 0; axis < Dim; ++axis) observers_ << "," << particles.stress[p](axis, axis);
       if (Dim == 2) observers_ << "," << particles.stress[p](0, Dim - 1);
     }
+    for (int p : observed_)
+      for (int axis = 0; axis < Dim; ++axis) observers_ << "," << particles.position[p][axis] - particles.reference_position[p][axis];
     observers_ << "\n";
     energy_ << time << "," << balances.kinetic << "," << balances.strain << "," << balances.total();
     for (int axis = 0; axis < Dim; ++axis) energy_ << "," << balances.momentum[axis];
@@ -203,17 +209,18 @@ inline std::string json_string(const std::string& text) {
 inline std::vector<std::pair<std::string, std::string>> column_units(int dimension) {
   const bool two = dimension == 2;
   std::vector<std::pair<std::string, std::string>> units{
-      {"observers.csv:t", "s"}, {"observers.csv:NAME.x", "m"}, {"observers.csv:NAME.v_x", "m/s"}, {"observers.csv:NAME.sigma_xx", "Pa"}};
+      {"observers.csv:t", "s"}, {"observers.csv:NAME.x", "m"}, {"observers.csv:NAME.v_x", "m/s"}, {"observers.csv:NAME.sigma_xx", "Pa"},
+      {"observers.csv:NAME.u_x", "m"}};
   if (two)
     units.insert(units.end(), {{"observers.csv:NAME.y", "m"}, {"observers.csv:NAME.v_y", "m/s"}, {"observers.csv:NAME.sigma_yy", "Pa"},
-                               {"observers.csv:NAME.sigma_xy", "Pa"}});
+                               {"observers.csv:NAME.sigma_xy", "Pa"}, {"observers.csv:NAME.u_y", "m"}});
   const std::string energy = two ? "J/m" : "J/m^2", momentum = two ? "kg/s" : "kg/(m s)";
   units.insert(units.end(), {{"energy.csv:t", "s"}, {"energy.csv:kinetic", energy}, {"energy.csv:strain", energy},
                              {"energy.csv:total", energy}, {"energy.csv:momentum_x", momentum}});
   if (two) units.push_back({"energy.csv:momentum_y", momentum});
   units.insert(units.end(), {{"exact.csv:t", "s"}, {"exact.csv:NAME.v_x", "m/s"}, {"exact.csv:NAME.sigma_xx", "Pa"}});
   if (two)
-    units.insert(units.end(), {{"exact.csv:NAME.y", "m"}, {"exact.csv:NAME.v_y", "m/s"}, {"exact.csv:NAME.sigma_yy", "Pa"},
+    units.insert(units.end(), {{"exact.csv:NAME.u_y", "m"}, {"exact.csv:NAME.v_y", "m/s"}, {"exact.csv:NAME.sigma_yy", "Pa"},
                                {"exact.csv:NAME.sigma_xy", "Pa"}});
   units.insert(units.end(), {{"snapshot_NNNN.csv:id", "-"}, {"snapshot_NNNN.csv:x", "m"}, {"snapshot_NNNN.csv:v_x", "m/s"},
                              {"snapshot_NNNN.csv:sigma_xx", "Pa"}});
