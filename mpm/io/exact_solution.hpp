@@ -79,7 +79,7 @@ inline bool has_finite_strain_reference(const std::string& exact) { return exact
 namespace detail {
 
 /// The dyka_bar's initial data read from the scene as pieces of constant velocity and stress on the bar
-/// [0, L] (measured from the free end, origin): v_0 is body.velocity, replaced by [initial_field] velocity
+/// [0, L] (measured from the free end, origin): v_0 is the velocity of the body that holds the point, replaced by [initial_field] velocity
 /// where given, replaced by each [[initial_velocity]] box that holds the point (later boxes win, as at the
 /// particles); sigma_0 is [initial_field] stress, else 0. The bar is sampled at the midpoints of 4096
 /// equal intervals and every change between neighbours is located by bisection to 1e-14 L, so each jump
@@ -100,7 +100,9 @@ inline std::vector<exact::BarPiece> scene_bar_pieces(const Scene& scene) {
   };
   auto data_at = [&](double X) {  // (v_0, sigma_0) at X from the free end
     const double x = origin + X;
-    double velocity = scene.bodies[0].velocity[0];
+    double velocity = 0.0;  // of the body that holds x (the bodies fill the bar; the first wins at a shared end)
+    for (auto body = scene.bodies.rbegin(); body != scene.bodies.rend(); ++body)
+      if (x >= body->min[0] && x <= body->max[0]) velocity = body->velocity[0];
     if (formulas.initial_velocity) velocity = formula_at(*formulas.initial_velocity, x);
     for (const auto& box : scene.initial_velocities)
       if (x >= box.min[0] && x <= box.max[0]) velocity = box.velocity[0];
@@ -360,6 +362,17 @@ TEST_CASE("SceneExactSolution: the Dyka bar's pieces from the scene, each jump e
   CHECK(solution.outside({0.99}).find("lies outside the body [1, 1.1333] m on x") == 0);
   CHECK(solution.outside({1.1333}).empty());
   CHECK_THROWS_AS(SceneExactSolution(scene, StrainMeasure::finite), std::invalid_argument);
+
+  // A bar of two bodies, [0, 0.3] at -2 m/s and [0.3, 1] at rest: each piece has its body's velocity.
+  const std::string two_bodies =
+      "exact = \"dyka_bar\"\n[grid]\nlength = [1.0]\ncells = [10]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
+      "[[body]]\nmin = [0.0]\nmax = [0.3]\nvelocity = [-2.0]\n[[body]]\nmin = [0.3]\nmax = [1.0]\n"
+      "[[fixed]]\nface = \"xmax\"\ncomponents = [\"x\"]\n[solver]\nend_time = 1.0\n";
+  const auto two = detail::scene_bar_pieces(read_scene(parse_scene_text(two_bodies, "two.toml")));
+  REQUIRE(two.size() == 2);
+  CHECK(two[0].velocity == -2.0);
+  CHECK(two[0].to == doctest::Approx(0.3).epsilon(1e-12));
+  CHECK(two[1].velocity == 0.0);
 }
 
 TEST_CASE("SceneExactSolution: the column's sigma_xx = nu/(1 - nu) sigma_yy, the finite-strain column is static") {
