@@ -9,6 +9,7 @@
 
 #include "mpm/integrators/forward_euler.hpp"
 #include "mpm/integrators/newmark_predictor_corrector.hpp"
+#include "mpm/integrators/update_stress_last.hpp"
 #include "mpm/io/scene_budget.hpp"
 #include "mpm/io/scene_builder.hpp"
 #include "mpm/shape/bspline.hpp"
@@ -68,6 +69,16 @@ inline ForwardEuler fe_integrator(const io::Scene& scene) {
   return integrator;
 }
 
+/// The scene's forward Euler with its stress updated last (`solver.stress_update` = "usl" | "musl"), with its options.
+inline UpdateStressLast stress_last_integrator(const io::Scene& scene) {
+  UpdateStressLast integrator;
+  integrator.stress_velocity =
+      scene.stress_update == "musl" ? StressLastVelocity::reprojected_particles : StressLastVelocity::updated_nodal;
+  integrator.position_velocity = fe_integrator(scene).position_velocity;
+  integrator.flip_fraction = scene.flip_fraction;
+  return integrator;
+}
+
 /// Calls visit(shape, integrator) with the scene's shape function and integrator, each built once:
 /// the one place where the scene's choice becomes a type.
 template <int Dim, class Visitor>
@@ -80,6 +91,7 @@ auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit)
     return visit(LinearShape<Dim>(grid), integrator);
   };
   if (scene.integrator == "npc") return with_shape(npc_integrator(scene));
+  if (scene.stress_update != "usf") return with_shape(stress_last_integrator(scene));
   return with_shape(fe_integrator(scene));
 }
 

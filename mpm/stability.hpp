@@ -87,11 +87,12 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
   io::Scene plain = scene;
   plain.integrator = "fe";
   plain.flip_fraction = 1.0;
+  plain.stress_update = "usf";
   const double probe_cfl = 0.1;
   limits.highest_mode = with_method<Dim>(plain, setup.model.grid, [&](auto shape, auto integrator) {
     return highest_mode_omega_dt(linearised_step_matrix(setup.model, setup.particles, shape, integrator, time_step(probe_cfl)));
   }) / probe_cfl;
-  const bool analysed = scene.integrator == "npc" || scene.flip_fraction == 1.0;
+  const bool analysed = scene.integrator == "npc" || (scene.flip_fraction == 1.0 && scene.stress_update == "usf");
   const ModeScheme scheme = scene.integrator == "fe"            ? ModeScheme::forward_euler
                             : scene.npc_velocity == "average" ? ModeScheme::npc_average
                                                               : ModeScheme::npc_eq32;
@@ -144,6 +145,7 @@ inline double scene_cfl_limit(const io::Scene& scene) {
   uniform.npc_velocity = scene.npc_velocity;
   uniform.newmark_gamma = scene.newmark_gamma;
   uniform.flip_fraction = scene.flip_fraction;
+  uniform.stress_update = scene.stress_update;
   uniform.lme_gamma = scene.lme_gamma;
   uniform.lme_tol = scene.lme_tol;
   uniform.lme_beta = scene.lme_beta;

@@ -95,6 +95,11 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
     for (int side = 0; side < 2; ++side) {
       particles = rest;
       detail::perturb_state(particles, column, side == 0 ? perturbation : -perturbation);
+      for (int p = 0; p < particles.size(); ++p) {  // the stress of the strain, Eq. (3): read by the forces of USL and MUSL
+        const LinearElastic& material = model.materials[particles.material[p]];
+        particles.stress[p] = material.stress<Dim>(particles.strain[p]);
+        particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
+      }
       integrator.step(model, stencils, no_body_force, dt, particles, grid, timers);
       response[side] = detail::state_vector(particles);
     }

@@ -3,8 +3,8 @@
 /// linearised step on a uniform body held at its walls (mpm/stability.hpp, paper/10_integrator_analysis.md).
 ///
 ///   $ build/bin/mpm stability --shape linear --integrator npc --newmark-gamma 0.75
-///   dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,highest_mode,cfl_limit,cfl_limit_from_modes
-///   1,linear,3,npc,eq32,0.75,1,1,0,64,192,1,1.63299...,1.63299...
+///   dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,highest_mode,cfl_limit,cfl_limit_from_modes,stress_update
+///   1,linear,3,npc,eq32,0.75,1,1,0,64,192,1,1.63299...,1.63299...,usf
 #pragma once
 #include <doctest/doctest.h>
 
@@ -23,7 +23,7 @@ namespace mpm::cli {
 
 struct StabilityRequest {
   int dimension = 1, ppc = 1, cells = 0;
-  std::string shape = "linear", integrator = "fe", npc_velocity = "eq32";
+  std::string shape = "linear", integrator = "fe", npc_velocity = "eq32", stress_update = "usf";
   double newmark_gamma = 0.5, lme_gamma = 3.0, flip_fraction = 1.0, poisson_ratio = 0.0;
 };
 
@@ -32,7 +32,7 @@ inline std::string stability_usage() {
   std::ostringstream out;
   out << "usage: mpm stability [--shape linear|ugimp|lme|bspline2|bspline3] [--integrator fe|npc] [--newmark-gamma G]\n"
          "                     [--npc-velocity eq32|average] [--flip-fraction A] [--ppc N] [--lme-gamma G]\n"
-         "                     [--dim 1|2] [--poisson-ratio NU] [--cells N]\n"
+         "                     [--dim 1|2] [--poisson-ratio NU] [--cells N] [--stress-update usf|usl|musl]\n"
          "  Prints CSV with the largest stable CFL (Eq. 42, c = sqrt(E / rho)) of a method: cfl_limit, from the spectral\n"
          "  radius of the code's own step linearised about rest on a uniform bar (1D) or square (2D) held at its walls,\n"
          "  and cfl_limit_from_modes, the one-mode analysis (2 for forward Euler and the Newmark average, 2/sqrt(3 - 2 gamma)\n"
@@ -43,6 +43,7 @@ inline std::string stability_usage() {
       << "  --newmark-gamma G  Newmark gamma of npc, in [0, 1] (default " << defaults.newmark_gamma << ")\n"
       << "  --npc-velocity V   eq32 | average (default " << defaults.npc_velocity << ")\n"
       << "  --flip-fraction A  forward Euler's PIC/FLIP blend, in [0, 1] (default " << defaults.flip_fraction << ")\n"
+      << "  --stress-update U  forward Euler's stress update: usf | usl | musl (default " << defaults.stress_update << ")\n"
       << "  --ppc N            particles per cell and axis, 1 to 4 (default " << defaults.ppc << ")\n"
       << "  --lme-gamma G      LME locality gamma (default " << defaults.lme_gamma << ")\n"
       << "  --dim D            1 or 2 (default " << defaults.dimension << ")\n"
@@ -85,6 +86,9 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
     } else if (option == "--npc-velocity") {
       if (value != "eq32" && value != "average") return fail(option, "must be eq32 or average, got '" + value + "'");
       request.npc_velocity = value;
+    } else if (option == "--stress-update") {
+      if (value != "usf" && value != "usl" && value != "musl") return fail(option, "must be usf, usl or musl, got '" + value + "'");
+      request.stress_update = value;
     } else if (option == "--newmark-gamma") {
       if (!read_number(value, request.newmark_gamma) || !in(request.newmark_gamma, 0.0, 1.0))
         return fail(option, "must be a number in [0, 1], got '" + value + "'");
@@ -107,9 +111,11 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
     } else {
       return fail(option,
                   "unknown option; allowed: --shape --integrator --newmark-gamma --npc-velocity --flip-fraction --ppc "
-                  "--lme-gamma --dim --poisson-ratio --cells");
+                  "--lme-gamma --dim --poisson-ratio --cells --stress-update");
     }
   }
+  if (request.integrator == "npc" && request.stress_update != "usf")
+    return fail("--stress-update", "usl and musl are forward Euler's (the predictor-corrector updates stress first): give --integrator fe");
   StabilityBody body;
   body.dimension = request.dimension;
   body.cells = request.cells;
@@ -128,7 +134,8 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
   };
   body.method = {"solver.shape=\"" + request.shape + "\"", "solver.integrator=\"" + request.integrator + "\"",
                  "solver.npc_velocity=\"" + request.npc_velocity + "\"", setting("newmark_gamma", request.newmark_gamma),
-                 setting("flip_fraction", request.flip_fraction), setting("lme_gamma", request.lme_gamma)};
+                 setting("flip_fraction", request.flip_fraction), setting("lme_gamma", request.lme_gamma),
+                 "solver.stress_update=\"" + request.stress_update + "\""};
   io::Scene scene;
   try {
     scene = stability_scene(body);
@@ -140,11 +147,11 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
   }
   const StabilityLimits limits = request.dimension == 1 ? stability_limits<1>(scene) : stability_limits<2>(scene);
   out << "dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,"
-         "highest_mode,cfl_limit,cfl_limit_from_modes\n"
+         "highest_mode,cfl_limit,cfl_limit_from_modes,stress_update\n"
       << std::setprecision(8) << request.dimension << "," << request.shape << "," << request.lme_gamma << ","
       << request.integrator << "," << request.npc_velocity << "," << request.newmark_gamma << "," << request.flip_fraction
       << "," << request.ppc << "," << request.poisson_ratio << "," << stability_cells(body) << "," << limits.unknowns << ","
-      << limits.highest_mode << "," << limits.cfl_limit << "," << limits.cfl_limit_from_modes << "\n";
+      << limits.highest_mode << "," << limits.cfl_limit << "," << limits.cfl_limit_from_modes << "," << request.stress_update << "\n";
   return 0;
 }
 

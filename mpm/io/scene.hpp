@@ -89,6 +89,7 @@ struct Scene {
   std::string fe_position_velocity = "updated", npc_position_velocity = "projected";
   std::string npc_velocity = "eq32";  ///< eq32 (the paper's Eq. 32) | average (Eq. 23, the Newmark average)
   double flip_fraction = 1.0;         ///< forward Euler's PIC/FLIP blend: 1 = FLIP (the paper's)
+  std::string stress_update = "usf";  ///< forward Euler's stress update: usf (the paper's) | usl | musl
   RunControl control;
   // [[observer]], [output]
   std::vector<ObserverSettings> observers;
@@ -400,6 +401,9 @@ inline Scene read_scene(const SceneFile& file) {
     scene.fe_position_velocity = solver.text("fe_position_velocity", {"updated", "start"}, std::string("updated"));
     scene.npc_position_velocity = solver.text("npc_position_velocity", {"projected", "corrected", "predicted"}, std::string("projected"));
     scene.npc_velocity = solver.text("npc_velocity", {"eq32", "average"}, std::string("eq32"));
+    scene.stress_update = solver.text("stress_update", {"usf", "usl", "musl"}, std::string("usf"));
+    if (scene.integrator == "npc" && scene.stress_update != "usf")
+      solver.fail("stress_update", "the predictor-corrector updates stress first (\"usf\"); usl and musl are forward Euler's");
     scene.flip_fraction = solver.number("flip_fraction", 1.0);
     if (!(scene.flip_fraction >= 0.0 && scene.flip_fraction <= 1.0)) solver.fail("flip_fraction", "must be in [0, 1] (1: FLIP, 0: PIC)");
     scene.control.energy_growth_limit = solver.number("energy_growth_limit", 10.0);

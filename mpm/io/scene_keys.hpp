@@ -93,6 +93,9 @@ inline const std::vector<SceneKey>& scene_keys() {
       {"solver.npc_velocity", "\"eq32\"", false, "-",
        "eq32 (Eq. 32 as printed: new acceleration only, damped) | average (Eq. 23: Newmark average, undamped)"},
       {"solver.flip_fraction", "1.0", false, "-", "forward Euler's PIC/FLIP blend of the particle velocity: 1 FLIP, 0 PIC"},
+      {"solver.stress_update", "\"usf\"", false, "-",
+       "forward Euler's stress update: usf (first, the paper's) | usl (last) | musl (last, from the particle velocities "
+       "projected again); paper/11_stress_update.md"},
       {"solver.energy_growth_limit", "10.0", false, "-",
        "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off"},
       {"constants.<name>", nullptr, false, "-",

@@ -151,6 +151,7 @@ inline toml::table resolved_table(const Scene& scene) {
                                      {"npc_position_velocity", scene.npc_position_velocity},
                                      {"npc_velocity", scene.npc_velocity},
                                      {"flip_fraction", scene.flip_fraction},
+                                     {"stress_update", scene.stress_update},
                                      {"energy_growth_limit", control.energy_growth_limit}});
   // The optional formula tables (mpm/io/scene_formulas.hpp), only when the scene gives them.
   const SceneFormulas& formulas = scene.formulas;

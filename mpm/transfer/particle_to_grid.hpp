@@ -33,6 +33,18 @@ void nodal_mass_and_momentum(const Particles<Dim>& particles, const Stencils<Dim
       ScatterTarget<Vector<Dim>>{grid.nodal_momentum, grid.momentum_copies});
 }
 
+/// The nodal momentum alone, projected afresh from the particles' current velocities:
+/// \f$ \mathbf p_I = \sum_p N_{Ip}\, m_p \mathbf v_p \f$ (Eqs. (21)-(22)), overwriting what nodal_momentum held. MUSL
+/// projects the updated particle velocities again with it (mpm/integrators/update_stress_last.hpp).
+template <int Dim>
+void nodal_momentum_from_particles(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
+  for (Vector<Dim>& momentum : grid.nodal_momentum) momentum.setZero();
+  scatter_to_nodes(particles.size(), grid.nodal_momentum, grid.momentum_copies, [&](int p, Vector<Dim>* nodal_momentum) {
+    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
+      nodal_momentum[stencils.node[k]] += stencils.value[k] * particles.mass[p] * particles.velocity[p];
+  });
+}
+
 /// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere.
 template <int Dim>
 void nodal_velocity_from_momentum(GridFields<Dim>& grid) {

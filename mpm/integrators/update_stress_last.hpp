@@ -1,0 +1,150 @@
+/// \file
+/// Forward Euler with the stress updated last: USL and MUSL (Sulsky, Zhou and Schreyer 1995; paper/11_stress_update.md),
+/// today's two standard alternatives to the update-stress-first order (USF) of the paper's forward Euler
+/// (mpm/integrators/forward_euler.hpp).
+///
+/// All three share the kernels and differ only in which nodal velocity the strain rate, Eq. (16), is taken from:
+/// - USF: \f$ \mathbf v_I^k = \mathbf p_I^k / m_I \f$, before the forces (the stress that makes the forces is new);
+/// - USL: \f$ \mathbf v_I^{k+1} = \mathbf p_I^{k+1} / m_I \f$, after the momentum balance (the forces come from the old stress);
+/// - MUSL: \f$ \mathbf v_I^{k+1} = \sum_p N_{Ip} m_p \mathbf v_p^{k+1} / m_I \f$, the updated particle velocities projected
+///   to the nodes again (one more particle-to-grid pass), which filters what FLIP leaves on the particles.
+/// The stencils of every step are those of \f$ \mathbf x_p^k \f$, computed once per step for all its transfers,
+/// as in USF; the particles move before their strain is updated.
+#pragma once
+#include <doctest/doctest.h>
+
+#include "mpm/core/phase_timers.hpp"
+#include "mpm/grid/boundary.hpp"
+#include "mpm/grid/nodal_update.hpp"
+#include "mpm/model.hpp"
+#include "mpm/transfer/grid_to_particle.hpp"
+#include "mpm/transfer/nodal_forces.hpp"
+#include "mpm/transfer/particle_to_grid.hpp"
+#include "mpm/transfer/strain_update.hpp"
+#include "mpm/transfer/worked_example.hpp"
+#include "mpm/analysis/linearised_step.hpp"
+
+namespace mpm {
+
+/// Where USL and MUSL take the nodal velocity of the stress update from.
+enum class StressLastVelocity {
+  updated_nodal,     ///< USL: \f$ \mathbf p_I^{k+1} / m_I \f$
+  reprojected_particles  ///< MUSL: \f$ \sum_p N_{Ip} m_p \mathbf v_p^{k+1} / m_I \f$
+};
+
+/// Forward Euler, update stress last (USL) or modified update stress last (MUSL): one step() per time step,
+/// chosen once per run as the Integrator of mpm::Simulation (`solver.stress_update`). The options of the
+/// paper's forward Euler (the position update's velocity, the PIC/FLIP blend) apply unchanged.
+struct UpdateStressLast {
+  static constexpr const char* name = "fe";
+  StressLastVelocity stress_velocity = StressLastVelocity::updated_nodal;
+  EulerPositionVelocity position_velocity = EulerPositionVelocity::updated;
+  double flip_fraction = 1.0;
+
+  /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$, the stencils at \f$ \mathbf x_p^k \f$:
+  /// 1. P2G: \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p \f$ (\ref nodal_mass_and_momentum).
+  /// 2. Essential boundary conditions on \f$ \mathbf p_I \f$ (\ref impose_fixed_velocity); \f$ \mathbf v_I^k = \mathbf p_I / m_I \f$.
+  /// 3. Nodal forces from the stress of the step before, Eqs. (14)-(15); reactions (\ref add_nodal_forces, \ref store_reactions).
+  /// 4. Momentum balance, Eq. (12): \f$ \mathbf p_I \mathrel{+}= \Delta t\, \mathbf f_I \f$ (\ref update_nodal_momentum).
+  /// 5. G2P, Eqs. (19)-(22), as forward Euler's (\ref forward_euler_particle_update).
+  /// 6. MUSL only: \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p^{k+1} \f$ (\ref nodal_momentum_from_particles), and the
+  ///    boundary conditions again.
+  /// 7. \f$ \mathbf v_I^{k+1} = \mathbf p_I / m_I \f$; update stress last: strain rate, Eq. (16); density, Eq. (17);
+  ///    stress, Eq. (3) (\ref update_strain_density_stress).
+  template <int Dim>
+  void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
+            Particles<Dim>& particles, GridFields<Dim>& grid, PhaseTimers& timers) const {
+    grid.reset();
+    timers.lap(Phase::grid);
+    // 1. P2G: lumped mass, Eq. (13), and momentum p_I = sum_p N_Ip m_p v_p.
+    nodal_mass_and_momentum(particles, stencils, grid);
+    timers.lap(Phase::p2g);
+    // 2. Essential boundary conditions on the momentum; v_I^k = p_I / m_I.
+    impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    nodal_velocity_from_momentum(grid);
+    timers.lap(Phase::grid);
+    // 3. Nodal forces from the stress of the step before, Eqs. (14)-(15); the fixed components become reactions.
+    add_nodal_forces(particles, stencils, body_force, grid);
+    store_reactions(model.fixed, grid.nodal_force, grid.reaction);
+    timers.lap(Phase::forces);
+    // 4. Momentum balance, Eq. (12): p_I += dt f_I.
+    update_nodal_momentum(dt, grid);
+    timers.lap(Phase::grid);
+    // 5. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
+    forward_euler_particle_update(stencils, grid, dt, position_velocity, particles, flip_fraction);
+    timers.lap(Phase::g2p);
+    // 6. MUSL: the new particle velocities projected to the nodes again, and held at the walls.
+    if (stress_velocity == StressLastVelocity::reprojected_particles) {
+      nodal_momentum_from_particles(particles, stencils, grid);
+      impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+      timers.lap(Phase::p2g);
+    }
+    // 7. v_I^{k+1} = p_I / m_I; update stress last: Eq. (16), Eq. (17), Eq. (3).
+    nodal_velocity_from_momentum(grid);
+    update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
+    timers.lap(Phase::stress);
+  }
+};
+
+TEST_CASE("USL, MUSL: one step of the worked example by hand, node 2 fixed: each stress from its own nodal velocity") {
+  // The worked example (mpm/transfer/worked_example.hpp), E = 100 Pa, dt = 0.1, node 2 held: p_I = (1.5, -1.5, 0),
+  // v_I^k = (1, -0.6, 0); f_I = (5, -25, 20), node 2's force a reaction; p_I^{k+1} = (2, -4, 0), v_I^{k+1} = (4/3, -1.6, 0),
+  // a_I = (10/3, -10, 0). G2P: v_0 = 1 + 0.1 (0.75 * 10/3 - 0.25 * 10) = 1, v_1 = -1 + 0.1 (0.5 * -10) = -1.5;
+  // x_0 = 0.25 + 0.1 (0.75 * 4/3 - 0.25 * 1.6) = 0.31, x_1 = 1.5 + 0.1 (0.5 * -1.6) = 1.42.
+  // USL: strain rates from v_I^{k+1}: -4/3 - 1.6 = -2.9333 and 1.6, so sigma = 100 * 0.1 * rate = (-29.333, 16).
+  // MUSL: p_I = (0.75 * 2 * 1, 0.25 * 2 * 1 + 0.5 * 4 * -1.5, held) = (1.5, -2.5, 0), v_I = (1, -1, 0): rates -2 and 1,
+  // sigma = (-20, 10). (USF would take v_I^k: rates -1.6 and 0.6, sigma = (-16, 6).)
+  auto step = [](StressLastVelocity velocity) {
+    testing::WorkedExample example;
+    Model<1> model;
+    model.grid = example.grid;
+    model.materials = {LinearElastic{100.0, 0.0, 4.0}};
+    model.fixed = {FixedDof{2, 0}};
+    ParticleBodyForces<1> body_force;
+    body_force.per_unit_mass.assign(2, Vector<1>::Zero());
+    PhaseTimers timers;
+    UpdateStressLast integrator;
+    integrator.stress_velocity = velocity;
+    integrator.step(model, example.stencils, body_force, 0.1, example.particles, example.fields, timers);
+    return example.particles;
+  };
+  for (auto velocity : {StressLastVelocity::updated_nodal, StressLastVelocity::reprojected_particles}) {
+    const Particles<1> particles = step(velocity);
+    CHECK(particles.velocity[0][0] == doctest::Approx(1.0));
+    CHECK(particles.velocity[1][0] == doctest::Approx(-1.5));
+    CHECK(particles.position[0][0] == doctest::Approx(0.31));
+    CHECK(particles.position[1][0] == doctest::Approx(1.42));
+  }
+  const Particles<1> usl = step(StressLastVelocity::updated_nodal);
+  CHECK(usl.stress[0](0, 0) == doctest::Approx(-29.3333333333));
+  CHECK(usl.stress[1](0, 0) == doctest::Approx(16.0));
+  const Particles<1> musl = step(StressLastVelocity::reprojected_particles);
+  CHECK(musl.stress[0](0, 0) == doctest::Approx(-20.0));
+  CHECK(musl.stress[1](0, 0) == doctest::Approx(10.0));
+}
+
+TEST_CASE("USL, MUSL: stability limits by hand: USL at CFL 1/sqrt(2) from the strain that no particle velocity carries, MUSL at 2 as USF") {
+  // Linear shapes, one particle per cell at the centres, E = rho = h = 1 (c = 1), 64 cells held at both ends.
+  // The strain eps_p = (-1)^p, at rest, gives nodal forces f_I = sigma_I - sigma_{I-1} = 2 (-1)^I, which the particles
+  // do not feel (N_Ip = 1/2 averages them to 0). USL takes the strain rate from v_I^{k+1} = dt f_I / m_I, so
+  // eps^{k+1} = (1 - 4 dt^2) eps: it grows beyond dt = 1/sqrt(2) (at the walls the mode is not exact; 64 cells
+  // come within 1e-3 of the long bar). USF and MUSL take the nodal velocity from the particles', which do not carry
+  // it: their limit is forward Euler's dt = 2 (the highest mode the particles see, omega = 1).
+  const int cells = 64;
+  Model<1> model;
+  model.grid = Grid<1>(Vector<1>(0.0), 1.0, {cells});
+  model.materials = {LinearElastic{1.0, 0.0, 1.0}};
+  model.fixed = {{0, 0}, {cells, 0}};
+  Particles<1> bar;
+  for (int cell = 0; cell < cells; ++cell) bar.add(Vector<1>(cell + 0.5), 1.0, 1.0, Vector<1>::Zero(), Vector<1>(0.5));
+  LinearShape<1> shape(model.grid);
+  UpdateStressLast usl, musl;
+  musl.stress_velocity = StressLastVelocity::reprojected_particles;
+  auto radius = [&](const UpdateStressLast& integrator, double dt) { return spectral_radius(linearised_step_matrix(model, bar, shape, integrator, dt)); };
+  CHECK(radius(usl, 0.700) <= 1.0 + 1e-9);
+  CHECK(radius(usl, 0.714) > 1.0 + 1e-3);
+  CHECK(radius(musl, 1.99) <= 1.0 + 1e-9);
+  CHECK(radius(musl, 2.01) > 1.0 + 1e-3);
+}
+
+}  // namespace mpm
