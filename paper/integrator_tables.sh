@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# The tables of paper/10_integrator_analysis.md, generated from runs of the built CLI, so that no number
-# on that page is typed by hand:
-#   paper/integrator_tables.sh BUILD_DIR          rewrites the tables between their markers in the page
-#   paper/integrator_tables.sh BUILD_DIR --check  exits 1, naming the table, when the page differs (ctest)
+# The tables of paper/10_integrator_analysis.md and paper/11_stress_update.md, generated from runs of the
+# built CLI, so that no number on those pages is typed by hand:
+#   paper/integrator_tables.sh BUILD_DIR          rewrites the tables between their markers in the pages
+#   paper/integrator_tables.sh BUILD_DIR --check  exits 1, naming the table, when a page differs (ctest)
 # Table "limits": `mpm stability` for each method (the code's own linearised step against the one-mode
 # analysis). Table "energy": the energy of scenes/vibrating_bar.toml (64 cells, CFL 0.5, one period) as
 # measured by `mpm run`, against (det A)^(T / dt) with Omega = CFL sin(pi / 2N), the discrete first mode.
+# Table "stress_update" (paper/11): `mpm stability` of forward Euler with each stress update, USF, USL, MUSL.
 set -euo pipefail
 build=$1 mode=${2:-write}
 root=$(cd "$(dirname "$0")/.." && pwd)
 case $build in /*) mpm=$build/bin/mpm ;; *) mpm=$root/$build/bin/mpm ;; esac
-page=$root/paper/10_integrator_analysis.md
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -62,16 +62,45 @@ energy() {
   done
 }
 
+stress_update() {
+  echo "| shape | ppc | dim | omega_max h / c | USF | USL | MUSL |"
+  echo "|---|---|---|---|---|---|---|"
+  while read -r label options; do
+    row="| ${label//-/ } "
+    for update in usf usl musl; do
+      # shellcheck disable=SC2086
+      line=$("$mpm" stability $options --stress-update "$update" | tail -n 1)
+      [[ $update == usf ]] && row+=$(echo "$line" | awk -F, '{ printf "| %s | %s | %.4f ", $8, $1, $12 }')
+      row+=$(echo "$line" | awk -F, '{ printf "| %.4f ", $13 }')
+    done
+    echo "$row|"
+  done <<'EOF'
+linear --shape linear
+uGIMP --shape ugimp
+B-spline-2 --shape bspline2
+B-spline-3 --shape bspline3
+LME-gamma-3 --shape lme --lme-gamma 3
+linear --shape linear --ppc 2
+B-spline-2 --shape bspline2 --ppc 2
+B-spline-3 --shape bspline3 --ppc 2
+LME-gamma-3 --shape lme --lme-gamma 3 --ppc 2
+linear --shape linear --dim 2
+B-spline-2 --shape bspline2 --dim 2
+EOF
+}
+
 limits >"$work/limits.md"
 energy >"$work/energy.md"
+stress_update >"$work/stress_update.md"
 
 status=0
-for table in limits energy; do
+for entry in limits:10_integrator_analysis.md energy:10_integrator_analysis.md stress_update:11_stress_update.md; do
+  table=${entry%%:*} page=$root/paper/${entry#*:}
   begin="<!-- begin table $table: paper/integrator_tables.sh -->" end="<!-- end table $table -->"
   current=$(awk -v b="$begin" -v e="$end" '$0 == e { inside = 0 } inside { print } $0 == b { inside = 1 }' "$page")
   if [[ $mode == --check ]]; then
     if [[ "$current" != "$(cat "$work/$table.md")" ]]; then
-      echo "paper/10_integrator_analysis.md: table '$table' differs from what the code gives now:"
+      echo "paper/${entry#*:}: table '$table' differs from what the code gives now:"
       diff <(echo "$current") "$work/$table.md" || true
       echo "(run paper/integrator_tables.sh $build to rewrite it)"
       status=1
@@ -83,5 +112,5 @@ for table in limits energy; do
     cp "$work/page.md" "$page"
   fi
 done
-[[ $mode == --check && $status -eq 0 ]] && echo "paper/10_integrator_analysis.md: both tables agree with the code"
+[[ $mode == --check && $status -eq 0 ]] && echo "paper/10_integrator_analysis.md, paper/11_stress_update.md: every table agrees with the code"
 exit $status

@@ -96,6 +96,12 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.0));
   CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.6));
   CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-1.0));
+  // The momentum alone, projected afresh over whatever the field held (MUSL's second projection): the same p_I.
+  for (auto& momentum : grid.nodal_momentum) momentum.setConstant(99.0);
+  nodal_momentum_from_particles(example.particles, example.stencils, grid);
+  CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.5));
+  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-1.5));
+  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-2.0));
 
   // Predictor with a_0 = 8, a_1 = 0, gamma = 1/2, dt = 0.1: node 1 gets
   // (0.25*2*(1 + 0.05*8) + 0.5*4*(-1)) / 2.5 = (0.7 - 2) / 2.5 = -0.52.
