@@ -118,7 +118,10 @@ compare_threads() {  # compare_threads CONDITION DIM CELLS SHAPE INTEGRATOR
     printf "%s,%d,%s,%s,%d,%d,%d,%.4e,%.4e,%.3f,%.3f\n", c, d, sh, i, a[2], a[3], b[4], a[5] * a[2] * a[3], b[5] * b[2] * b[3], b[5] / a[5], a[5] / b[5] }' >>"$threads_csv"
 }
 busy=""
-stop_busy() { [[ -n $busy ]] && kill "$busy" 2>/dev/null && wait "$busy" 2>/dev/null; busy=""; }
+stop_busy() {  # never fails (the busy loop's status, killed, is not the benchmark's)
+  if [[ -n $busy ]]; then kill "$busy" 2>/dev/null; wait "$busy" 2>/dev/null || true; fi
+  busy=""
+}
 trap stop_busy EXIT
 for condition in quiet loaded; do
   if [[ $condition == loaded ]]; then timeout 600 sh -c 'while :; do :; done' & busy=$!; fi

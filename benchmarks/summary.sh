@@ -4,7 +4,7 @@ set -euo pipefail
 out=$1 cores=$2
 speed=$out/speed.csv scaling=$out/scaling.csv
 # value SCENE SHAPE INTEGRATOR COLUMN_NAME: one cell of speed.csv, its column found by name in the header
-value() { awk -F, -v s="$1" -v sh="$2" -v i="$3" -v name="$4" 'NR == 1 {for (k = 1; k <= NF; ++k) if ($k == name) c = k; next}
+value() { [[ -s $speed ]] || return 0; awk -F, -v s="$1" -v sh="$2" -v i="$3" -v name="$4" 'NR == 1 {for (k = 1; k <= NF; ++k) if ($k == name) c = k; next}
   c && $1 == s && $2 == sh && $3 == i {print $c}' "$speed"; }
 echo "# make bench: summary"
 echo
