@@ -4,7 +4,7 @@ set -euo pipefail
 out=$1 cores=$2
 speed=$out/speed.csv scaling=$out/scaling.csv
 # value SCENE SHAPE INTEGRATOR COLUMN_NAME: one cell of speed.csv, its column found by name in the header
-value() { awk -F, -v s="$1" -v sh="$2" -v i="$3" -v name="$4" 'NR == 1 {for (k = 1; k <= NF; ++k) if ($k == name) c = k; next}
+value() { [[ -s $speed ]] || return 0; awk -F, -v s="$1" -v sh="$2" -v i="$3" -v name="$4" 'NR == 1 {for (k = 1; k <= NF; ++k) if ($k == name) c = k; next}
   c && $1 == s && $2 == sh && $3 == i {print $c}' "$speed"; }
 echo "# make bench: summary"
 echo
@@ -34,6 +34,27 @@ if [[ -s $scaling && $cores -ge 2 ]]; then
     set -- $method
     check "2D soil block, 101124 particles, $1 + $2: speed-up on $cores cores" "$(speedup "$1" "$2")" 1.7 ">=" "%.2f"
   done
+fi
+threads_csv=$out/threads.csv
+if [[ -s $threads_csv ]]; then
+  echo
+  echo "## Threads: the default against one thread (threads.csv)"
+  echo
+  echo "Time of a run with the default thread count over its time on \`--threads 1\` (the step's phases, best of 3"
+  echo "interleaved rounds each), quiet and with a busy loop of the benchmark's own on one core, 1D Dyka bar and"
+  echo "2D soil block of 10^3 to 10^6 particles, linear + FE and LME + NPC:"
+  echo
+  echo "| what | measured | target | |"
+  echo "|---|---|---|---|"
+  worst() { awk -F, -v c="$1" 'NR > 1 && $1 == c { if (w == "" || $10 > w) w = $10 } END { print (w == "" ? "nan" : w) }' "$threads_csv"; }
+  least_speed_up() { awk -F, 'NR > 1 && $1 == "quiet" && $2 == 2 && $5 >= 100000 { if (l == "" || $11 < l) l = $11 } END { print (l == "" ? "nan" : l) }' "$threads_csv"; }
+  check "quiet: largest time of the default / time of one thread" "$(worst quiet)" 1.10 "<=" "%.2f"
+  check "loaded (a busy loop on one core): largest time of the default / time of one thread" "$(worst loaded)" 1.10 "<=" "%.2f"
+  [[ $cores -ge 2 ]] && check "quiet: least speed-up of the default, 2D, >= 10^5 particles, $cores cores" "$(least_speed_up)" 1.7 ">=" "%.2f"
+  echo
+  echo "| condition | run | particles | threads | default / one |"
+  echo "|---|---|---|---|---|"
+  awk -F, 'NR > 1 { printf "| %s | %sD %s + %s | %d | %d | %.2f |\n", $1, $2, $3, $4, $5, $7, $10 }' "$threads_csv"
 fi
 if [[ ! -s $scaling ]]; then  # `benchmarks/run.sh BUILD --targets`: no scaling runs
   echo

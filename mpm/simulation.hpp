@@ -51,7 +51,7 @@ struct RunControl {
   /// The run stops (exit code 3) when the kinetic plus strain energy exceeds this factor times
   /// the initial energy plus the work done by the body force: the signature of an instability.
   double energy_growth_limit = 10.0;
-  int threads = 0;  ///< cores the particle loops run on; 0: all (results equal to 1e-12 relative)
+  int threads = 0;  ///< cores the particle loops run on; 0: all (the results are the same bits on any number)
 };
 
 struct RunSummary {
@@ -95,13 +95,13 @@ class Simulation {
     shape_.initialise(particles_);
     stencils_.resize(particles_.size(), shape_.capacity());
     body_force_.per_unit_mass.resize(particles_.size());
-    grid_fields_.prepare_threads(threads_for(particles_.size()));
+    grid_fields_.prepare_chunks(particles_.size());
     ParticleSurvey<Dim> survey = survey_particles(particles_, model_.grid, model_.materials);
     initial_energy_ = survey.balances.total();
 
     RunSummary& summary = summary_;
     summary = RunSummary{};
-    summary.threads = threads_for(particles_.size());
+    summary.threads = team_threads();
     summary.smallest_time_step = std::numeric_limits<double>::infinity();
     double time = 0.0;
     long step = 0;

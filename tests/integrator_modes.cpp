@@ -48,7 +48,7 @@ ModeHistory run_mode(const Integrator& integrator, int cells, int mode, double O
   mpm::ParticleBodyForces<1> no_body_force;
   no_body_force.per_unit_mass.assign(particles.size(), mpm::Vector<1>::Zero());
   mpm::GridFields<1> grid(setup.model.grid.node_count());
-  grid.prepare_threads(1);
+  grid.prepare_chunks(particles.size());
   mpm::PhaseTimers timers;
   ModeHistory history;
   auto record = [&] {

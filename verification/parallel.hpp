@@ -13,12 +13,14 @@
 #include <thread>
 #include <vector>
 
+#include "mpm/core/parallel.hpp"
+
 namespace verification {
 
-/// The cores a suite uses: --threads N among its arguments (removed from them), or every core.
-/// \returns 0 for a bad value.
+/// The cores a suite uses: --threads N among its arguments (removed from them), or every core this
+/// process may run on (as nproc counts them). \returns 0 for a bad value.
 inline unsigned suite_threads(int& argc, char** argv) {
-  unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  unsigned threads = static_cast<unsigned>(mpm::available_cores());
   for (int k = 1; k + 1 < argc; ++k)
     if (std::string(argv[k]) == "--threads") {
       const std::string value = argv[k + 1];

@@ -85,7 +85,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
   ParticleBodyForces<Dim> no_body_force;
   no_body_force.per_unit_mass.assign(particles.size(), Vector<Dim>::Zero());
   GridFields<Dim> grid(model.grid.node_count());
-  grid.prepare_threads(1);
+  grid.prepare_chunks(particles.size());
   PhaseTimers timers;
   const int size = particles.size() * linearised_states_per_particle<Dim>();
   const double perturbation = 1e-6;

@@ -25,7 +25,7 @@ inline const char* run_usage =
     "  --out DIR          output folder (default runs/<scene file name>)\n"
     "  --set KEY=VALUE    overrides a scene key with a TOML value: --set solver.cfl=0.2,\n"
     "                     --set 'solver.shape=\"lme\"', --set grid.cells=[160], --set 'body[0].max=[1.0]'\n"
-    "  --threads N        cores to run on (default: all; the results equal those on one core to 1e-12)\n"
+    "  --threads N        cores to run on (default: all; the results are the same bits on any number)\n"
     "  --print-scene      prints the resolved scene (every key, defaults filled in) and exits without running\n"
     "  Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.\n";
 

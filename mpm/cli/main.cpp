@@ -2,7 +2,7 @@
 /// The `mpm` command.
 ///
 ///   mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--max-memory SIZE] [--max-steps N] [--force]
-///       Runs a scene on N cores (default: all; the results equal those on one core to 1e-12); writes observers.csv, energy.csv, snapshots and run.json to DIR
+///       Runs a scene on N cores (default: all; the results are the same bits on any number); writes observers.csv, energy.csv, snapshots and run.json to DIR
 ///       (default `runs/<scene name>`). Exit codes: 0 done, 2 bad scene or option (nothing written),
 ///       3 the method failed during the run or a file could not be written (one line on stderr;
 ///       what was written is kept). A scene whose estimated memory exceeds --max-memory SIZE (bytes, or 512M, 4G; default

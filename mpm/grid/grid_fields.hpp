@@ -4,6 +4,7 @@
 #pragma once
 #include <vector>
 
+#include "mpm/core/parallel.hpp"
 #include "mpm/core/types.hpp"
 
 namespace mpm {
@@ -15,8 +16,8 @@ struct GridFields {
   std::vector<Vector<Dim>> nodal_velocity;     ///< v_I (FE: p_I/m_I; NPC: predictor, then corrected)
   std::vector<Vector<Dim>> nodal_force;        ///< f_I = f_I^int + f_I^ext, Eqs. (14)-(15)
   std::vector<Vector<Dim>> reaction;           ///< force taken by the fixed degrees of freedom
-  /// Zeroed copies of the fields the particles scatter into, one per thread beyond the first: the
-  /// threads of a particle-to-grid scatter add into them (scatter_to_nodes, mpm/core/parallel.hpp).
+  /// Zeroed copies of the fields the particles scatter into, one per chunk of particles beyond the
+  /// first: the chunks of a particle-to-grid scatter add into them (scatter_to_nodes, mpm/core/parallel.hpp).
   std::vector<std::vector<double>> mass_copies;
   std::vector<std::vector<Vector<Dim>>> momentum_copies, velocity_copies, force_copies;
 
@@ -29,11 +30,11 @@ struct GridFields {
 
   int size() const { return static_cast<int>(nodal_mass.size()); }
 
-  /// Allocates the copies for `threads` threads (once per run, before the first step).
-  void prepare_threads(int threads) {
-    mass_copies.assign(threads - 1, std::vector<double>(size(), 0.0));
+  /// Allocates the copies for scatters over `particles` particles (once per run, before the first step).
+  void prepare_chunks(int particles) {
+    prepare_copies(mass_copies, particles, size(), 0.0);
     for (auto* copies : {&momentum_copies, &velocity_copies, &force_copies})
-      copies->assign(threads - 1, std::vector<Vector<Dim>>(size(), Vector<Dim>::Zero()));
+      prepare_copies(*copies, particles, size(), Vector<Dim>(Vector<Dim>::Zero()));
   }
 
   void reset() {

@@ -6,6 +6,7 @@
 /// the shape function, so computing the stencils allocates nothing.
 #pragma once
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct Stencils {
   std::vector<int> node;                   ///< [p * capacity + k]: node number I
   std::vector<double> value;               ///< [p * capacity + k]: N_Ip
   std::vector<Vector<Dim>> gradient;       ///< [p * capacity + k]: grad N_Ip
+  /// For each chunk of the particles (mpm/core/parallel.hpp), the nodes [lowest, highest + 1) its
+  /// stencils reach: the scatters into the nodes clear and add a chunk's copy of a field there only.
+  ChunkNodes chunk_nodes;
 
   void resize(int particle_count, int nodes_per_particle) {
     capacity = nodes_per_particle;
@@ -29,6 +33,7 @@ struct Stencils {
     node.assign(static_cast<size_t>(particle_count) * capacity, 0);
     value.assign(static_cast<size_t>(particle_count) * capacity, 0.0);
     gradient.assign(static_cast<size_t>(particle_count) * capacity, Vector<Dim>::Zero());
+    chunk_nodes.fill(all_nodes);
   }
   int begin(int p) const { return p * capacity; }
   int end(int p) const { return p * capacity + count[p]; }
@@ -38,23 +43,30 @@ struct Stencils {
 
 namespace mpm {
 
-/// Evaluates the shape function at every particle position, once per step, on every core; every
-/// transfer of the step then reads these stencils.
+/// Evaluates the shape function at every particle position, once per step, on every core, and notes
+/// the nodes each chunk of particles reaches; every transfer of the step then reads these stencils.
 /// \throws ShapeFailure from the shape function: that of the first particle that failed, as a serial loop would.
 template <int Dim, class Shape>
 void compute_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, Stencils<Dim>& stencils) {
   const int count = static_cast<int>(positions.size());
-  std::array<std::optional<ShapeFailure>, max_threads> failure;  // per thread: its first, in its block
-  parallel_for_blocks(count, [&](int thread, Block block) {
+  std::array<std::optional<ShapeFailure>, max_chunks> failure;  // per chunk: its first
+  for_each_chunk(count, static_cast<long>(count) * stencils.capacity, [&](int chunk, Range items) {
+    Range reached{std::numeric_limits<int>::max(), 0};
     try {
-      for (int p = block.begin; p < block.end; ++p) {
+      for (int p = items.begin; p < items.end; ++p) {
         const int first = stencils.begin(p);
         stencils.count[p] = shape.evaluate(p, positions[p], &stencils.node[first], &stencils.value[first],
                                            &stencils.gradient[first]);
+        for (int k = first; k < stencils.end(p); ++k) {
+          reached.begin = std::min(reached.begin, stencils.node[k]);
+          reached.end = std::max(reached.end, stencils.node[k] + 1);
+        }
       }
     } catch (const ShapeFailure& what) {
-      failure[thread] = what;
+      failure[chunk] = what;
+      reached = all_nodes;
     }
+    stencils.chunk_nodes[chunk] = reached;
   });
   for (const auto& first : failure)
     if (first) throw *first;

@@ -40,7 +40,7 @@ template <int Dim>
 void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double dt,
                                    EulerPositionVelocity position_velocity, Particles<Dim>& particles,
                                    double flip_fraction = 1.0) {
-  parallel_for(particles.size(), [&](int p) {
+  parallel_for(particles.size(), stencils.capacity, [&](int p) {
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero(), updated_velocity = Vector<Dim>::Zero();
     for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
       const int node = stencils.node[k];
@@ -85,7 +85,7 @@ template <int Dim>
 void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double newmark_gamma, double dt,
                              NewmarkPositionVelocity position_velocity, Particles<Dim>& particles,
                              NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32) {
-  parallel_for(particles.size(), [&](int p) {
+  parallel_for(particles.size(), stencils.capacity, [&](int p) {
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
     for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
       const int node = stencils.node[k];

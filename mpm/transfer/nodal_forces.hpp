@@ -33,7 +33,7 @@ namespace mpm {
 template <int Dim>
 void add_nodal_forces(const Particles<Dim>& particles, const Stencils<Dim>& stencils,
                       const ParticleBodyForces<Dim>& body_force, GridFields<Dim>& grid) {
-  scatter_to_nodes(particles.size(), grid.nodal_force, grid.force_copies, [&](int p, Vector<Dim>* nodal_force) {
+  scatter_to_nodes(particles.size(), stencils.capacity, stencils.chunk_nodes, grid.nodal_force, grid.force_copies, [&](int p, Vector<Dim>* nodal_force) {
     const Matrix<Dim> volume_stress = particles.volume(p) * particles.stress[p];
     const Vector<Dim> weight =  // m_p b_p (per_unit_mass is not filled when every b_p is zero)
         body_force.all_zero ? Vector<Dim>::Zero() : Vector<Dim>(particles.mass[p] * body_force.per_unit_mass[p]);

@@ -21,7 +21,7 @@ namespace mpm {
 template <int Dim>
 void nodal_mass_and_momentum(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
   scatter_to_nodes(
-      particles.size(),
+      particles.size(), stencils.capacity, stencils.chunk_nodes,
       [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum) {
         for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
           const double weighted_mass = stencils.value[k] * particles.mass[p];  // N_Ip m_p
@@ -39,7 +39,8 @@ void nodal_mass_and_momentum(const Particles<Dim>& particles, const Stencils<Dim
 template <int Dim>
 void nodal_momentum_from_particles(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
   for (Vector<Dim>& momentum : grid.nodal_momentum) momentum.setZero();
-  scatter_to_nodes(particles.size(), grid.nodal_momentum, grid.momentum_copies, [&](int p, Vector<Dim>* nodal_momentum) {
+  scatter_to_nodes(particles.size(), stencils.capacity, stencils.chunk_nodes, grid.nodal_momentum, grid.momentum_copies,
+                   [&](int p, Vector<Dim>* nodal_momentum) {
     for (int k = stencils.begin(p); k < stencils.end(p); ++k)
       nodal_momentum[stencils.node[k]] += stencils.value[k] * particles.mass[p] * particles.velocity[p];
   });
@@ -65,7 +66,7 @@ template <int Dim>
 void nodal_mass_and_velocity_predictor(const Particles<Dim>& particles, const Stencils<Dim>& stencils, double newmark_gamma,
                                        double dt, GridFields<Dim>& grid) {
   scatter_to_nodes(
-      particles.size(),
+      particles.size(), stencils.capacity, stencils.chunk_nodes,
       [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum, Vector<Dim>* nodal_velocity) {
         const Vector<Dim> momentum = particles.mass[p] * particles.velocity[p];
         const Vector<Dim> predicted = momentum + (1.0 - newmark_gamma) * dt * particles.mass[p] * particles.acceleration[p];

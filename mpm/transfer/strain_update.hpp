@@ -45,7 +45,7 @@ inline double updated_density(double density, double dt, double volumetric_strai
 template <int Dim>
 void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& nodal_velocity,
                                   const std::vector<LinearElastic>& materials, double dt, Particles<Dim>& particles) {
-  parallel_for(particles.size(), [&](int p) {
+  parallel_for(particles.size(), stencils.capacity, [&](int p) {
     const LinearElastic& material = materials[particles.material[p]];
     const Matrix<Dim> rate = strain_rate(stencils, p, nodal_velocity);
     particles.strain[p] += dt * rate;
