@@ -62,7 +62,7 @@ ParticleSurvey<Dim> survey_particles(const Particles<Dim>& particles, const Grid
       });
 }
 
-TEST_CASE("Particle survey: the balances and Eq. (42)'s speeds of one pass equal those of their own passes; the same bits on 1 and 2 threads") {
+TEST_CASE("Particle survey: the balances and Eq. (42)'s speeds of one pass equal those of their own passes, the same bits on 1 and 2 threads") {
   const Grid<2> grid(Vector<2>(0.0, 0.0), 0.5, {8, 8});
   Particles<2> particles;
   for (int p = 0; p < 5000; ++p) {  // 8 chunks, above parallel_work: the survey runs on the team

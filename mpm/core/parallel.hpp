@@ -325,7 +325,7 @@ TEST_CASE("Parallel loops: the chunks cover every item once, in order, and depen
   CHECK(chunks_of(1 << 20) == max_chunks);
 }
 
-TEST_CASE("Parallel loops: every chunk runs once on the team, loop after loop; worker_index names the thread") {
+TEST_CASE("Parallel loops: every chunk runs once on the team, loop after loop, worker_index names the thread") {
   use_threads(3);
   REQUIRE(team_threads() == 3);
   const int count = 8 * items_per_chunk;
@@ -399,7 +399,7 @@ TEST_CASE("Parallel loops: sums and scatters give the same bits on 1, 2 and 3 th
   }
 }
 
-TEST_CASE("Parallel loops: a scatter into two fields of different types in one pass; too few copies is an error, not a crash") {
+TEST_CASE("Parallel loops: a scatter into two fields of different types in one pass, too few copies is an error, not a crash") {
   const int count = 3000;
   std::vector<double> field(10, 0.0);
   std::vector<Vector<2>> vectors(10, Vector<2>::Zero());
