@@ -66,7 +66,7 @@ echo "scene,shape,integrator,particles,steps,threads,seconds_per_particle_step,p
 configurations=()
 for integrator in fe npc; do
   for scene in dyka_bar soil_block; do
-    for shape in linear ugimp lme; do configurations+=("$scene $shape $integrator"); done
+    for shape in linear ugimp lme bspline2 bspline3; do configurations+=("$scene $shape $integrator"); done
   done
 done
 rounds=7

@@ -26,6 +26,10 @@ check "Dyka bar 640 cells, LME gamma 3 + NPC (particle-steps/s)" "$(value dyka_b
 for i in fe npc; do
   check "1D: LME cost / linear cost, $i" "$(value dyka_bar lme $i relative_to_linear)" 2 "<=" "%.2f"
   check "2D soil block (400 particles): LME cost / linear cost, $i" "$(value soil_block lme $i relative_to_linear)" 3 "<=" "%.2f"
+  for degree in 2 3; do  # issue 19: a B-spline step at most 1.5 x a linear one in 1D, 2 x in 2D
+    check "1D: B-spline $degree cost / linear cost, $i" "$(value dyka_bar bspline$degree $i relative_to_linear)" 1.5 "<=" "%.2f"
+    check "2D soil block (400 particles): B-spline $degree cost / linear cost, $i" "$(value soil_block bspline$degree $i relative_to_linear)" 2 "<=" "%.2f"
+  done
 done
 speedup() { awk -F, -v s="$1" -v i="$2" -v n="$cores" '$1 == 2 && $2 == s && $3 == i && $5 >= 100000 && $5 < 200000 {
     if ($7 == 1) one = $8; else if ($7 == n) many = $8 } END { if (one && many) printf "%.3f", one / many; else print "nan" }' "$scaling"; }

@@ -75,12 +75,11 @@ class BsplineShape {
     const double inverse_h = 1.0 / grid_.spacing();
     // The nodes of the support: xi - 1.5 < i < xi + 1.5 (quadratic), xi - 2 < i < xi + 2 (cubic).
     // (the cubic's cell is the last one on the upper edge, xi = cells, as Grid::cell_of has it)
-    const int first = Degree == 2 ? static_cast<int>(std::floor(xi + 0.5)) - 1 : std::min(static_cast<int>(std::floor(xi)), cells - 1) - 1;
+    // (xi >= 0 inside the grid: truncation is the floor, without a call to floor())
+    const int first = Degree == 2 ? static_cast<int>(xi + 0.5) - 1 : std::min(static_cast<int>(xi), cells - 1) - 1;
     double value[Degree + 1], derivative[Degree + 1];
-    for (int k = 0; k <= Degree; ++k) {
-      value[k] = bspline_value(Degree, xi - (first + k));
-      derivative[k] = bspline_derivative(Degree, xi - (first + k)) * inverse_h;
-    }
+    cell_weights(xi - (first + 1), value, derivative);
+    for (double& slope : derivative) slope *= inverse_h;
     // Fold a ghost node below 0 or above `cells` onto the two nodes next to it (file comment).
     int low = 0, high = Degree;
     if (first < 0) {  // only node -1 can lie in the support of a point inside the grid
@@ -96,6 +95,25 @@ class BsplineShape {
     AxisFactors<Degree + 1> factors;
     for (int k = low; k <= high; ++k) factors.add(first + k, value[k], derivative[k]);
     return factors;
+  }
+
+  /// The cardinal B-splines of the Degree + 1 nodes of a support, bspline_value(Degree, xi - node), and their
+  /// derivatives in xi, expanded as polynomials of the offset t = xi - (first + 1) from the second node: one
+  /// evaluation per node without a branch (a third of the cost of the stencils through bspline_value).
+  /// Quadratic, \f$ t \in [-\tfrac12, \tfrac12] \f$: \f$ \tfrac12(\tfrac12 - t)^2,\ \tfrac34 - t^2,\ \tfrac12(\tfrac12 + t)^2 \f$.
+  /// Cubic, \f$ t \in [0, 1] \f$: \f$ \tfrac16(1 - t)^3,\ \tfrac16(3t^3 - 6t^2 + 4),\ \tfrac16(-3t^3 + 3t^2 + 3t + 1),\ \tfrac16 t^3 \f$.
+  static void cell_weights(double t, double* value, double* derivative) {
+    if constexpr (Degree == 2) {
+      const double left = 0.5 - t, right = 0.5 + t;
+      value[0] = 0.5 * left * left, value[1] = 0.75 - t * t, value[2] = 0.5 * right * right;
+      derivative[0] = -left, derivative[1] = -2.0 * t, derivative[2] = right;
+    } else {
+      const double rest = 1.0 - t, t2 = t * t, t3 = t2 * t;
+      value[0] = rest * rest * rest / 6.0, value[1] = (3.0 * t3 - 6.0 * t2 + 4.0) / 6.0;
+      value[2] = (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) / 6.0, value[3] = t3 / 6.0;
+      derivative[0] = -0.5 * rest * rest, derivative[1] = 1.5 * t2 - 2.0 * t;
+      derivative[2] = -1.5 * t2 + t + 0.5, derivative[3] = 0.5 * t2;
+    }
   }
 
   const ShapeDiagnostics& diagnostics() const { return diagnostics_; }
@@ -128,6 +146,21 @@ TEST_CASE("B-splines: the cardinal functions by hand, C1 (quadratic) and C2 (cub
     const double right = (bspline_derivative(3, knot + 2e-6) - bspline_derivative(3, knot + 1e-6)) / 1e-6;
     CHECK(left == doctest::Approx(right).epsilon(1e-4).scale(1.0));
   }
+}
+
+TEST_CASE("B-splines: the weights of a support, expanded in the offset, equal the cardinal functions of each node's distance") {
+  auto check = [](auto weights, int degree, double low, double high) {
+    double value[4], derivative[4];
+    for (double t = low; t <= high + 1e-12; t += 0.01) {
+      weights(t, value, derivative);
+      for (int k = 0; k <= degree; ++k) {  // node first + k lies at distance t + 1 - k from the point
+        CHECK(value[k] == doctest::Approx(bspline_value(degree, t + 1.0 - k)).epsilon(1e-14).scale(1.0));
+        CHECK(derivative[k] == doctest::Approx(bspline_derivative(degree, t + 1.0 - k)).epsilon(1e-14).scale(1.0));
+      }
+    }
+  };
+  check(BsplineShape<1, 2>::cell_weights, 2, -0.5, 0.5);
+  check(BsplineShape<1, 3>::cell_weights, 3, 0.0, 1.0);
 }
 
 TEST_CASE("B-splines: the grid's edge by hand: the quadratic's boundary hat, the cubic's folded ghost") {
