@@ -243,7 +243,7 @@ int main(int argc, char** argv) {
   for (const auto& s : series)
     for (int cells : bar_meshes(s.cfl)) {
       const double amplitude = s.amplitude == "small" ? small_amplitude : large_amplitude;
-      Job job{"bar", {s.shape, s.integrator, cells, s.particles_per_cell, s.cfl, amplitude}, {}, nullptr, 0.0};
+      Job job{"bar", {s.shape, s.integrator, cells, s.particles_per_cell, s.cfl, amplitude, {}}, {}, nullptr, 0.0};
       if (s.amplitude == "large") job.reference = references.at(large_amplitude).get();
       job.weight = 4.0 * cells * cells * s.particles_per_cell / s.cfl * cost(s.shape);
       jobs.push_back(job);
@@ -253,14 +253,14 @@ int main(int argc, char** argv) {
       for (int ppc : {1, 2})
         for (double ratio : crossing_ratios) {
           const double amplitude = ratio / crossing_cells;
-          Job job{"crossing", {shape, integrator, crossing_cells, ppc, 0.5, amplitude}, {}, references.at(amplitude).get(), 0.0};
+          Job job{"crossing", {shape, integrator, crossing_cells, ppc, 0.5, amplitude, {}}, {}, references.at(amplitude).get(), 0.0};
           job.weight = 4.0 * crossing_cells * crossing_cells * ppc / 0.5 * cost(shape);
           jobs.push_back(job);
         }
   for (const auto& shape : shapes)
     for (const auto& integrator : integrators)
       for (int cells : dyka_cells) {
-        Job job{"dyka", {shape, integrator, cells, 2, 0.5, 0.0}, {}, nullptr, 0.0};
+        Job job{"dyka", {shape, integrator, cells, 2, 0.5, 0.0, {}}, {}, nullptr, 0.0};
         job.weight = 2.0 * cells * (15.2 * cells) * cost(shape);
         jobs.push_back(job);
       }
