@@ -38,6 +38,8 @@ inline std::string method_label(const std::string& method) {
   if (method == "linear") return "linear (Q4)";
   if (method == "ugimp") return "uGIMP";
   if (method == "lme0.8") return "LME gamma = 0.8";
+  if (method == "bspline2") return "quadratic B-spline";
+  if (method == "bspline3") return "cubic B-spline";
   return "LME gamma = 3";
 }
 

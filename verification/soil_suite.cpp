@@ -33,7 +33,7 @@ struct CaseSpec {
 // (scenes/soil_block.toml): LME interpolates there, so the fixed nodes hold the particles, and
 // uGIMP clips its particle domains there (shape/ugimp.hpp). Rigid margin rows behind the walls
 // are a case of their own for LME ("_wall_margins").
-const std::vector<std::string> methods{"linear", "ugimp", "lme0.8", "lme3"};
+const std::vector<std::string> methods{"linear", "ugimp", "lme0.8", "lme3", "bspline2", "bspline3"};
 const std::vector<std::string> wall_margins{"grid.margin_min=[1,1]", "grid.margin_max=[1,0]"};
 
 std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -45,6 +45,7 @@ std::vector<std::string> method_overrides(const std::string& method) {
   if (method == "linear") return {"solver.shape=\"linear\""};
   if (method == "ugimp") return {"solver.shape=\"ugimp\""};
   if (method == "lme0.8") return {"solver.shape=\"lme\"", "solver.lme_gamma=0.8"};
+  if (method == "bspline2" || method == "bspline3") return {"solver.shape=\"" + method + "\""};
   return {"solver.shape=\"lme\"", "solver.lme_gamma=3.0"};
 }
 
@@ -66,7 +67,7 @@ std::string sweep_name(double nu, double cfl) { return "lme3_npc_h2_nu" + number
 std::vector<CaseSpec> all_cases() {
   std::vector<CaseSpec> cases;
   for (double h : {0.5, 1.0})  // refinement, predictor-corrector (h = 2 m is the paper's grid, below)
-    for (const auto& method : {"lme0.8", "lme3", "ugimp", "linear"})
+    for (const auto& method : {"lme0.8", "lme3", "bspline3", "bspline2", "ugimp", "linear"})
       cases.push_back({run_name(method, "npc", h), "soil_block.toml", join(method_overrides(method), cell_overrides(h))});
   for (const auto& integrator : {"npc", "fe"})  // Figs. 12 and 13 on the paper's 2 m grid
     for (const auto& method : methods)

@@ -5,9 +5,9 @@
 # Runs that failed (completed = 0) are left out.
 # gnuplot -e "data='DATA_DIR'; out='.../soil_refinement'" soil_refinement.gp   (writes out.png and out.pdf)
 set datafile separator ","
-methods = "linear ugimp lme0.8 lme3"
-labels = "'linear (Q4)' 'uGIMP' 'LME {/Symbol g} = 0.8' 'LME {/Symbol g} = 3'"
-colours = "#2ca02c #9467bd #1f77b4 #d62728"
+methods = "linear ugimp lme0.8 lme3 bspline2 bspline3"
+labels = "'linear (Q4)' 'uGIMP' 'LME {/Symbol g} = 0.8' 'LME {/Symbol g} = 3' 'B-spline 2' 'B-spline 3'"
+colours = "#2ca02c #9467bd #1f77b4 #d62728 #ff7f0e #8c564b"
 file(m) = data."/soil_refinement_".word(methods, m).".csv"
 set logscale xy
 set xrange [0.4:2.5]
@@ -22,13 +22,13 @@ do for [format in "png pdf"] {
   set title "against the small-strain exact column"
   set ylabel "error of u_y (m)"
   set yrange [2e-4:0.5]
-  plot for [m = 1:4] file(m) using ($6 == 1 ? $1 : NaN):2 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) title word(labels, m)." RMS", \
-       for [m = 1:4] file(m) using ($6 == 1 ? $1 : NaN):3 with linespoints lw 1.5 dt 2 pt 6 lc rgb word(colours, m) title word(labels, m)." at 20 s", \
+  plot for [m = 1:6] file(m) using ($6 == 1 ? $1 : NaN):2 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) title word(labels, m)." RMS", \
+       for [m = 1:6] file(m) using ($6 == 1 ? $1 : NaN):3 with linespoints lw 1.5 dt 2 pt 6 lc rgb word(colours, m) title word(labels, m)." at 20 s", \
        file(4) using 1:5 with lines lw 2 lc rgb "black" dt 3 title "small- vs finite-strain static gap"
   set title "against the finite-strain static column (mean after the ramp)"
   set ylabel "|mean u_y - u_{finite strain}| (m)"
   set key top left
   set yrange [3e-5:0.3]
-  plot for [m = 1:4] file(m) using ($6 == 1 ? $1 : NaN):4 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) title word(labels, m)
+  plot for [m = 1:6] file(m) using ($6 == 1 ? $1 : NaN):4 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) title word(labels, m)
   unset multiplot
 }
