@@ -28,7 +28,7 @@ do for [format in "png pdf"] {
   set title "against the finite-strain static column (mean after the ramp)"
   set ylabel "|mean u_y - u_{finite strain}| (m)"
   set key top left
-  set yrange [3e-5:0.3]
+  set yrange [5e-6:0.3]
   plot for [m = 1:6] file(m) using ($6 == 1 ? $1 : NaN):4 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) title word(labels, m)
   unset multiplot
 }
