@@ -8,4 +8,5 @@ namespace mpm {
 template Setup<2> build_setup<2>(const io::Scene&);
 template RunSummary run_setup<2>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
 template StabilityLimits stability_limits<2>(const io::Scene&, double);
+template bool stable_at<2>(const io::Scene&, double);
 }  // namespace mpm

@@ -185,7 +185,7 @@ int run_command(const std::vector<std::string>& arguments) {
   if (folder.empty()) folder = "runs/" + std::filesystem::path(scene_path).stem().string();
   try {
     const mpm::io::Scene scene = mpm::load_scene(scene_path, overrides, budget);
-    for (const auto& warning : mpm::io::scene_warnings(scene_path, overrides, scene, mpm::scene_cfl_limit(scene)))
+    for (const auto& warning : mpm::io::scene_warnings(scene_path, overrides, scene, mpm::scene_cfl_limit_if_exceeded(scene)))
       std::cerr << warning << "\n";
     if (print_scene) {
       mpm::io::print_resolved_scene(scene, std::cout);

@@ -184,12 +184,17 @@ TEST_CASE("mpm stability: linear shapes at 1 ppc, 2 for forward Euler and 2/sqrt
   CHECK(out.str().empty());
 }
 
-TEST_CASE("scene_cfl_limit: mpm run's warning limit for a scene, 1D and 2D") {
+TEST_CASE("scene_cfl_limit: mpm run's warning limit for a scene, 1D and 2D, looked for only above a stable CFL") {
   const std::string bar =
       "[grid]\nlength = [1.0]\ncells = [10]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
       "[[body]]\nmin = [0.0]\nmax = [1.0]\n[solver]\nend_time = 1.0\nintegrator = \"npc\"\nnewmark_gamma = 0.75\n";
   io::SceneFile file = io::parse_scene_text(bar, "bar.toml");
   CHECK(scene_cfl_limit(io::read_scene(file)) == doctest::Approx(2.0 / std::sqrt(1.5)).epsilon(1e-3));
+  // The warning's limit is looked for only when the scene's CFL is unstable: none at 1.6, the limit at 1.65.
+  io::apply_override(file, "solver.cfl=1.6", 1);
+  CHECK(std::isnan(scene_cfl_limit_if_exceeded(io::read_scene(file))));
+  io::apply_override(file, "solver.cfl=1.65", 2);
+  CHECK(scene_cfl_limit_if_exceeded(io::read_scene(file)) == doctest::Approx(2.0 / std::sqrt(1.5)).epsilon(1e-3));
   // 2D plane strain, nu = 0.3: the P-wave modulus E (1 - nu) / ((1 + nu)(1 - 2 nu)) = 1.346 E makes the highest
   // mode faster than c = sqrt(E / rho) of Eq. (42), so the limit falls below forward Euler's 2 by about 1/sqrt(1.346)
   const std::string block =
