@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Every scene of scenes/ runs with every shape function (linear, ugimp, lme) and integrator (fe, npc)
-# for the first 5 % of its end time (tens of steps): exit code 0, and every number written
+# Every scene of scenes/ runs with every shape function (linear, ugimp, lme, bspline2, bspline3) and
+# integrator (fe, npc, and forward Euler with the stress updated last: usl, musl) for the first 5 % of
+# its end time (tens of steps): exit code 0, and every number written
 # (observers, energy, a snapshot at the end) finite. Usage: every_scene.sh MPM [SCENES_DIR]
 set -u
 mpm=$1
@@ -12,11 +13,13 @@ for scene in "$scenes"/*.toml; do
   end_time=$(awk -F= '/^end_time[[:space:]]*=/ { gsub(/[[:space:]]|#.*/, "", $2); print $2; exit }' "$scene")
   [[ -n "$end_time" ]] || { echo "FAIL: $scene: no end_time"; failures=$((failures + 1)); continue; }
   short=$(awk -v t="$end_time" 'BEGIN { printf "%.6g", t / 20 }')
-  for shape in linear ugimp lme; do
-    for integrator in fe npc; do
+  for shape in linear ugimp lme bspline2 bspline3; do
+    for integrator in fe npc usl musl; do
+      method=(--set "solver.shape=\"$shape\"" --set "solver.integrator=\"${integrator/*sl/fe}\"")
+      [[ $integrator == *sl ]] && method+=(--set "solver.stress_update=\"$integrator\"")
       out=$work/$(basename "$scene" .toml)_${shape}_$integrator
       runs=$((runs + 1))
-      if ! "$mpm" run "$scene" --out "$out" --set "solver.shape=\"$shape\"" --set "solver.integrator=\"$integrator\"" \
+      if ! "$mpm" run "$scene" --out "$out" "${method[@]}" \
         --set "solver.end_time=$short" --set "output.snapshots=[$short]" >"$work/log" 2>&1; then
         echo "FAIL: $(basename "$scene") $shape + $integrator: exit $? ($(tail -1 "$work/log"))"
         failures=$((failures + 1))
@@ -31,4 +34,4 @@ for scene in "$scenes"/*.toml; do
   done
 done
 echo "every_scene: $runs runs, $failures failed"
-[[ $runs -ge 18 && $failures -eq 0 ]]
+[[ $runs -ge 160 && $failures -eq 0 ]]

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every shipped scene with every shape function and integrator for a few steps with the
+# Runs every shipped scene with every shape function and integrator (USL and MUSL too) for a few steps with the
 # sanitized `mpm` (make sanitize): an AddressSanitizer or UndefinedBehaviorSanitizer report, a
 # signal or any exit code other than 0 (done) or 3 (the method failed, told in one line) fails.
 #
@@ -16,11 +16,13 @@ for scene in "$root"/scenes/*.toml; do
   # a few steps of each: 3 of the Dyka bar, 3 of the soil block
   if grep -q '^dimension = 1' "$scene"; then few=(--set solver.end_time=1e-6 --set 'output.snapshots=[0.0, 1e-6]' --set grid.margin_max=[1])
   else few=(--set solver.end_time=0.02 --set 'output.snapshots=[0.0, 0.02]' --set grid.margin_min=[1,1] --set grid.margin_max=[1,0]); fi
-  for shape in linear ugimp lme; do
-    for integrator in fe npc; do
+  for shape in linear ugimp lme bspline2 bspline3; do
+    for integrator in fe npc usl musl; do
+      method=(--set "solver.shape=\"$shape\"" --set "solver.integrator=\"${integrator/*sl/fe}\"")
+      [[ $integrator == *sl ]] && method+=(--set "solver.stress_update=\"$integrator\"")
       runs=$((runs + 1))
       name="$(basename "$scene" .toml)_${shape}_$integrator"
-      "$mpm" run "$scene" --out "$work/$name" "${few[@]}" --set "solver.shape=\"$shape\"" --set "solver.integrator=\"$integrator\"" \
+      "$mpm" run "$scene" --out "$work/$name" "${few[@]}" "${method[@]}" \
         >"$work/out" 2>"$work/err"
       code=$?
       if [[ $code -ne 0 && $code -ne 3 ]] || grep -qE "runtime error|Sanitizer" "$work/err"; then
