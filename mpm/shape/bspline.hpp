@@ -51,7 +51,7 @@ class BsplineShape {
  public:
   static constexpr const char* name = Degree == 2 ? "bspline2" : "bspline3";
 
-  explicit BsplineShape(const Grid<Dim>& grid) : grid_(grid) {}
+  explicit BsplineShape(const Grid<Dim>& grid) : grid_(grid), inverse_h_(1.0 / grid.spacing()) {}
 
   /// Nodes per particle: 3 (quadratic) or 4 (cubic) per axis.
   int capacity() const { return Dim == 1 ? Degree + 1 : (Degree + 1) * (Degree + 1); }
@@ -64,37 +64,41 @@ class BsplineShape {
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
     std::array<AxisFactors<Degree + 1>, Dim> axes;
-    for (int axis = 0; axis < Dim; ++axis) axes[axis] = axis_factors((x[axis] - grid_.origin()[axis]) / grid_.spacing(), grid_.cells(axis));
+    for (int axis = 0; axis < Dim; ++axis) set_axis_factors((x[axis] - grid_.origin()[axis]) * inverse_h_, grid_.cells(axis), axes[axis]);
     const int count = tensor_product_stencil(grid_, axes, nodes, values, gradients);
     diagnostics_.record(count);
     return count;
   }
 
-  /// The 1D factors of one axis at the lattice coordinate xi in [0, cells], ghost nodes folded.
-  AxisFactors<Degree + 1> axis_factors(double xi, int cells) const {
-    const double inverse_h = 1.0 / grid_.spacing();
+  /// Writes `factors`, the 1D factors of one axis at the lattice coordinate xi in [0, cells], ghost nodes folded.
+  /// (Written in place: a copy of the weights through a local array or a returned struct, which the compiler
+  /// moves in 16-byte pieces after 8-byte stores, stalled each particle's stencil on store forwarding.)
+  void set_axis_factors(double xi, int cells, AxisFactors<Degree + 1>& factors) const {
     // The nodes of the support: xi - 1.5 < i < xi + 1.5 (quadratic), xi - 2 < i < xi + 2 (cubic).
     // (the cubic's cell is the last one on the upper edge, xi = cells, as Grid::cell_of has it)
     // (xi >= 0 inside the grid: truncation is the floor, without a call to floor())
     const int first = Degree == 2 ? static_cast<int>(xi + 0.5) - 1 : std::min(static_cast<int>(xi), cells - 1) - 1;
-    double value[Degree + 1], derivative[Degree + 1];
+    double* value = factors.value.data();
+    double* derivative = factors.derivative.data();
     cell_weights(xi - (first + 1), value, derivative);
-    for (double& slope : derivative) slope *= inverse_h;
+    for (int k = 0; k <= Degree; ++k) derivative[k] *= inverse_h_, factors.lattice[k] = first + k;
+    factors.count = Degree + 1;
     // Fold a ghost node below 0 or above `cells` onto the two nodes next to it (file comment).
-    int low = 0, high = Degree;
-    if (first < 0) {  // only node -1 can lie in the support of a point inside the grid
+    const bool ghost_below = first < 0;  // only node -1 can lie in the support of a point inside the grid
+    if (ghost_below) {
       value[1] += 2.0 * value[0], derivative[1] += 2.0 * derivative[0];
       value[2] -= value[0], derivative[2] -= derivative[0];
-      low = 1;
     }
     if (first + Degree > cells) {
       value[Degree - 1] += 2.0 * value[Degree], derivative[Degree - 1] += 2.0 * derivative[Degree];
       value[Degree - 2] -= value[Degree], derivative[Degree - 2] -= derivative[Degree];
-      high = Degree - 1;
+      --factors.count;  // drops the last node, the ghost
     }
-    AxisFactors<Degree + 1> factors;
-    for (int k = low; k <= high; ++k) factors.add(first + k, value[k], derivative[k]);
-    return factors;
+    if (ghost_below) {  // drops the first node, the ghost: the others move down one place
+      --factors.count;
+      for (int k = 0; k < factors.count; ++k)
+        value[k] = value[k + 1], derivative[k] = derivative[k + 1], factors.lattice[k] = factors.lattice[k + 1];
+    }
   }
 
   /// The cardinal B-splines of the Degree + 1 nodes of a support, bspline_value(Degree, xi - node), and their
@@ -108,9 +112,10 @@ class BsplineShape {
       value[0] = 0.5 * left * left, value[1] = 0.75 - t * t, value[2] = 0.5 * right * right;
       derivative[0] = -left, derivative[1] = -2.0 * t, derivative[2] = right;
     } else {
+      constexpr double sixth = 1.0 / 6.0;  // multiplied by, not divided by: a division costs ten multiplications
       const double rest = 1.0 - t, t2 = t * t, t3 = t2 * t;
-      value[0] = rest * rest * rest / 6.0, value[1] = (3.0 * t3 - 6.0 * t2 + 4.0) / 6.0;
-      value[2] = (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) / 6.0, value[3] = t3 / 6.0;
+      value[0] = sixth * rest * rest * rest, value[1] = 0.5 * t3 - t2 + 4.0 * sixth;
+      value[2] = 0.5 * (t2 + t - t3) + sixth, value[3] = sixth * t3;
       derivative[0] = -0.5 * rest * rest, derivative[1] = 1.5 * t2 - 2.0 * t;
       derivative[2] = -1.5 * t2 + t + 0.5, derivative[3] = 0.5 * t2;
     }
@@ -120,6 +125,7 @@ class BsplineShape {
 
  private:
   Grid<Dim> grid_;
+  double inverse_h_;  ///< 1 / h
   ShapeDiagnostics diagnostics_;
 };
 

@@ -66,11 +66,12 @@ struct GimpFactor {
 inline GimpFactor gimp_factor_table(double d, double lambda) {
   const double a = std::abs(d);
   const double sign = d < 0.0 ? -1.0 : 1.0;
-  if (a <= lambda) return {1.0 - (d * d + lambda * lambda) / (2.0 * lambda), -d / lambda};
+  const double inverse_lambda = 1.0 / lambda;  // one division, then products (a division costs ten of them)
+  if (a <= lambda) return {1.0 - 0.5 * (d * d + lambda * lambda) * inverse_lambda, -d * inverse_lambda};
   if (a <= 1.0 - lambda) return {1.0 - a, -sign};
   if (a < 1.0 + lambda) {
     const double gap = 1.0 + lambda - a;  // distance to the edge of the support
-    return {gap * gap / (4.0 * lambda), -sign * gap / (2.0 * lambda)};
+    return {0.25 * gap * gap * inverse_lambda, -0.5 * sign * gap * inverse_lambda};
   }
   return {0.0, 0.0};
 }
@@ -162,11 +163,11 @@ class UgimpShape {
   /// \throws ShapeFailure if x_p is outside the grid.
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
-    const double h = grid_.spacing();
+    const double h = grid_.spacing(), inverse_h = 1.0 / h;
     const Vector<Dim>& lambda = relative_half_length_[particle];
     std::array<AxisFactors<max_nodes_per_axis>, Dim> axes;
     for (int axis = 0; axis < Dim; ++axis) {
-      double centre = (x[axis] - grid_.origin()[axis]) / h, half = lambda[axis];  // lattice coordinate, l_p / h
+      double centre = (x[axis] - grid_.origin()[axis]) * inverse_h, half = lambda[axis];  // lattice coordinate, l_p / h
       const double cells = grid_.cells(axis);
       if (centre - half < 0.0 || centre + half > cells) {  // clip [centre - half, centre + half] to [0, cells]
         const double lower = std::max(centre - half, 0.0), upper = std::min(centre + half, cells);
@@ -180,7 +181,7 @@ class UgimpShape {
       last = std::min(last, first + nodes_along_axis(lambda[axis]) - 1);  // only ever trims a node with S ~ 0
       for (int k = first; k <= last; ++k) {
         const GimpFactor s = gimp_factor(centre - k, half);
-        axes[axis].add(k, s.value, s.derivative / h);
+        axes[axis].add(k, s.value, s.derivative * inverse_h);
       }
     }
     const int count = tensor_product_stencil(grid_, axes, nodes, values, gradients);
