@@ -93,7 +93,7 @@ inline void write_summary(const std::vector<SoilOutcome>& outcomes, const std::s
   auto out = csv(path,
                  "name,shape,lme_gamma,integrator,h,nu,X,Y,steps,wall_seconds,solver_seconds,u_final,u_exact_final,final_error,"
                  "rms_error,mean_settlement,swing,static_small_strain,static_log_strain,energy_drift,largest_mass_mismatch,status,"
-                 "newton_mean,newton_max,neighbours_mean");
+                 "newton_mean,newton_max,neighbours_mean,stress_update");
   for (const auto& o : outcomes) {
     const auto& r = o.result;
     const auto& s = o.settlement;
@@ -102,7 +102,7 @@ inline void write_summary(const std::vector<SoilOutcome>& outcomes, const std::s
         << r.solver_seconds << "," << s.final_displacement << "," << s.exact_final << "," << s.final_error << "," << s.rms_error << ","
         << s.mean_settlement << "," << s.swing << "," << s.static_small_strain << "," << s.static_log_strain << "," << s.energy_drift
         << "," << r.largest_mass_mismatch << "," << (r.failed ? "failed" : "ok") << "," << r.newton_mean << "," << r.newton_max << ","
-        << r.neighbours_mean << "\n";
+        << r.neighbours_mean << "," << r.scene.stress_update << "\n";
   }
 }
 
