@@ -971,7 +971,13 @@ int main(int argc, char** argv) {
             "(`mpm/exact/vibrating_bar_finite_strain.hpp`, " << reference_cells << " cells) at large amplitude. "
          << "Orders: GSL least squares of log error against log cells, 16 cells and finer. At small amplitude uGIMP gives "
             "the same numbers as linear shape functions: while a particle's domain lies inside one cell, its uGIMP weights and "
-            "gradients (averages of the linear functions over the domain) equal the linear ones at its centre.\n\n";
+            "gradients (averages of the linear functions over the domain) equal the linear ones at its centre.\n\n"
+         << "Today's baselines run beside the paper's methods (paper/08_test_cases.md, \"Today's baselines\"): quadratic and cubic "
+            "B-splines (bspline2, bspline3) with both integrators, and linear shapes with forward Euler and the stress updated last "
+            "(usl) or modified-last (musl), at CFL 0.5, below USL's stability limit at 1 and 2 particles per cell (`mpm stability "
+            "--stress-update usl`); on the bar at 8-128 cells, 1 and 2 ppc, in 2D at small amplitude, 2x2 ppc, 12-32 cells; in the "
+            "crossing onset also LME at γ = 0.8 and 1.5 (lme0.8, lme1.5). Cost: each run's CPU time (one thread per run). Not run, "
+            "as no claim reads them: the large amplitude at CFL 0.1.\n\n";
   for (const auto& [title, list] : sections) {
     report << "### " << title << "\n\n";
     for (size_t at = title.find('`'); at != std::string::npos; at = title.find('`', title.find('`', at + 1) + 1)) {
@@ -1029,7 +1035,7 @@ int main(int argc, char** argv) {
       report << " |\n";
     }
   report << "\nSuite time: " << number(suite_seconds, "%.1f") << " s wall, " << number(suite_cpu, "%.1f") << " s of CPU on "
-         << cores << " threads (" << jobs.size() << " runs, the references included).\n\n";
+         << cores << " threads (" << jobs.size() << " runs, the references included; " << number(runs_cpu, "%.1f") << " s of CPU summed over the runs).\n\n";
   std::printf("smooth_suite: %zu runs in %.1f s wall (runs %.1f s; %.1f s wall and %.1f s CPU summed over the runs), %.1f s CPU, hard checks %s\n",
               jobs.size(), suite_seconds, runs_seconds, cpu_seconds, runs_cpu, suite_cpu, hard_failure ? "FAILED" : "passed");
   return hard_failure ? 1 : 0;
