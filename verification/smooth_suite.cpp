@@ -1,6 +1,8 @@
 // The smooth-data part of `make figures` (issue 10): the vibrating bar's convergence per shape
 // function, integrator, amplitude, particles per cell and CFL; the grid-crossing error isolated
-// (error against amplitude / h on a fixed mesh); the Dyka bar at 2 particles per cell. Runs every
+// (error against amplitude / h on a fixed mesh); the Dyka bar at 2 particles per cell; each with today's
+// baselines beside the paper's methods (B-splines, USL and MUSL, and LME at small gamma in the two
+// crossing studies), ranked by error at equal CPU time or on the error-cost front. Runs every
 // case in parallel, writes the data of each figure as CSV into DATA_DIR and the report fragment
 // REPORT (Markdown). Exit code 1 when a hard check (a bound the theory gives) fails.
 //
