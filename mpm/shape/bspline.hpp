@@ -63,7 +63,10 @@ class BsplineShape {
   /// \throws ShapeFailure if x_p is outside the grid.
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
+    // Each axis's factors are set by set_axis_factors(); left unset in 2D, where zeroing them per particle cost a
+    // sixth of the stencils' time, and zeroed in 1D, where it costs nothing measurable (and spares a false warning).
     std::array<AxisFactors<Degree + 1>, Dim> axes;
+    if constexpr (Dim == 1) axes = {};
     for (int axis = 0; axis < Dim; ++axis) set_axis_factors((x[axis] - grid_.origin()[axis]) * inverse_h_, grid_.cells(axis), axes[axis]);
     const int count = tensor_product_stencil(grid_, axes, nodes, values, gradients);
     diagnostics_.record(count);

@@ -9,13 +9,13 @@
 
 namespace mpm {
 
-/// The 1D factors of one axis: lattice index of each node, S and dS/dx.
+/// The 1D factors of one axis: lattice index of each node, S and dS/dx; only the first `count` are set.
 template <int MaxPerAxis>
 struct AxisFactors {
   int count = 0;
-  std::array<int, MaxPerAxis> lattice{};
-  std::array<double, MaxPerAxis> value{};
-  std::array<double, MaxPerAxis> derivative{};
+  std::array<int, MaxPerAxis> lattice;
+  std::array<double, MaxPerAxis> value;
+  std::array<double, MaxPerAxis> derivative;
   void add(int index, double s, double ds) {
     lattice[count] = index;
     value[count] = s;
@@ -25,30 +25,30 @@ struct AxisFactors {
 };
 
 /// Combines per-axis factors into the stencil of a point; returns the number of nodes written.
+/// Nodes in the grid's order, x fastest: \f$ N_{ij} = S^x_i S^y_j \f$,
+/// \f$ \nabla N_{ij} = (S'^x_i S^y_j,\ S^x_i S'^y_j) \f$ (in 1D \f$ N_i = S_i \f$, \f$ \nabla N_i = S'_i \f$).
 template <int Dim, int MaxPerAxis, std::size_t Axes>
 int tensor_product_stencil(const Grid<Dim>& grid, const std::array<AxisFactors<MaxPerAxis>, Axes>& axes, int* nodes,
                            double* values, Vector<Dim>* gradients) {
-  static_assert(Axes == Dim, "one factor per axis");
-  std::array<int, Dim> digit{};
-  int written = 0;
-  while (true) {
-    typename Grid<Dim>::MultiIndex lattice{};
-    double value = 1.0;
-    Vector<Dim> gradient = Vector<Dim>::Ones();
-    for (int axis = 0; axis < Dim; ++axis) {
-      const auto& factor = axes[axis];
-      lattice[axis] = factor.lattice[digit[axis]];
-      value *= factor.value[digit[axis]];
-      for (int other = 0; other < Dim; ++other)
-        gradient[other] *= (other == axis) ? factor.derivative[digit[axis]] : factor.value[digit[axis]];
+  static_assert(Axes == Dim && (Dim == 1 || Dim == 2), "one factor per axis, in 1D or 2D");
+  const AxisFactors<MaxPerAxis>& x = axes[0];
+  if constexpr (Dim == 1) {
+    for (int i = 0; i < x.count; ++i) {
+      nodes[i] = x.lattice[i];  // grid.node_index() in 1D
+      values[i] = x.value[i];
+      gradients[i][0] = x.derivative[i];
     }
-    nodes[written] = grid.node_index(lattice);
-    values[written] = value;
-    gradients[written] = gradient;
-    ++written;
-    int axis = 0;  // odometer over the per-axis digits
-    while (axis < Dim && ++digit[axis] == axes[axis].count) digit[axis++] = 0;
-    if (axis == Dim) return written;
+    return x.count;
+  } else {
+    const AxisFactors<MaxPerAxis>& y = axes[1];
+    int written = 0;
+    for (int j = 0; j < y.count; ++j)
+      for (int i = 0; i < x.count; ++i, ++written) {
+        nodes[written] = grid.node_index({x.lattice[i], y.lattice[j]});
+        values[written] = x.value[i] * y.value[j];
+        gradients[written] = Vector<2>(x.derivative[i] * y.value[j], x.value[i] * y.derivative[j]);
+      }
+    return written;
   }
 }
 
