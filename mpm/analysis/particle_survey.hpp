@@ -84,6 +84,7 @@ TEST_CASE("Particle survey: the balances and Eq. (42)'s speeds of one pass equal
   CHECK(one.unhealthy == 0);
   for (CourantSpeed rule : {CourantSpeed::maximum, CourantSpeed::sum})
     CHECK(courant_time_step(one.fastest_speed(), one.wave_speed(), h, 0.5, rule) == courant_time_step(particles, E, h, 0.5, rule));
+  const TeamAlways on_the_team;
   use_threads(2);
   const ParticleSurvey<2> two = survey_particles(particles, grid, material);
   CHECK(two.balances.kinetic == one.balances.kinetic);

@@ -21,6 +21,13 @@
 /// **When to go parallel.** A loop runs on the team when its estimated work is worth it: the work is
 /// counted in stencil entries (a particle's loop over its nodes), and below parallel_work entries
 /// waking the workers costs more than they would save.
+///
+/// **When the team does not pay.** On a machine where another program keeps a core busy, the team's
+/// loops can take longer than the calling thread alone would: a worker set aside in the middle of its
+/// chunk holds the loop up for the system's time slice. The team measures every loop it runs against
+/// the calling thread's own pace (its time per chunk, times the chunks) and, when its loops are on
+/// average no faster than that, runs the next serial_period loops on the calling thread alone, then
+/// tries again (TeamGovernor). The chunks, and so the bits of every result, stay the same.
 #pragma once
 #include <doctest/doctest.h>
 #include <sched.h>
@@ -85,6 +92,31 @@ inline int& worker_index() {
   return index;
 }
 
+/// Whether the team pays for itself, from the loops it ran: each loop's wall time over the calling thread's
+/// own pace, ratio = loop time / (the caller's time per chunk x chunks), averaged over the recent loops
+/// (weight 1/4 for the newest). Above 1 the team was no faster than one thread: the next serial_period
+/// loops run on the calling thread, then one loop on the team tests the machine again.
+class TeamGovernor {
+ public:
+  static constexpr int serial_period = 64;
+  /// Whether the next loop goes to the team.
+  bool use_team() {
+    if (serial_left_ == 0) return true;
+    --serial_left_;
+    return false;
+  }
+  /// A loop that ran on the team: `ratio` = its wall time over the calling thread's pace.
+  void record(double ratio) {
+    average_ = 0.75 * average_ + 0.25 * ratio;
+    if (average_ > 1.0) serial_left_ = serial_period, average_ = 1.0;  // the test after the pause decides alone
+  }
+  int serial_loops_left() const { return serial_left_; }
+
+ private:
+  double average_ = 0.5;  // the ratio of two threads that share the work evenly
+  int serial_left_ = 0;
+};
+
 /// The calling thread and `workers` threads that wait for chunks to run. A worker waits asleep for
 /// the next loop; run() wakes it, and it takes chunks until none is left.
 class Team {
@@ -119,11 +151,27 @@ class Team {
       asleep = sleeping_ > 0;
     }
     if (asleep) wake_.notify_all();
-    take_chunks(job_, generation_);
+    const auto start = std::chrono::steady_clock::now();
+    const int own = take_chunks(job_, generation_);
+    const auto own_end = std::chrono::steady_clock::now();
     if (finished_.load() < chunks) {  // chunks still running on workers: wait asleep
       std::unique_lock<std::mutex> lock(mutex_);
       done_.wait(lock, [&] { return finished_.load() == chunks; });
     }
+    if (own > 0) {  // the caller's pace: its time per chunk
+      const double pace = std::chrono::duration<double>(own_end - start).count() / own;
+      governor_.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / (pace * chunks));
+    }
+  }
+
+  /// Whether the next loop should run on the team (TeamGovernor); false: the calling thread runs it alone.
+  bool pays() { return team_always().load(std::memory_order_relaxed) || governor_.use_team(); }
+
+  /// Set by the tests that compare the team's bits with one thread's: every loop above parallel_work then runs
+  /// on the team, whatever the governor measured. (TeamAlways sets it for a scope.)
+  static std::atomic<bool>& team_always() {
+    static std::atomic<bool> always{false};
+    return always;
   }
 
  private:
@@ -138,11 +186,13 @@ class Team {
   /// Takes the chunks of loop `generation` one at a time until none is left. next_ holds the
   /// generation (high 32 bits) and the next chunk (low 32 bits) in one word, so that a worker that
   /// wakes late, after its loop ended, cannot take a chunk of the next loop.
-  void take_chunks(const Job& job, std::uint32_t generation) {
+  int take_chunks(const Job& job, std::uint32_t generation) {  // returns the chunks it ran
+    int taken = 0;
     for (std::uint64_t next = next_.load();;) {
-      if (next >> 32 != generation || static_cast<int>(next & 0xffffffffu) >= job.chunks) return;
+      if (next >> 32 != generation || static_cast<int>(next & 0xffffffffu) >= job.chunks) return taken;
       if (!next_.compare_exchange_weak(next, next + 1)) continue;  // another thread took it: try the next
       job.work(job.context, static_cast<int>(next & 0xffffffffu));
+      ++taken;
       if (finished_.fetch_add(1) + 1 == job.chunks) {  // the last chunk: wake the calling thread if it waits
         { std::lock_guard<std::mutex> guard(mutex_); }
         done_.notify_one();
@@ -187,6 +237,15 @@ class Team {
   int sleeping_ = 0;                      // workers waiting on wake_ (guarded by mutex_)
   std::atomic<std::uint64_t> next_{0};    // generation << 32 | next chunk to take
   std::atomic<int> finished_{0};          // chunks of the current loop that have run
+  TeamGovernor governor_;                 // used by the calling thread only
+};
+
+/// For a test's scope: every loop above parallel_work runs on the team (Team::team_always()).
+struct TeamAlways {
+  TeamAlways() { Team::team_always() = true; }
+  ~TeamAlways() { Team::team_always() = false; }
+  TeamAlways(const TeamAlways&) = delete;
+  TeamAlways& operator=(const TeamAlways&) = delete;
 };
 
 /// The team of the calling thread (none: the loops run on it alone). Each thread that runs a
@@ -215,7 +274,7 @@ void for_each_chunk(int count, long work_estimate, Work work) {
   const int chunks = chunks_of(count);
   auto run_chunk = [&](int chunk) { work(chunk, chunk_of(count, chunk)); };
   Team* team = calling_team().get();
-  if (team && chunks > 1 && work_estimate >= parallel_work) return team->run(chunks, run_chunk);
+  if (team && chunks > 1 && work_estimate >= parallel_work && team->pays()) return team->run(chunks, run_chunk);
   for (int chunk = 0; chunk < chunks; ++chunk) run_chunk(chunk);
 }
 
@@ -326,6 +385,7 @@ TEST_CASE("Parallel loops: the chunks cover every item once, in order, and depen
 }
 
 TEST_CASE("Parallel loops: every chunk runs once on the team, loop after loop, worker_index names the thread") {
+  const TeamAlways on_the_team;
   use_threads(3);
   REQUIRE(team_threads() == 3);
   const int count = 8 * items_per_chunk;
@@ -364,6 +424,7 @@ TEST_CASE("Parallel loops: sums and scatters give the same bits on 1, 2 and 3 th
 
   std::vector<double> sums;
   std::vector<std::vector<double>> fields;
+  const TeamAlways on_the_team;
   for (int threads : {1, 2, 3}) {
     use_threads(threads);
     sums.push_back(parallel_sum(count, parallel_work, 0.0, [&](int p, double& sum) { sum += term[p]; },
@@ -409,6 +470,7 @@ TEST_CASE("Parallel loops: a scatter into two fields of different types in one p
   prepare_copies(vector_copies, count, 10, Vector<2>(Vector<2>::Zero()));
   ChunkNodes everywhere;
   everywhere.fill(all_nodes);
+  const TeamAlways on_the_team;
   use_threads(2);
   scatter_to_nodes(
       count, parallel_work, everywhere,
@@ -426,6 +488,26 @@ TEST_CASE("Parallel loops: a scatter into two fields of different types in one p
     for (const Vector<2>& left : copy) CHECK(left.isZero(0.0));
   copies.pop_back();
   CHECK_THROWS_AS(scatter_to_nodes(count, 1, everywhere, field, copies, [](int, double*) {}), std::logic_error);
+}
+
+TEST_CASE("Team governor: a team as fast as one thread goes serial for serial_period loops, then tests again; a quiet team never") {
+  TeamGovernor quiet;
+  for (int loop = 0; loop < 1000; ++loop) {
+    REQUIRE(quiet.use_team());
+    quiet.record(0.6);  // two threads at 1.7 x
+  }
+  TeamGovernor busy;  // a worker set aside: the team's loops take 1.5 times the caller's pace
+  int loops_to_pause = 0;
+  while (busy.use_team() && loops_to_pause < 100) busy.record(1.5), ++loops_to_pause;
+  CHECK(loops_to_pause == 3);  // the average 0.5 -> 0.75 -> 0.9375 -> 1.078 (> 1): three loops on the team
+  CHECK(busy.serial_loops_left() == TeamGovernor::serial_period - 1);
+  int serial = 1;
+  while (!busy.use_team()) ++serial;
+  CHECK(serial == TeamGovernor::serial_period);
+  busy.record(0.9);  // the test loop after the pause was faster than one thread: the team stays
+  CHECK(busy.use_team());
+  busy.record(1.2);  // the average (3 x 1.0 + 0.9) / 4 = 0.975, then (3 x 0.975 + 1.2) / 4 = 1.03: a pause again
+  CHECK(!busy.use_team());
 }
 
 }  // namespace mpm
