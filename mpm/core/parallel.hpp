@@ -490,7 +490,7 @@ TEST_CASE("Parallel loops: a scatter into two fields of different types in one p
   CHECK_THROWS_AS(scatter_to_nodes(count, 1, everywhere, field, copies, [](int, double*) {}), std::logic_error);
 }
 
-TEST_CASE("Team governor: a team as fast as one thread goes serial for serial_period loops, then tests again; a quiet team never") {
+TEST_CASE("Team governor: a team as fast as one thread goes serial for serial_period loops, then tests again, a quiet team never") {
   TeamGovernor quiet;
   for (int loop = 0; loop < 1000; ++loop) {
     REQUIRE(quiet.use_team());
