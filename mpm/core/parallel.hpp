@@ -293,7 +293,9 @@ T parallel_sum(int count, long work_per_item, const T& zero, Body body, Combine 
   std::array<T, max_chunks> part;
   part.fill(zero);
   for_each_chunk(count, count * work_per_item, [&](int chunk, Range items) {
-    for (int p = items.begin; p < items.end; ++p) body(p, part[chunk]);
+    T running = zero;  // on the thread's own stack: neighbouring parts share cache lines, which two threads would fight over
+    for (int p = items.begin; p < items.end; ++p) body(p, running);
+    part[chunk] = running;
   });
   T total = part[0];
   for (int chunk = 1; chunk < chunks_of(count); ++chunk) combine(total, part[chunk]);
