@@ -165,12 +165,12 @@ class Team {
   }
 
   /// Whether the next loop should run on the team (TeamGovernor); false: the calling thread runs it alone.
-  bool pays() { return team_always().load(std::memory_order_relaxed) || governor_.use_team(); }
+  bool pays() { return team_always().load(std::memory_order_relaxed) > 0 || governor_.use_team(); }
 
-  /// Set by the tests that compare the team's bits with one thread's: every loop above parallel_work then runs
-  /// on the team, whatever the governor measured. (TeamAlways sets it for a scope.)
-  static std::atomic<bool>& team_always() {
-    static std::atomic<bool> always{false};
+  /// Above 0 in the tests that compare the team's bits with one thread's: every loop above parallel_work then
+  /// runs on the team, whatever the governor measured. (Each TeamAlways adds 1 for its scope, so scopes nest.)
+  static std::atomic<int>& team_always() {
+    static std::atomic<int> always{0};
     return always;
   }
 
@@ -242,8 +242,8 @@ class Team {
 
 /// For a test's scope: every loop above parallel_work runs on the team (Team::team_always()).
 struct TeamAlways {
-  TeamAlways() { Team::team_always() = true; }
-  ~TeamAlways() { Team::team_always() = false; }
+  TeamAlways() { ++Team::team_always(); }
+  ~TeamAlways() { --Team::team_always(); }
   TeamAlways(const TeamAlways&) = delete;
   TeamAlways& operator=(const TeamAlways&) = delete;
 };
