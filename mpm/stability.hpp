@@ -66,20 +66,29 @@ struct StabilityLimits {
   double cfl_limit_from_modes = 0.0;  ///< mode_stability_limit() / highest_mode (NaN where no analysis: a PIC/FLIP blend)
 };
 
+/// The step of a stability body at a CFL number: \f$ \Delta t = \mathrm{CFL}\, h / c \f$, c of its (one) material.
+template <int Dim>
+double stability_time_step(const Setup<Dim>& setup, double cfl) {
+  return cfl * setup.model.grid.spacing() / std::sqrt(setup.model.materials[0].young_modulus / setup.model.materials[0].density);
+}
+
+/// A step is stable when the spectral radius of its linearised step is at most 1 + this.
+inline constexpr double stable_radius_tolerance = 1e-6;
+
+/// The spectral radius of the scene's linearised step on `setup` at `cfl`.
+template <int Dim>
+double step_radius(const io::Scene& scene, const Setup<Dim>& setup, double cfl) {
+  return with_method<Dim>(scene, setup.model.grid, [&](auto shape, auto integrator) {
+    return spectral_radius(linearised_step_matrix(setup.model, setup.particles, shape, integrator, stability_time_step(setup, cfl)));
+  });
+}
+
 /// The limits of the scene's method on the scene's body (built by stability_scene()); the CFL limit by
 /// bisection to `relative_tolerance`.
 template <int Dim>
 StabilityLimits stability_limits(const io::Scene& scene, double relative_tolerance = 1e-6) {
   use_threads(1);
   const Setup<Dim> setup = build_setup<Dim>(scene);
-  const double wave_speed = std::sqrt(setup.model.materials[0].young_modulus / setup.model.materials[0].density);
-  const double cell_size = setup.model.grid.spacing();
-  auto time_step = [&](double cfl) { return cfl * cell_size / wave_speed; };
-  auto radius_at = [&](double cfl) {
-    return with_method<Dim>(scene, setup.model.grid, [&](auto shape, auto integrator) {
-      return spectral_radius(linearised_step_matrix(setup.model, setup.particles, shape, integrator, time_step(cfl)));
-    });
-  };
   StabilityLimits limits;
   limits.particles = setup.particles.size();
   limits.unknowns = limits.particles * linearised_states_per_particle<Dim>();
@@ -90,7 +99,7 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
   plain.stress_update = "usf";
   const double probe_cfl = 0.1;
   limits.highest_mode = with_method<Dim>(plain, setup.model.grid, [&](auto shape, auto integrator) {
-    return highest_mode_omega_dt(linearised_step_matrix(setup.model, setup.particles, shape, integrator, time_step(probe_cfl)));
+    return highest_mode_omega_dt(linearised_step_matrix(setup.model, setup.particles, shape, integrator, stability_time_step(setup, probe_cfl)));
   }) / probe_cfl;
   const bool analysed = scene.integrator == "npc" || (scene.flip_fraction == 1.0 && scene.stress_update == "usf");
   const ModeScheme scheme = scene.integrator == "fe"            ? ModeScheme::forward_euler
@@ -99,8 +108,7 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
   limits.cfl_limit_from_modes = analysed ? mode_stability_limit(scheme, scene.newmark_gamma) / limits.highest_mode
                                          : std::numeric_limits<double>::quiet_NaN();
   // Bisection on the spectral radius, in a bracket around the prediction when it holds one.
-  const double tolerance = 1e-6;
-  auto stable = [&](double cfl) { return radius_at(cfl) <= 1.0 + tolerance; };
+  auto stable = [&](double cfl) { return step_radius(scene, setup, cfl) <= 1.0 + stable_radius_tolerance; };
   double low = 0.02, high = 4.0;
   if (analysed && stable(0.98 * limits.cfl_limit_from_modes) && !stable(1.02 * limits.cfl_limit_from_modes)) {
     low = 0.98 * limits.cfl_limit_from_modes;
@@ -132,12 +140,7 @@ extern template StabilityLimits stability_limits<2>(const io::Scene&, double);
 template <int Dim>
 bool stable_at(const io::Scene& scene, double cfl) {
   use_threads(1);
-  const Setup<Dim> setup = build_setup<Dim>(scene);
-  const double wave_speed = std::sqrt(setup.model.materials[0].young_modulus / setup.model.materials[0].density);
-  const double time_step = cfl * setup.model.grid.spacing() / wave_speed;
-  return with_method<Dim>(scene, setup.model.grid, [&](auto shape, auto integrator) {
-    return spectral_radius(linearised_step_matrix(setup.model, setup.particles, shape, integrator, time_step)) <= 1.0 + 1e-6;
-  });
+  return step_radius(scene, build_setup<Dim>(scene), cfl) <= 1.0 + stable_radius_tolerance;
 }
 
 extern template bool stable_at<1>(const io::Scene&, double);
@@ -168,11 +171,13 @@ inline io::Scene warning_body(const io::Scene& scene) {
   return uniform;
 }
 
-/// The CFL limit of a scene's method on its warning_body(), to 1e-3.
-inline double scene_cfl_limit(const io::Scene& scene) {
-  const io::Scene uniform = warning_body(scene);
-  return (scene.dimension == 1 ? stability_limits<1>(uniform, 1e-3) : stability_limits<2>(uniform, 1e-3)).cfl_limit;
+/// The CFL limit of a uniform stability body's method, to 1e-3.
+inline double body_cfl_limit(const io::Scene& uniform) {
+  return (uniform.dimension == 1 ? stability_limits<1>(uniform, 1e-3) : stability_limits<2>(uniform, 1e-3)).cfl_limit;
 }
+
+/// The CFL limit of a scene's method on its warning_body(), to 1e-3.
+inline double scene_cfl_limit(const io::Scene& scene) { return body_cfl_limit(warning_body(scene)); }
 
 /// `mpm run`'s warning limit at the cost of one spectral radius when the scene's CFL is stable: NaN (no warning) when the
 /// step at the scene's CFL is stable on warning_body(), scene_cfl_limit() otherwise. A 2D scene's limit takes about ten
@@ -180,7 +185,7 @@ inline double scene_cfl_limit(const io::Scene& scene) {
 inline double scene_cfl_limit_if_exceeded(const io::Scene& scene) {
   const io::Scene uniform = warning_body(scene);
   const bool stable = scene.dimension == 1 ? stable_at<1>(uniform, scene.control.cfl) : stable_at<2>(uniform, scene.control.cfl);
-  return stable ? std::numeric_limits<double>::quiet_NaN() : scene_cfl_limit(scene);
+  return stable ? std::numeric_limits<double>::quiet_NaN() : body_cfl_limit(uniform);
 }
 
 }  // namespace mpm
