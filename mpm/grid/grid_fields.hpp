@@ -16,6 +16,11 @@ struct GridFields {
   std::vector<Vector<Dim>> nodal_velocity;     ///< v_I (FE: p_I/m_I; NPC: predictor, then corrected)
   std::vector<Vector<Dim>> nodal_force;        ///< f_I = f_I^int + f_I^ext, Eqs. (14)-(15)
   std::vector<Vector<Dim>> reaction;           ///< force taken by the fixed degrees of freedom
+  /// Formed once per node before G2P (mpm/transfer/grid_to_particle.hpp), 0 on nodes without mass, so that the
+  /// particle loops multiply by N_Ip instead of dividing by m_I for every particle-node pair:
+  std::vector<Vector<Dim>> nodal_acceleration;  ///< a_I = f_I / m_I
+  std::vector<Vector<Dim>> moving_velocity;     ///< the nodal velocity that moves the particles (the integrator's choice)
+  std::vector<Vector<Dim>> projected_velocity;  ///< p_I / m_I (the PIC part of forward Euler's PIC/FLIP blend)
   /// Zeroed copies of the fields the particles scatter into, one per chunk of particles beyond the
   /// first: the chunks of a particle-to-grid scatter add into them (scatter_to_nodes, mpm/core/parallel.hpp).
   std::vector<std::vector<double>> mass_copies;
@@ -26,7 +31,10 @@ struct GridFields {
         nodal_momentum(node_count, Vector<Dim>::Zero()),
         nodal_velocity(node_count, Vector<Dim>::Zero()),
         nodal_force(node_count, Vector<Dim>::Zero()),
-        reaction(node_count, Vector<Dim>::Zero()) {}
+        reaction(node_count, Vector<Dim>::Zero()),
+        nodal_acceleration(node_count, Vector<Dim>::Zero()),
+        moving_velocity(node_count, Vector<Dim>::Zero()),
+        projected_velocity(node_count, Vector<Dim>::Zero()) {}
 
   int size() const { return static_cast<int>(nodal_mass.size()); }
 

@@ -114,7 +114,7 @@ inline SceneCost estimate_cost(const Scene& scene) {
   const double particle_arrays = 4 + 8 + 8 + 5 * 8.0 * d + 2 * 8.0 * d * d + 8 + 4;  // Particles<Dim>
   const double stencil = 4 + cost.nodes_per_particle * (4 + 8 + 8.0 * d);         // Stencils<Dim>
   cost.particle_bytes = cost.particles * (3 * particle_arrays + stencil + 8.0 * d);
-  cost.node_bytes = cost.nodes * (8 + 4 * 8.0 * d);  // GridFields<Dim>
+  cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d);  // GridFields<Dim>: m_I and seven vector fields
   auto norm = [](const std::vector<double>& v) { return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0)); };
   double fastest = 0.0;  // the fastest particle at t = 0
   for (const auto& body : scene.bodies) {

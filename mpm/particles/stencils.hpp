@@ -16,6 +16,17 @@
 
 namespace mpm {
 
+/// One particle's stencil: its nodes I, N_Ip and grad N_Ip, as plain pointers and a count. The transfers
+/// loop over it from a local copy: Eigen's vector stores may alias any memory, so a loop that reached the
+/// stencils through their containers would reload every container's data pointer after each store to a node.
+template <int Dim>
+struct ParticleStencil {
+  int count;                      ///< nodes of the particle
+  const int* node;                ///< node number I
+  const double* value;            ///< N_Ip
+  const Vector<Dim>* gradient;    ///< grad N_Ip
+};
+
 template <int Dim>
 struct Stencils {
   int capacity = 0;                        ///< largest number of nodes a particle may have
@@ -37,6 +48,10 @@ struct Stencils {
   }
   int begin(int p) const { return p * capacity; }
   int end(int p) const { return p * capacity + count[p]; }
+  ParticleStencil<Dim> of(int p) const {
+    const std::size_t first = static_cast<std::size_t>(p) * capacity;
+    return {count[p], &node[first], &value[first], &gradient[first]};
+  }
 };
 
 }  // namespace mpm
@@ -55,11 +70,18 @@ void compute_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, S
     try {
       for (int p = items.begin; p < items.end; ++p) {
         const int first = stencils.begin(p);
-        stencils.count[p] = shape.evaluate(p, positions[p], &stencils.node[first], &stencils.value[first],
-                                           &stencils.gradient[first]);
-        for (int k = first; k < stencils.end(p); ++k) {
-          reached.begin = std::min(reached.begin, stencils.node[k]);
-          reached.end = std::max(reached.end, stencils.node[k] + 1);
+        const int count = shape.evaluate(p, positions[p], &stencils.node[first], &stencils.value[first], &stencils.gradient[first]);
+        stencils.count[p] = count;
+        if constexpr (Shape::nodes_ascending) {  // a tensor product lists its nodes in ascending order
+          if (count > 0) {
+            reached.begin = std::min(reached.begin, stencils.node[first]);
+            reached.end = std::max(reached.end, stencils.node[first + count - 1] + 1);
+          }
+        } else {
+          for (int k = first; k < first + count; ++k) {
+            reached.begin = std::min(reached.begin, stencils.node[k]);
+            reached.end = std::max(reached.end, stencils.node[k] + 1);
+          }
         }
       }
     } catch (const ShapeFailure& what) {

@@ -53,6 +53,9 @@ class BsplineShape {
 
   explicit BsplineShape(const Grid<Dim>& grid) : grid_(grid), inverse_h_(1.0 / grid.spacing()) {}
 
+  /// The stencil lists its nodes in ascending order (the tensor product, x fastest).
+  static constexpr bool nodes_ascending = true;
+
   /// Nodes per particle: 3 (quadratic) or 4 (cubic) per axis.
   int capacity() const { return Dim == 1 ? Degree + 1 : (Degree + 1) * (Degree + 1); }
 
@@ -60,14 +63,20 @@ class BsplineShape {
   void initialise(const Particles<Dim>& /*particles*/) {}
 
   /// N_I(x_p) and grad N_I(x_p) for the nodes within the support, ghost nodes folded at the grid's edge.
-  /// \throws ShapeFailure if x_p is outside the grid.
+  /// \throws ShapeFailure if x_p is outside the grid: a lattice coordinate \f$ \xi_a = (x_a - o_a)/h \f$ outside
+  /// [0, cells], tested on the coordinate the factors are computed from (multiplied by 1/h: Grid::contains
+  /// divides, and its division cost a sixth of the cubic's stencils; the two can differ by a rounding at the edge).
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
-    if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
+    std::array<double, Dim> xi;
+    for (int axis = 0; axis < Dim; ++axis) {
+      xi[axis] = (x[axis] - grid_.origin()[axis]) * inverse_h_;
+      if (!(xi[axis] >= 0.0 && xi[axis] <= grid_.cells(axis))) throw ShapeFailure(particle, "particle left the grid");  // also NaN
+    }
     // Each axis's factors are set by set_axis_factors(); left unset in 2D, where zeroing them per particle cost a
     // sixth of the stencils' time, and zeroed in 1D, where it costs nothing measurable (and spares a false warning).
     std::array<AxisFactors<Degree + 1>, Dim> axes;
     if constexpr (Dim == 1) axes = {};
-    for (int axis = 0; axis < Dim; ++axis) set_axis_factors((x[axis] - grid_.origin()[axis]) * inverse_h_, grid_.cells(axis), axes[axis]);
+    for (int axis = 0; axis < Dim; ++axis) set_axis_factors(xi[axis], grid_.cells(axis), axes[axis]);
     const int count = tensor_product_stencil(grid_, axes, nodes, values, gradients);
     diagnostics_.record(count);
     return count;

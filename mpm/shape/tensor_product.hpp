@@ -41,13 +41,19 @@ int tensor_product_stencil(const Grid<Dim>& grid, const std::array<AxisFactors<M
     return x.count;
   } else {
     const AxisFactors<MaxPerAxis>& y = axes[1];
+    // The counts and the row's factors in locals: the stores below may alias any memory (Eigen's vector
+    // stores), and the compiler would reload what it reached through the references after each of them.
+    const int x_count = x.count, y_count = y.count, row_length = grid.nodes_along(0);
     int written = 0;
-    for (int j = 0; j < y.count; ++j)
-      for (int i = 0; i < x.count; ++i, ++written) {
-        nodes[written] = grid.node_index({x.lattice[i], y.lattice[j]});
-        values[written] = x.value[i] * y.value[j];
-        gradients[written] = Vector<2>(x.derivative[i] * y.value[j], x.value[i] * y.derivative[j]);
+    for (int j = 0; j < y_count; ++j) {
+      const int row = y.lattice[j] * row_length;  // grid.node_index({i, j}) = j (cells_x + 1) + i
+      const double value_y = y.value[j], derivative_y = y.derivative[j];
+      for (int i = 0; i < x_count; ++i, ++written) {
+        nodes[written] = row + x.lattice[i];
+        values[written] = x.value[i] * value_y;
+        gradients[written] = Vector<2>(x.derivative[i] * value_y, x.value[i] * derivative_y);
       }
+    }
     return written;
   }
 }

@@ -14,12 +14,6 @@
 
 namespace mpm {
 
-/// \f$ \mathbf a_I = \mathbf f_I / m_I \f$ on nodes with mass, 0 elsewhere.
-template <int Dim>
-Vector<Dim> nodal_acceleration(const GridFields<Dim>& grid, int node) {
-  return grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_force[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
-}
-
 /// Which nodal velocity moves the particles in the forward-Euler update (paper/09_choices.md, 'The position update of forward Euler').
 enum class EulerPositionVelocity {
   updated,  ///< the authors' code: p_I after p_I += dt f_I, i.e. v_I^{k+1} (default)
@@ -37,23 +31,34 @@ enum class EulerPositionVelocity {
 ///     + (1-\alpha) \sum_I N_{Ip} \frac{\mathbf p_I^{k+1}}{m_I} . \f]
 /// \f$ \alpha = 1 \f$ (the paper's scheme) is bit for bit the pure FLIP increment.
 template <int Dim>
-void forward_euler_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double dt,
+void forward_euler_particle_update(const Stencils<Dim>& stencils, GridFields<Dim>& grid, double dt,
                                    EulerPositionVelocity position_velocity, Particles<Dim>& particles,
                                    double flip_fraction = 1.0) {
+  // The nodes first: a_I = f_I / m_I, p_I / m_I, and the velocity that moves the particles.
+  parallel_for(grid.size(), 1, [&](int node) {
+    const bool has_mass = grid.nodal_mass[node] > 0.0;
+    grid.nodal_acceleration[node] = has_mass ? Vector<Dim>(grid.nodal_force[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
+    grid.projected_velocity[node] = has_mass ? Vector<Dim>(grid.nodal_momentum[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
+    grid.moving_velocity[node] = position_velocity == EulerPositionVelocity::updated ? grid.projected_velocity[node]
+                                 : has_mass                                         ? grid.nodal_velocity[node]
+                                                                                    : Vector<Dim>::Zero();
+  });
+  // Then the particles: sums of N_Ip times nodal values.
+  const bool blend = flip_fraction != 1.0;
+  const Vector<Dim>*nodal_acceleration = grid.nodal_acceleration.data(), *moving_velocity = grid.moving_velocity.data(),
+                    *projected_velocity = grid.projected_velocity.data();
   parallel_for(particles.size(), stencils.capacity, [&](int p) {
+    const ParticleStencil<Dim> stencil = stencils.of(p);
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero(), updated_velocity = Vector<Dim>::Zero();
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
-      const int node = stencils.node[k];
-      if (grid.nodal_mass[node] <= 0.0) continue;
-      const Vector<Dim> updated_velocity_I = grid.nodal_momentum[node] / grid.nodal_mass[node];
-      acceleration += stencils.value[k] * grid.nodal_force[node] / grid.nodal_mass[node];
-      updated_velocity += stencils.value[k] * updated_velocity_I;
-      velocity += stencils.value[k] * (position_velocity == EulerPositionVelocity::updated ? updated_velocity_I
-                                                                                           : grid.nodal_velocity[node]);
+    for (int k = 0; k < stencil.count; ++k) {
+      acceleration += stencil.value[k] * nodal_acceleration[stencil.node[k]];
+      velocity += stencil.value[k] * moving_velocity[stencil.node[k]];
     }
+    if (blend)
+      for (int k = 0; k < stencil.count; ++k) updated_velocity += stencil.value[k] * projected_velocity[stencil.node[k]];
     const Vector<Dim> flip_velocity = particles.velocity[p] + dt * acceleration;
-    particles.velocity[p] = flip_fraction == 1.0 ? flip_velocity
-                                                 : Vector<Dim>(flip_fraction * flip_velocity + (1.0 - flip_fraction) * updated_velocity);
+    particles.velocity[p] = blend ? Vector<Dim>(flip_fraction * flip_velocity + (1.0 - flip_fraction) * updated_velocity)
+                                  : flip_velocity;
     particles.position[p] += dt * velocity;
   });
 }
@@ -82,20 +87,31 @@ enum class NewmarkParticleVelocity {
 /// with \f$ \mathbf a_p^k \f$ the acceleration the particle stored in the step before.
 /// Expects nodal_velocity = the corrected v_I^{k+1} and nodal_momentum = sum_p N_Ip m_p v_p^k.
 template <int Dim>
-void newmark_particle_update(const Stencils<Dim>& stencils, const GridFields<Dim>& grid, double newmark_gamma, double dt,
+void newmark_particle_update(const Stencils<Dim>& stencils, GridFields<Dim>& grid, double newmark_gamma, double dt,
                              NewmarkPositionVelocity position_velocity, Particles<Dim>& particles,
                              NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32) {
+  // The nodes first: a_I = f_I / m_I and the velocity that moves the particles.
+  parallel_for(grid.size(), 1, [&](int node) {
+    if (grid.nodal_mass[node] <= 0.0) {
+      grid.nodal_acceleration[node].setZero();
+      grid.moving_velocity[node].setZero();
+      return;
+    }
+    const Vector<Dim> nodal_acceleration_I = grid.nodal_force[node] / grid.nodal_mass[node];
+    Vector<Dim> nodal_velocity_I = grid.nodal_velocity[node];
+    if (position_velocity == NewmarkPositionVelocity::predicted) nodal_velocity_I -= newmark_gamma * dt * nodal_acceleration_I;
+    if (position_velocity == NewmarkPositionVelocity::projected) nodal_velocity_I = grid.nodal_momentum[node] / grid.nodal_mass[node];
+    grid.nodal_acceleration[node] = nodal_acceleration_I;
+    grid.moving_velocity[node] = nodal_velocity_I;
+  });
+  // Then the particles: sums of N_Ip times nodal values.
+  const Vector<Dim>*nodal_acceleration = grid.nodal_acceleration.data(), *moving_velocity = grid.moving_velocity.data();
   parallel_for(particles.size(), stencils.capacity, [&](int p) {
+    const ParticleStencil<Dim> stencil = stencils.of(p);
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
-      const int node = stencils.node[k];
-      if (grid.nodal_mass[node] <= 0.0) continue;
-      const Vector<Dim> nodal_acceleration_I = grid.nodal_force[node] / grid.nodal_mass[node];
-      Vector<Dim> nodal_velocity_I = grid.nodal_velocity[node];
-      if (position_velocity == NewmarkPositionVelocity::predicted) nodal_velocity_I -= newmark_gamma * dt * nodal_acceleration_I;
-      if (position_velocity == NewmarkPositionVelocity::projected) nodal_velocity_I = grid.nodal_momentum[node] / grid.nodal_mass[node];
-      acceleration += stencils.value[k] * nodal_acceleration_I;
-      velocity += stencils.value[k] * nodal_velocity_I;
+    for (int k = 0; k < stencil.count; ++k) {
+      acceleration += stencil.value[k] * nodal_acceleration[stencil.node[k]];
+      velocity += stencil.value[k] * moving_velocity[stencil.node[k]];
     }
     const Vector<Dim> old_acceleration = particles.acceleration[p];
     particles.acceleration[p] = acceleration;

@@ -37,8 +37,9 @@ void add_nodal_forces(const Particles<Dim>& particles, const Stencils<Dim>& sten
     const Matrix<Dim> volume_stress = particles.volume(p) * particles.stress[p];
     const Vector<Dim> weight =  // m_p b_p (per_unit_mass is not filled when every b_p is zero)
         body_force.all_zero ? Vector<Dim>::Zero() : Vector<Dim>(particles.mass[p] * body_force.per_unit_mass[p]);
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      nodal_force[stencils.node[k]] += stencils.value[k] * weight - volume_stress * stencils.gradient[k];
+    const ParticleStencil<Dim> stencil = stencils.of(p);
+    for (int k = 0; k < stencil.count; ++k)
+      nodal_force[stencil.node[k]] += stencil.value[k] * weight - volume_stress * stencil.gradient[k];
   });
 }
 

@@ -23,10 +23,13 @@ void nodal_mass_and_momentum(const Particles<Dim>& particles, const Stencils<Dim
   scatter_to_nodes(
       particles.size(), stencils.capacity, stencils.chunk_nodes,
       [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum) {
-        for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
-          const double weighted_mass = stencils.value[k] * particles.mass[p];  // N_Ip m_p
-          nodal_mass[stencils.node[k]] += weighted_mass;
-          nodal_momentum[stencils.node[k]] += weighted_mass * particles.velocity[p];
+        const ParticleStencil<Dim> stencil = stencils.of(p);
+        const double mass = particles.mass[p];
+        const Vector<Dim> velocity = particles.velocity[p];
+        for (int k = 0; k < stencil.count; ++k) {
+          const double weighted_mass = stencil.value[k] * mass;  // N_Ip m_p
+          nodal_mass[stencil.node[k]] += weighted_mass;
+          nodal_momentum[stencil.node[k]] += weighted_mass * velocity;
         }
       },
       ScatterTarget<double>{grid.nodal_mass, grid.mass_copies},
@@ -41,8 +44,10 @@ void nodal_momentum_from_particles(const Particles<Dim>& particles, const Stenci
   for (Vector<Dim>& momentum : grid.nodal_momentum) momentum.setZero();
   scatter_to_nodes(particles.size(), stencils.capacity, stencils.chunk_nodes, grid.nodal_momentum, grid.momentum_copies,
                    [&](int p, Vector<Dim>* nodal_momentum) {
-    for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-      nodal_momentum[stencils.node[k]] += stencils.value[k] * particles.mass[p] * particles.velocity[p];
+    const ParticleStencil<Dim> stencil = stencils.of(p);
+    const double mass = particles.mass[p];
+    const Vector<Dim> velocity = particles.velocity[p];
+    for (int k = 0; k < stencil.count; ++k) nodal_momentum[stencil.node[k]] += stencil.value[k] * mass * velocity;
   });
 }
 
@@ -68,13 +73,15 @@ void nodal_mass_and_velocity_predictor(const Particles<Dim>& particles, const St
   scatter_to_nodes(
       particles.size(), stencils.capacity, stencils.chunk_nodes,
       [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum, Vector<Dim>* nodal_velocity) {
-        const Vector<Dim> momentum = particles.mass[p] * particles.velocity[p];
-        const Vector<Dim> predicted = momentum + (1.0 - newmark_gamma) * dt * particles.mass[p] * particles.acceleration[p];
-        for (int k = stencils.begin(p); k < stencils.end(p); ++k) {
-          const int node = stencils.node[k];
-          nodal_mass[node] += stencils.value[k] * particles.mass[p];
-          nodal_momentum[node] += stencils.value[k] * momentum;
-          nodal_velocity[node] += stencils.value[k] * predicted;  // divided by m_I below
+        const ParticleStencil<Dim> stencil = stencils.of(p);
+        const double mass = particles.mass[p];
+        const Vector<Dim> momentum = mass * particles.velocity[p];
+        const Vector<Dim> predicted = momentum + (1.0 - newmark_gamma) * dt * mass * particles.acceleration[p];
+        for (int k = 0; k < stencil.count; ++k) {
+          const int node = stencil.node[k];
+          nodal_mass[node] += stencil.value[k] * mass;
+          nodal_momentum[node] += stencil.value[k] * momentum;
+          nodal_velocity[node] += stencil.value[k] * predicted;  // divided by m_I below
         }
       },
       ScatterTarget<double>{grid.nodal_mass, grid.mass_copies},

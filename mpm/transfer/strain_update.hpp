@@ -30,8 +30,9 @@ namespace mpm {
 template <int Dim>
 Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<Vector<Dim>>& nodal_velocity) {
   Matrix<Dim> velocity_gradient = Matrix<Dim>::Zero();
-  for (int k = stencils.begin(p); k < stencils.end(p); ++k)
-    velocity_gradient += nodal_velocity[stencils.node[k]] * stencils.gradient[k].transpose();
+  const ParticleStencil<Dim> stencil = stencils.of(p);
+  const Vector<Dim>* velocity = nodal_velocity.data();
+  for (int k = 0; k < stencil.count; ++k) velocity_gradient += velocity[stencil.node[k]] * stencil.gradient[k].transpose();
   return 0.5 * (velocity_gradient + velocity_gradient.transpose());
 }
 
