@@ -27,6 +27,14 @@ struct ParticleStencil {
   const Vector<Dim>* gradient;    ///< grad N_Ip
 };
 
+/// \f$ \sum_k \mathrm{term}(k) \f$ over one particle's stencil, in the order of its nodes.
+template <class Sum, int Dim, class Term>
+Sum stencil_sum(const ParticleStencil<Dim>& stencil, Term term) {
+  Sum sum = Sum::Zero();
+  for (int k = 0; k < stencil.count; ++k) sum += term(k);
+  return sum;
+}
+
 template <int Dim>
 struct Stencils {
   int capacity = 0;                        ///< largest number of nodes a particle may have

@@ -20,7 +20,7 @@ class LinearShape {
  public:
   static constexpr const char* name = "linear";
 
-  explicit LinearShape(const Grid<Dim>& grid) : grid_(grid) {}
+  explicit LinearShape(const Grid<Dim>& grid) : grid_(grid), inverse_h_(1.0 / grid.spacing()) {}
 
   /// The stencil lists its nodes in ascending order (the tensor product, x fastest).
   static constexpr bool nodes_ascending = true;
@@ -31,17 +31,20 @@ class LinearShape {
   /// Called once per run before the first step; linear shapes keep no per-particle state.
   void initialise(const Particles<Dim>& /*particles*/) {}
 
-  /// N_I(x_p) and grad N_I(x_p) for the nodes of the cell that contains x_p.
-  /// \throws ShapeFailure if x_p is outside the grid.
+  /// N_I(x_p) and grad N_I(x_p) for the nodes of the cell that contains x_p: per axis the lattice coordinate
+  /// \f$ \xi = (x - o)/h \f$, its cell \f$ c = \lfloor \xi \rfloor \f$ (the last cell on the upper face, as Grid::cell_of),
+  /// and the hats \f$ 1 - (\xi - c) \f$, \f$ \xi - c \f$ with slopes \f$ \mp 1/h \f$.
+  /// \throws ShapeFailure if x_p is outside the grid: \f$ \xi \f$ outside [0, cells] (multiplied by 1/h, not divided
+  /// by h as Grid::contains and Grid::cell_of do: the two can differ by a rounding at the edge).
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
-    if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
-    const double h = grid_.spacing();
-    const auto cell = grid_.cell_of(x);
     std::array<AxisFactors<2>, Dim> axes;
     for (int axis = 0; axis < Dim; ++axis) {
-      const double xi = (x[axis] - grid_.origin()[axis]) / h - cell[axis];  // local coordinate in [0, 1]
-      axes[axis].add(cell[axis], 1.0 - xi, -1.0 / h);
-      axes[axis].add(cell[axis] + 1, xi, 1.0 / h);
+      const double xi = (x[axis] - grid_.origin()[axis]) * inverse_h_;
+      if (!(xi >= 0.0 && xi <= grid_.cells(axis))) throw ShapeFailure(particle, "particle left the grid");  // also NaN
+      const int cell = std::min(static_cast<int>(xi), grid_.cells(axis) - 1);  // xi >= 0: truncation is the floor
+      const double local = xi - cell;                                          // in [0, 1]
+      axes[axis].add(cell, 1.0 - local, -inverse_h_);
+      axes[axis].add(cell + 1, local, inverse_h_);
     }
     const int count = tensor_product_stencil(grid_, axes, nodes, values, gradients);
     diagnostics_.record(count);
@@ -52,6 +55,7 @@ class LinearShape {
 
  private:
   Grid<Dim> grid_;
+  double inverse_h_;  ///< 1 / h
   ShapeDiagnostics diagnostics_;
 };
 

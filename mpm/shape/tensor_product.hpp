@@ -28,8 +28,8 @@ struct AxisFactors {
 /// Nodes in the grid's order, x fastest: \f$ N_{ij} = S^x_i S^y_j \f$,
 /// \f$ \nabla N_{ij} = (S'^x_i S^y_j,\ S^x_i S'^y_j) \f$ (in 1D \f$ N_i = S_i \f$, \f$ \nabla N_i = S'_i \f$).
 template <int Dim, int MaxPerAxis, std::size_t Axes>
-int tensor_product_stencil(const Grid<Dim>& grid, const std::array<AxisFactors<MaxPerAxis>, Axes>& axes, int* nodes,
-                           double* values, Vector<Dim>* gradients) {
+int tensor_product_stencil(const Grid<Dim>& grid, const std::array<AxisFactors<MaxPerAxis>, Axes>& axes, int* __restrict nodes,
+                           double* __restrict values, Vector<Dim>* __restrict gradients) {
   static_assert(Axes == Dim && (Dim == 1 || Dim == 2), "one factor per axis, in 1D or 2D");
   const AxisFactors<MaxPerAxis>& x = axes[0];
   if constexpr (Dim == 1) {

@@ -29,10 +29,10 @@ namespace mpm {
 /// Eq. (16): \f$ \dot{\boldsymbol\varepsilon}_p = \tfrac12 \sum_I \left[\nabla N_{Ip} \otimes \mathbf v_I + \mathbf v_I \otimes \nabla N_{Ip}\right] \f$.
 template <int Dim>
 Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<Vector<Dim>>& nodal_velocity) {
-  Matrix<Dim> velocity_gradient = Matrix<Dim>::Zero();
   const ParticleStencil<Dim> stencil = stencils.of(p);
   const Vector<Dim>* velocity = nodal_velocity.data();
-  for (int k = 0; k < stencil.count; ++k) velocity_gradient += velocity[stencil.node[k]] * stencil.gradient[k].transpose();
+  const Matrix<Dim> velocity_gradient = stencil_sum<Matrix<Dim>>(
+      stencil, [&](int k) { return velocity[stencil.node[k]] * stencil.gradient[k].transpose(); });
   return 0.5 * (velocity_gradient + velocity_gradient.transpose());
 }
 
