@@ -93,7 +93,8 @@ class BsplineShape {
     double* value = factors.value.data();
     double* derivative = factors.derivative.data();
     cell_weights(xi - (first + 1), value, derivative);
-    for (int k = 0; k <= Degree; ++k) derivative[k] *= inverse_h_, factors.lattice[k] = first + k;
+    for (int k = 0; k <= Degree; ++k) derivative[k] *= inverse_h_;
+    factors.first = first;
     factors.count = Degree + 1;
     // Fold a ghost node below 0 or above `cells` onto the two nodes next to it (file comment).
     const bool ghost_below = first < 0;  // only node -1 can lie in the support of a point inside the grid
@@ -109,7 +110,8 @@ class BsplineShape {
     if (ghost_below) {  // drops the first node, the ghost: the others move down one place
       --factors.count;
       for (int k = 0; k < factors.count; ++k)
-        value[k] = value[k + 1], derivative[k] = derivative[k + 1], factors.lattice[k] = factors.lattice[k + 1];
+        value[k] = value[k + 1], derivative[k] = derivative[k + 1];
+      ++factors.first;
     }
   }
 

@@ -43,8 +43,9 @@ class LinearShape {
       if (!(xi >= 0.0 && xi <= grid_.cells(axis))) throw ShapeFailure(particle, "particle left the grid");  // also NaN
       const int cell = std::min(static_cast<int>(xi), grid_.cells(axis) - 1);  // xi >= 0: truncation is the floor
       const double local = xi - cell;                                          // in [0, 1]
-      axes[axis].add(cell, 1.0 - local, -inverse_h_);
-      axes[axis].add(cell + 1, local, inverse_h_);
+      axes[axis].first = cell;
+      axes[axis].add(1.0 - local, -inverse_h_);  // node cell
+      axes[axis].add(local, inverse_h_);         // node cell + 1
     }
     const int count = tensor_product_stencil(grid_, axes, nodes, values, gradients);
     diagnostics_.record(count);

@@ -9,15 +9,15 @@
 
 namespace mpm {
 
-/// The 1D factors of one axis: lattice index of each node, S and dS/dx; only the first `count` are set.
+/// The 1D factors of one axis: S and dS/dx of `count` consecutive nodes, the first at lattice index `first`
+/// (every tensor-product shape's support on an axis is an interval of nodes); only the first `count` are set.
 template <int MaxPerAxis>
 struct AxisFactors {
-  int count = 0;
-  std::array<int, MaxPerAxis> lattice;
+  int first = 0, count = 0;
   std::array<double, MaxPerAxis> value;
   std::array<double, MaxPerAxis> derivative;
-  void add(int index, double s, double ds) {
-    lattice[count] = index;
+  /// Appends node `first + count`.
+  void add(double s, double ds) {
     value[count] = s;
     derivative[count] = ds;
     ++count;
@@ -34,7 +34,7 @@ int tensor_product_stencil(const Grid<Dim>& grid, const std::array<AxisFactors<M
   const AxisFactors<MaxPerAxis>& x = axes[0];
   if constexpr (Dim == 1) {
     for (int i = 0; i < x.count; ++i) {
-      nodes[i] = x.lattice[i];  // grid.node_index() in 1D
+      nodes[i] = x.first + i;  // grid.node_index() in 1D
       values[i] = x.value[i];
       gradients[i][0] = x.derivative[i];
     }
@@ -46,10 +46,10 @@ int tensor_product_stencil(const Grid<Dim>& grid, const std::array<AxisFactors<M
     const int x_count = x.count, y_count = y.count, row_length = grid.nodes_along(0);
     int written = 0;
     for (int j = 0; j < y_count; ++j) {
-      const int row = y.lattice[j] * row_length;  // grid.node_index({i, j}) = j (cells_x + 1) + i
+      const int row = (y.first + j) * row_length + x.first;  // grid.node_index({x.first + i, y.first + j}) - i
       const double value_y = y.value[j], derivative_y = y.derivative[j];
       for (int i = 0; i < x_count; ++i, ++written) {
-        nodes[written] = row + x.lattice[i];
+        nodes[written] = row + i;
         values[written] = x.value[i] * value_y;
         gradients[written] = Vector<2>(x.derivative[i] * value_y, x.value[i] * derivative_y);
       }

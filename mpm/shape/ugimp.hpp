@@ -182,9 +182,10 @@ class UgimpShape {
       const int first = std::max(static_cast<int>(std::floor(centre - reach)) + 1, 0);      // first node with xi - k < reach
       int last = std::min(static_cast<int>(std::ceil(centre + reach)) - 1, grid_.cells(axis));  // last with k - xi < reach
       last = std::min(last, first + nodes_along_axis(lambda[axis]) - 1);  // only ever trims a node with S ~ 0
+      axes[axis].first = first;
       for (int k = first; k <= last; ++k) {
         const GimpFactor s = gimp_factor(centre - k, half);
-        axes[axis].add(k, s.value, s.derivative * inverse_h);
+        axes[axis].add(s.value, s.derivative * inverse_h);
       }
     }
     const int count = tensor_product_stencil(grid_, axes, nodes, values, gradients);
