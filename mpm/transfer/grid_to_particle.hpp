@@ -160,6 +160,36 @@ TEST_CASE("Eq. (18), Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (31), Eq. (32),
   CHECK(projected.position[0][0] == doctest::Approx(0.405));
 }
 
+TEST_CASE("Eq. (19), Eq. (20), Eq. (31), Eq. (33): G2P skips the nodes without mass, whatever their fields hold") {
+  // Node 2 of the worked example emptied, its force, momentum and velocity left huge: particle 1 (N = 0.5, 0.5 on
+  // nodes 1, 2) must see node 1 alone: a = 0.5 (-5 / 2.5) = -1; p_1 / m_1 = 0; v_1 = -0.6.
+  testing::WorkedExample example;
+  auto& grid = example.fields;
+  grid.nodal_mass = {1.5, 2.5, 0.0};
+  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(1e6)};
+  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(1e6)};
+  grid.nodal_momentum = {Vector<1>(3.0), Vector<1>(0.0), Vector<1>(1e6)};
+  Particles<1> updated = example.particles, start = example.particles, blend = example.particles;
+  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::updated, updated);
+  CHECK(updated.velocity[1][0] == doctest::Approx(-1.1));   // -1 + 0.1 (-1)
+  CHECK(updated.position[1][0] == doctest::Approx(1.5));    // 1.5 + 0.1 (0.5 * 0)
+  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::start, start);
+  CHECK(start.position[1][0] == doctest::Approx(1.47));     // 1.5 + 0.1 (0.5 * -0.6)
+  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::start, blend, 0.5);
+  CHECK(blend.velocity[1][0] == doctest::Approx(-0.55));    // 0.5 (-1.1) + 0.5 (0.5 * 0)
+  for (const auto position_velocity : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected, NewmarkPositionVelocity::predicted}) {
+    Particles<1> newmark = example.particles;
+    newmark_particle_update(example.stencils, grid, 0.6, 0.1, position_velocity, newmark);
+    CHECK(newmark.acceleration[1][0] == doctest::Approx(-1.0));
+    CHECK(newmark.velocity[1][0] == doctest::Approx(-1.1));
+    // projected: 0.5 * 0; corrected: 0.5 * -0.6; predicted: 0.5 (-0.6 - 0.06 (-2)) = -0.24; plus 0.005 a = -0.005
+    const double moved = position_velocity == NewmarkPositionVelocity::projected ? 0.0
+                         : position_velocity == NewmarkPositionVelocity::corrected ? -0.3
+                                                                                   : -0.24;
+    CHECK(newmark.position[1][0] == doctest::Approx(1.5 + 0.1 * moved - 0.005));
+  }
+}
+
 TEST_CASE("Eq. (23): the Newmark average of the particle velocity by hand, at gamma = 0.6 (where gamma and 1 - gamma differ)") {
   testing::WorkedExample example;
   auto& grid = example.fields;
