@@ -1,8 +1,10 @@
 /// \file
 /// Grid-to-particle transfers (G2P): the particle update of each integrator, Eq. (18) applied.
 ///
-/// Contract: read nodal_mass, nodal_momentum, nodal_velocity, nodal_force and the stencils;
-/// write the particles' x_p, v_p (and a_p for the predictor-corrector).
+/// Contract: read nodal_mass, nodal_momentum, nodal_velocity, nodal_force and the stencils; write, node by
+/// node, the rates the particles interpolate (nodal_acceleration, moving_velocity, projected_velocity: one
+/// division by m_I per node, not per particle-node pair), then the particles' x_p, v_p (and a_p for the
+/// predictor-corrector).
 #pragma once
 #include <doctest/doctest.h>
 
