@@ -40,19 +40,25 @@ done
 failures=0
 fail() { echo "docs_browser: FAIL: $*"; failures=$((failures + 1)); }
 
-# One Chromium run opens every page in turn in an iframe of a check page, waits for MathJax to finish
-# typesetting it (MathJax.Hub.Queue), and writes what it found into the check page, which Chromium dumps.
+# One Chromium run opens the pages in iframes of a check page, four at a time (one at a time the check
+# took 30 s of wall time for 8 s of CPU, four at a time 24 s; sixteen gained nothing more), waits for
+# MathJax to finish typesetting each (MathJax.Hub.Queue), and writes what it found into the check page,
+# which Chromium dumps.
 {
   echo '<html><body><pre id="out"></pre><script>'
   printf 'var base = "file://%s/";\nvar pages = [' "$html"
   printf '"%s",' "${pages[@]}"
   echo '];'
   cat <<'JS'
-var i = 0, out = document.getElementById('out');
+var i = 0, open = 0, at_once = 4, out = document.getElementById('out');
 function line(s) { out.appendChild(document.createTextNode(s + "\n")); }
 function next() {
-  if (i >= pages.length) { line("DONE"); return; }
-  var page = pages[i++], frame = document.createElement('iframe'), reported = false;
+  while (open < at_once && i < pages.length) check(pages[i++]);
+  if (open == 0 && i >= pages.length) line("DONE");
+}
+function check(page) {
+  var frame = document.createElement('iframe'), reported = false;
+  ++open;
   frame.onload = function () {
     var w = frame.contentWindow;
     var finish = function () {
@@ -60,6 +66,7 @@ function next() {
       reported = true;
       try { report(w); } catch (e) { line(page + "\terror\t" + e); }
       frame.remove();
+      --open;
       next();
     };
     var report = function (w) {
