@@ -194,6 +194,22 @@ TEST_CASE("B-splines: the weights of a support, expanded in the offset, equal th
   check(BsplineShape<1, 3>::cell_weights, 3, 0.0, 1.0);
 }
 
+TEST_CASE("B-splines: a particle outside the grid, by a little or NaN, fails; one on its edge does not") {
+  const Grid<2> grid(Vector<2>(-1.0, 0.5), 0.25, {8, 6});  // [-1, 1] x [0.5, 2]
+  auto check = [&](auto shape) {
+    int nodes[16];
+    double values[16];
+    Vector<2> gradients[16];
+    for (const Vector<2>& on_edge : {Vector<2>(-1.0, 0.5), Vector<2>(1.0, 2.0), Vector<2>(1.0, 1.2), Vector<2>(0.1, 0.5)})
+      CHECK_NOTHROW(shape.evaluate(0, on_edge, nodes, values, gradients));
+    for (const Vector<2>& outside : {Vector<2>(1.0 + 1e-9, 1.2), Vector<2>(-1.0 - 1e-9, 1.2), Vector<2>(0.1, 2.0 + 1e-9),
+                                     Vector<2>(0.1, 0.5 - 1e-9), Vector<2>(0.1, std::nan(""))})
+      CHECK_THROWS_AS(shape.evaluate(0, outside, nodes, values, gradients), ShapeFailure);
+  };
+  check(BsplineShape<2, 2>(grid));
+  check(BsplineShape<2, 3>(grid));
+}
+
 TEST_CASE("B-splines: the grid's edge by hand: the quadratic's boundary hat, the cubic's folded ghost") {
   const Grid<1> line(Vector<1>(0.0), 0.5, {8});
   BsplineShape<1, 2> quadratic(line);
