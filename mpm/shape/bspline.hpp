@@ -194,7 +194,7 @@ TEST_CASE("B-splines: the weights of a support, expanded in the offset, equal th
   check(BsplineShape<1, 3>::cell_weights, 3, 0.0, 1.0);
 }
 
-TEST_CASE("B-splines: a particle outside the grid, by a little or NaN, fails; one on its edge does not") {
+TEST_CASE("B-splines: a particle outside the grid, by a little or NaN, fails, and one on its edge does not") {
   const Grid<2> grid(Vector<2>(-1.0, 0.5), 0.25, {8, 6});  // [-1, 1] x [0.5, 2]
   auto check = [&](auto shape) {
     int nodes[16];
