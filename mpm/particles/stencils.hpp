@@ -55,7 +55,6 @@ struct Stencils {
     chunk_nodes.fill(all_nodes);
   }
   int begin(int p) const { return p * capacity; }
-  int end(int p) const { return p * capacity + count[p]; }
   ParticleStencil<Dim> of(int p) const {
     const std::size_t first = static_cast<std::size_t>(p) * capacity;
     return {count[p], &node[first], &value[first], &gradient[first]};
