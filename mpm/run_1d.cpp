@@ -9,4 +9,5 @@ template Setup<1> build_setup<1>(const io::Scene&);
 template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
 template StabilityLimits stability_limits<1>(const io::Scene&, double);
 template bool stable_at<1>(const io::Scene&, double);
+template double moved_body_cfl_limit<1>(const io::Scene&, double, double);
 }  // namespace mpm

@@ -135,6 +135,30 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
 extern template StabilityLimits stability_limits<1>(const io::Scene&, double);
 extern template StabilityLimits stability_limits<2>(const io::Scene&, double);
 
+/// The CFL limit of a scene's own linearised step, its body with its walls and free ends as they are, about rest with
+/// every particle moved by `shift` h along x (0: the scene's rest state): the largest CFL in [0.02, 4] with
+/// \f$ \rho(\mathbf S) \le 1 + 10^{-6} \f$, by bisection to `relative_tolerance`; 0 if the step is unstable at 0.02, inf if
+/// stable at 4. The step is linearised in the velocities, strains and accelerations, not in the positions, so a small
+/// shift shows what a particle's first move does to the step: a node can enter its support with a vanishing mass (the
+/// quadratic B-spline's node 1.5 h beyond a free end, paper/08_test_cases.md, "In the stability map").
+template <int Dim>
+double moved_body_cfl_limit(const io::Scene& scene, double shift, double relative_tolerance = 1e-4) {
+  use_threads(1);
+  Setup<Dim> setup = build_setup<Dim>(scene);
+  for (Vector<Dim>& position : setup.particles.position) position[0] += shift * setup.model.grid.spacing();
+  auto stable = [&](double cfl) { return step_radius(scene, setup, cfl) <= 1.0 + stable_radius_tolerance; };
+  double low = 0.02, high = 4.0;
+  if (!stable(low)) return 0.0;
+  if (stable(high)) return std::numeric_limits<double>::infinity();
+  while (high - low > relative_tolerance * high) {
+    const double middle = 0.5 * (low + high);
+    (stable(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
+extern template double moved_body_cfl_limit<1>(const io::Scene&, double, double);
+
 /// Whether the scene's method is stable on the scene's body at `cfl`: the spectral radius of its linearised step
 /// at \f$ \Delta t = \mathrm{CFL}\, h / c \f$ is at most \f$ 1 + 10^{-6} \f$, the test stability_limits() bisects on.
 template <int Dim>

@@ -206,4 +206,33 @@ TEST_CASE("scene_cfl_limit: mpm run's warning limit for a scene, 1D and 2D, look
   CHECK(limit > 2.0 / std::sqrt(1.346) * 0.9);
 }
 
+TEST_CASE("moved_body_cfl_limit: a free end's node entering the quadratic B-spline's support drops USL's limit, not USF's or the cubic's") {
+  // A free bar, 1 particle per cell at the cell centres, 2 margin cells beyond its free end at x = 0, held at x = 1:
+  // the node at x = -h lies exactly 1.5 h from the end particle, where the quadratic B-spline vanishes. Moved outward
+  // by 1e-6 h, that node enters the support with a mass of 5e-13 m_p, and USL's strain rate takes from it
+  // grad N v_I = O(1) (grad N ~ delta, v_I ~ dt f_I / m_I ~ 1/delta): the limit falls from USL's 1/sqrt(2) at rest to
+  // 0.620 (measured, on this bar as on the 40-cell Dyka bar). USF and MUSL take v_I = p_I / m_I of the
+  // particles' velocities, bounded, and keep 2; the cubic B-spline has no node at the end of its support.
+  auto scene = [](const std::string& shape, const std::string& update) {
+    io::SceneFile file = io::parse_scene_text(
+        "[grid]\nlength = [1.0]\ncells = [16]\nmargin_min = [2]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
+        "[[body]]\nmin = [0.0]\nmax = [1.0]\n[[fixed]]\nface = \"xmax\"\ncomponents = [\"x\"]\n[solver]\nend_time = 1.0\n",
+        "free_bar.toml");
+    io::apply_override(file, "solver.shape=\"" + shape + "\"", 1);
+    io::apply_override(file, "solver.stress_update=\"" + update + "\"", 2);
+    return io::read_scene(file);
+  };
+  const io::Scene quadratic_usl = scene("bspline2", "usl");
+  CHECK(moved_body_cfl_limit<1>(quadratic_usl, 0.0) == doctest::Approx(1.0 / std::sqrt(2.0)).epsilon(2e-3));
+  const double moved = moved_body_cfl_limit<1>(quadratic_usl, -1e-6);
+  CHECK(moved < 0.65);
+  CHECK(moved > 0.55);
+  CHECK(moved_body_cfl_limit<1>(quadratic_usl, 1e-6) == doctest::Approx(1.0 / std::sqrt(2.0)).epsilon(2e-3));  // inward: no new node
+  CHECK(moved_body_cfl_limit<1>(scene("bspline2", "usf"), -1e-6) == doctest::Approx(2.0).epsilon(1e-2));
+  CHECK(moved_body_cfl_limit<1>(scene("bspline2", "musl"), -1e-6) == doctest::Approx(2.0).epsilon(1e-2));
+  CHECK(moved_body_cfl_limit<1>(scene("linear", "usl"), -1e-6) == doctest::Approx(1.0 / std::sqrt(2.0)).epsilon(2e-3));
+  const io::Scene cubic_usl = scene("bspline3", "usl");
+  CHECK(moved_body_cfl_limit<1>(cubic_usl, -1e-6) == doctest::Approx(moved_body_cfl_limit<1>(cubic_usl, 0.0)).epsilon(1e-3));
+}
+
 }  // namespace mpm::cli
