@@ -149,7 +149,8 @@ inline std::string error_cost_text(const std::vector<CostEntry>& entries, const 
     if (!dominated)
       front += (front.empty() ? "" : ", ") + entry.label + " " + significant_metres(error(*entry.run)) + " (" + number(entry.run->result.solver_seconds, "%.2f") + " s)";
   }
-  return "most accurate: " + best.label + " " + significant_metres(error(*best.run)) + "; most accurate for its cost: " + front;
+  return "most accurate: " + best.label + " " + significant_metres(error(*best.run)) +
+         "; error-cost front (no run both more accurate and over 10 % faster, one timing per run): " + front;
 }
 
 /// Today's baselines on the 2 m grid: USL and MUSL stable at CFL 0.1, linear forward Euler's energy growth with each stress
@@ -236,10 +237,14 @@ inline std::vector<Claim> finest_grid_claims(const SoilLookup& get, const std::v
   const ErrorOf finite_strain = [](const SoilOutcome& o) { return std::abs(o.settlement.mean_settlement - o.settlement.static_log_strain); };
   const std::string finest = number(h, "%g") + " m";
   const std::string& best = most_accurate(entries, finite_strain).label;
-  return {{"On the " + finest + " grid, with forward Euler's three stress updates in the comparison, a shape function of the paper "
-           "(uGIMP, LME) with the predictor-corrector is the most accurate by the mean after the ramp against the finite-strain "
-           "static column (the model the solver discretises; against the small-strain solution every run tends to the model gap)",
-           "Finite-strain column: " + error_cost_text(entries, finite_strain) + ". Eq. 43: " + error_cost_text(entries, small_strain),
+  std::vector<CostEntry> euler(entries.begin() + static_cast<long>(npc_methods.size()), entries.end());
+  const CostEntry& best_euler = most_accurate(euler, finite_strain);
+  return {{"On the " + finest + " grid, every run of the refinement compared (the predictor-corrector's, and forward Euler's with "
+           "USF, USL and MUSL): a shape function of the paper (uGIMP, LME) with the predictor-corrector is the most accurate by the "
+           "mean after the ramp against the finite-strain static column (the model the solver discretises; against the small-strain "
+           "solution every run tends to the model gap)",
+           "Finite-strain column: " + error_cost_text(entries, finite_strain) + "; the most accurate forward Euler run: " + best_euler.label +
+               " " + significant_metres(finite_strain(*best_euler.run)) + ". Eq. 43: " + error_cost_text(entries, small_strain),
            (best.rfind("ugimp", 0) == 0 || best.rfind("lme", 0) == 0) && best.find(" npc") != std::string::npos, false}};
 }
 
