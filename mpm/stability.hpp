@@ -83,6 +83,22 @@ double step_radius(const io::Scene& scene, const Setup<Dim>& setup, double cfl) 
   });
 }
 
+/// Whether the scene's linearised step on `setup` is stable at `cfl`: \f$ \rho(\mathbf S) \le 1 + 10^{-6} \f$.
+template <int Dim>
+bool stable_step(const io::Scene& scene, const Setup<Dim>& setup, double cfl) {
+  return step_radius(scene, setup, cfl) <= 1.0 + stable_radius_tolerance;
+}
+
+/// The largest CFL at which `stable` holds, by bisection of [low, high] (stable at low, not at high) to `relative_tolerance`.
+template <class Stable>
+double bisected_cfl_limit(Stable stable, double low, double high, double relative_tolerance) {
+  while (high - low > relative_tolerance * high) {
+    const double middle = 0.5 * (low + high);
+    (stable(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
 /// The limits of the scene's method on the scene's body (built by stability_scene()); the CFL limit by
 /// bisection to `relative_tolerance`.
 template <int Dim>
@@ -108,7 +124,7 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
   limits.cfl_limit_from_modes = analysed ? mode_stability_limit(scheme, scene.newmark_gamma) / limits.highest_mode
                                          : std::numeric_limits<double>::quiet_NaN();
   // Bisection on the spectral radius, in a bracket around the prediction when it holds one.
-  auto stable = [&](double cfl) { return step_radius(scene, setup, cfl) <= 1.0 + stable_radius_tolerance; };
+  auto stable = [&](double cfl) { return stable_step(scene, setup, cfl); };
   double low = 0.02, high = 4.0;
   if (analysed && stable(0.98 * limits.cfl_limit_from_modes) && !stable(1.02 * limits.cfl_limit_from_modes)) {
     low = 0.98 * limits.cfl_limit_from_modes;
@@ -124,11 +140,7 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
       return limits;
     }
   }
-  while (high - low > relative_tolerance * high) {
-    const double middle = 0.5 * (low + high);
-    (stable(middle) ? low : high) = middle;
-  }
-  limits.cfl_limit = low;
+  limits.cfl_limit = bisected_cfl_limit(stable, low, high, relative_tolerance);
   return limits;
 }
 
@@ -146,15 +158,11 @@ double moved_body_cfl_limit(const io::Scene& scene, double shift, double relativ
   use_threads(1);
   Setup<Dim> setup = build_setup<Dim>(scene);
   for (Vector<Dim>& position : setup.particles.position) position[0] += shift * setup.model.grid.spacing();
-  auto stable = [&](double cfl) { return step_radius(scene, setup, cfl) <= 1.0 + stable_radius_tolerance; };
-  double low = 0.02, high = 4.0;
+  auto stable = [&](double cfl) { return stable_step(scene, setup, cfl); };
+  const double low = 0.02, high = 4.0;
   if (!stable(low)) return 0.0;
   if (stable(high)) return std::numeric_limits<double>::infinity();
-  while (high - low > relative_tolerance * high) {
-    const double middle = 0.5 * (low + high);
-    (stable(middle) ? low : high) = middle;
-  }
-  return low;
+  return bisected_cfl_limit(stable, low, high, relative_tolerance);
 }
 
 extern template double moved_body_cfl_limit<1>(const io::Scene&, double, double);
@@ -164,7 +172,7 @@ extern template double moved_body_cfl_limit<1>(const io::Scene&, double, double)
 template <int Dim>
 bool stable_at(const io::Scene& scene, double cfl) {
   use_threads(1);
-  return step_radius(scene, build_setup<Dim>(scene), cfl) <= 1.0 + stable_radius_tolerance;
+  return stable_step(scene, build_setup<Dim>(scene), cfl);
 }
 
 extern template bool stable_at<1>(const io::Scene&, double);

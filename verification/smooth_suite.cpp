@@ -950,14 +950,17 @@ int main(int argc, char** argv) {
                          number(finest.velocity_error, "%.2e"),
                  manufactured_failed[key] == 0 && velocity_order >= 0.5 && stress_order >= 0.5 && falls, false});
     }
-    std::vector<Run> runs;  // small amplitude, 2x2 ppc, 12 cells and finer
-    for (const auto& method : with_paper(bar_baselines))
-      for (int n : method.paper() ? manufactured_meshes : manufactured_baseline_meshes) {
-        if (n < manufactured_baseline_meshes.front()) continue;
-        const auto& r = *manufactured_result.at(manufactured_key(false, method.shape, method.integrator, manufactured_baseline_ppc) + "_" + std::to_string(n));
-        runs.push_back({method.name(), n, r.velocity_error, r.cpu_seconds});
-      }
-    add_equal_cost(list, "velocity error, small amplitude, 2x2 ppc, " + first + "-" + last + " cells", runs, 16);
+    auto baseline_runs = [&](bool large) {  // every method at 2x2 ppc, 12 cells and finer (error NaN: the run stopped)
+      std::vector<Run> runs;
+      for (const auto& method : with_paper(bar_baselines))
+        for (int n : method.paper() ? manufactured_meshes : manufactured_baseline_meshes) {
+          if (n < manufactured_baseline_meshes.front()) continue;
+          const auto& r = *manufactured_result.at(manufactured_key(large, method.shape, method.integrator, manufactured_baseline_ppc) + "_" + std::to_string(n));
+          runs.push_back({method.name(), n, r.failed ? std::nan("") : r.velocity_error, r.cpu_seconds});
+        }
+      return runs;
+    };
+    add_equal_cost(list, "velocity error, small amplitude, 2x2 ppc, " + first + "-" + last + " cells", baseline_runs(false), 16);
     // Large amplitude (particles cross cells): the baselines as the paper's methods above, and the same comparison.
     for (const auto& [shape, integrator] : bar_baselines) {
       const std::string key = manufactured_key(true, shape, integrator, manufactured_baseline_ppc);
@@ -970,14 +973,7 @@ int main(int argc, char** argv) {
                          number(finest.velocity_error, "%.2e"),
                  manufactured_failed[key] == 0 && manufactured_order[key].first > 0.5, false});
     }
-    std::vector<Run> large_runs;  // large amplitude, 2x2 ppc, 12 cells and finer
-    for (const auto& method : with_paper(bar_baselines))
-      for (int n : method.paper() ? manufactured_meshes : manufactured_baseline_meshes) {
-        if (n < manufactured_baseline_meshes.front()) continue;
-        const auto& r = *manufactured_result.at(manufactured_key(true, method.shape, method.integrator, manufactured_baseline_ppc) + "_" + std::to_string(n));
-        large_runs.push_back({method.name(), n, r.failed ? std::nan("") : r.velocity_error, r.cpu_seconds});
-      }
-    add_equal_cost(list, "velocity error, large amplitude, 2x2 ppc, " + first + "-" + last + " cells", large_runs, 16);
+    add_equal_cost(list, "velocity error, large amplitude, 2x2 ppc, " + first + "-" + last + " cells", baseline_runs(true), 16);
     sections.push_back({"2D manufactured solutions, plane strain ν = 0.3 (`smooth_manufactured`)", list});
   }
 

@@ -239,16 +239,13 @@ int main(int argc, char** argv) {
   const Outcome& poisson = get("lme3_npc_h2_nu0.3");
   if (!poisson.result.snapshots.empty())
     verification::write_particle_stress(poisson.result, poisson.result.snapshots.back(), folder + "/soil_poisson_t20.csv");
-  for (const auto& method : methods) {
+  auto write_refinement = [&](const std::string& method, const std::string& integrator, const std::string& file) {
     std::vector<const Outcome*> sizes;
-    for (double h : refinement) sizes.push_back(&get(run_name(method, "npc", h)));
-    verification::write_refinement(sizes, folder + "/soil_refinement_" + method + ".csv");
-  }
-  for (const auto& method : fe_refined) {
-    std::vector<const Outcome*> sizes;
-    for (double h : refinement) sizes.push_back(&get(run_name(method, "fe", h)));
-    verification::write_refinement(sizes, folder + "/soil_refinement_" + method + "_fe.csv");
-  }
+    for (double h : refinement) sizes.push_back(&get(run_name(method, integrator, h)));
+    verification::write_refinement(sizes, folder + "/" + file);
+  };
+  for (const auto& method : methods) write_refinement(method, "npc", "soil_refinement_" + method + ".csv");
+  for (const auto& method : fe_refined) write_refinement(method, "fe", "soil_refinement_" + method + "_fe.csv");
   verification::write_summary(outcomes, folder + "/soil_summary.csv");
 
   // 3. The claims, the checks and the report.
