@@ -38,8 +38,20 @@ void add_nodal_forces(const Particles<Dim>& particles, const Stencils<Dim>& sten
     const Vector<Dim> weight =  // m_p b_p (per_unit_mass is not filled when every b_p is zero)
         body_force.all_zero ? Vector<Dim>::Zero() : Vector<Dim>(particles.mass[p] * body_force.per_unit_mass[p]);
     const ParticleStencil<Dim> stencil = stencils.of(p);
-    for (int k = 0; k < stencil.count; ++k)
-      nodal_force[stencil.node[k]] += stencil.value[k] * weight - volume_stress * stencil.gradient[k];
+    if constexpr (Dim == 1) {
+      for (int k = 0; k < stencil.count; ++k)
+        nodal_force[stencil.node[k]] += stencil.value[k] * weight - volume_stress * stencil.gradient[k];
+    } else {
+      // sigma is symmetric (Eq. (3) of a symmetric strain), so in components
+      // \f$ \boldsymbol\sigma \nabla N = (\sigma_{xx}, \sigma_{yy}) \odot \nabla N + \sigma_{xy} (\partial_y N, \partial_x N) \f$:
+      // two products per node instead of four, the same sums (the same bits).
+      const Eigen::Array2d diagonal(volume_stress(0, 0), volume_stress(1, 1));
+      const double shear = volume_stress(0, 1);
+      for (int k = 0; k < stencil.count; ++k) {
+        const Eigen::Array2d gradient = stencil.gradient[k].array();
+        nodal_force[stencil.node[k]] += stencil.value[k] * weight - (diagonal * gradient + shear * gradient.reverse()).matrix();
+      }
+    }
   });
 }
 
@@ -76,6 +88,28 @@ TEST_CASE("Eq. (9), Eq. (10), Eq. (14), Eq. (15): nodal forces on the worked exa
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(5.0 + 3.0));
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(-25.0 - 1.0));
   CHECK(example.fields.nodal_force[2][0] == doctest::Approx(20.0 - 2.0));
+}
+
+TEST_CASE("Eq. (14): the internal force in 2D by hand, with a shear stress: f_I = -V_p sigma_p grad N_Ip") {
+  // One particle of volume 1 (m = 2, rho = 2) at (0.25, 0.5) in the unit cell, sigma = [[2, 7], [7, 3]].
+  // Node (0, 0): grad N = (-(1 - 0.5), -(1 - 0.25)) = (-0.5, -0.75), sigma grad N = (-1 - 5.25, -3.5 - 2.25),
+  // so f = (6.25, 5.75). Node (1, 1): grad N = (0.5, 0.25), sigma grad N = (1 + 1.75, 3.5 + 0.75): f = (-2.75, -4.25).
+  const Grid<2> grid(Vector<2>::Zero(), 1.0, {1, 1});
+  LinearShape<2> q4(grid);
+  Particles<2> particles;
+  particles.add(Vector<2>(0.25, 0.5), 2.0, 2.0, Vector<2>::Zero(), Vector<2>(0.25, 0.25));
+  particles.stress[0] << 2.0, 7.0, 7.0, 3.0;
+  Stencils<2> stencils;
+  stencils.resize(1, q4.capacity());
+  compute_stencils(q4, particles.position, stencils);
+  GridFields<2> fields(grid.node_count());
+  const ParticleBodyForces<2> none{{Vector<2>::Zero()}, true, true};
+  add_nodal_forces(particles, stencils, none, fields);
+  const int lower = grid.node_index({0, 0}), upper = grid.node_index({1, 1});
+  CHECK(fields.nodal_force[lower][0] == doctest::Approx(6.25).epsilon(1e-14));
+  CHECK(fields.nodal_force[lower][1] == doctest::Approx(5.75).epsilon(1e-14));
+  CHECK(fields.nodal_force[upper][0] == doctest::Approx(-2.75).epsilon(1e-14));
+  CHECK(fields.nodal_force[upper][1] == doctest::Approx(-4.25).epsilon(1e-14));
 }
 
 }  // namespace mpm

@@ -31,9 +31,24 @@ template <int Dim>
 Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<Vector<Dim>>& nodal_velocity) {
   const ParticleStencil<Dim> stencil = stencils.of(p);
   const Vector<Dim>* velocity = nodal_velocity.data();
-  const Matrix<Dim> velocity_gradient = stencil_sum<Matrix<Dim>>(
-      stencil, [&](int k) { return velocity[stencil.node[k]] * stencil.gradient[k].transpose(); });
-  return 0.5 * (velocity_gradient + velocity_gradient.transpose());
+  if constexpr (Dim == 1) {
+    return stencil_sum<Matrix<1>>(stencil, [&](int k) { return velocity[stencil.node[k]] * stencil.gradient[k].transpose(); });
+  } else {
+    // In components: \f$ \dot\varepsilon_{aa} = \sum_I v_{Ia}\, \partial_a N_I \f$ and
+    // \f$ \dot\varepsilon_{xy} = \tfrac12 \sum_I (v_{Iy}\, \partial_x N_I + v_{Ix}\, \partial_y N_I) \f$: the products
+    // \f$ \nabla N \odot \mathbf v \f$ and \f$ \nabla N \odot (v_y, v_x) \f$, two per node, instead of the four of
+    // the full gradient, which the symmetric part halves again (the same sums in the same order: the same bits).
+    Eigen::Array2d diagonal = Eigen::Array2d::Zero(), crossed = Eigen::Array2d::Zero();
+    for (int k = 0; k < stencil.count; ++k) {
+      const Eigen::Array2d gradient = stencil.gradient[k].array(), v = velocity[stencil.node[k]].array();
+      diagonal += gradient * v;
+      crossed += gradient * v.reverse();
+    }
+    Matrix<2> rate;
+    rate(0, 0) = diagonal[0], rate(1, 1) = diagonal[1];
+    rate(0, 1) = rate(1, 0) = 0.5 * (crossed[0] + crossed[1]);
+    return rate;
+  }
 }
 
 /// Eq. (17) discretised as the authors do (paper/09_choices.md, 'The density update'): \f$ \rho_p^{k+1} = \rho_p^k / (1 + \Delta t\,\mathrm{tr}\,\dot{\boldsymbol\varepsilon}_p) \f$.
@@ -93,6 +108,18 @@ TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density a
   CHECK(rate(1, 0) == doctest::Approx(0.5));
   CHECK(rate(0, 0) == doctest::Approx(0.0));
   CHECK(rate(1, 1) == doctest::Approx(0.0));
+  // A general linear field v = (x + 2y, 5x - 3y), which Q4 reproduces: grad v = [[1, 2], [5, -3]], whose
+  // symmetric part is [[1, 3.5], [3.5, -3]] (each entry distinct: a swapped or dropped term shows).
+  std::vector<Vector<2>> linear_field(4);
+  for (int node = 0; node < 4; ++node) {
+    const Vector<2> x = grid.node_position(node);
+    linear_field[node] = Vector<2>(x[0] + 2.0 * x[1], 5.0 * x[0] - 3.0 * x[1]);
+  }
+  const Matrix<2> general = strain_rate(stencils, 0, linear_field);
+  CHECK(general(0, 0) == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(general(1, 1) == doctest::Approx(-3.0).epsilon(1e-14));
+  CHECK(general(0, 1) == doctest::Approx(3.5).epsilon(1e-14));
+  CHECK(general(1, 0) == doctest::Approx(3.5).epsilon(1e-14));
 }
 
 TEST_CASE("Eq. (17): rho / (1 + x), x = dt tr(eps_dot): positive for any expansion, in compression only while x > -1, it differs from rho e^{-x} by rho x^2 / 2, first order") {
