@@ -83,11 +83,12 @@ class BsplineShape {
   }
 
   /// Writes `factors`, the 1D factors of one axis at the lattice coordinate xi in [0, cells], ghost nodes folded.
-  /// Away from the edges the weights are written in place, as they are (a copy through a local array, which the
-  /// compiler moves in 16-byte pieces after 8-byte stores, stalled each particle on store forwarding). At an
-  /// edge they are folded in local arrays and written once: folded in place, and shifted down by a loop over a
-  /// variable count, they kept every particle's weights in memory (the 2D quadratic's stencil phase took 57 ms
-  /// instead of 40 on the soil block at 10 x 10 cells, the cubic's 65 instead of 57).
+  /// The weights are written in place (a copy through a local array, which the compiler moves in 16-byte pieces
+  /// after 8-byte stores, stalled each particle on store forwarding). At an edge the ghost is folded there and
+  /// dropped: the last node by the count, the first by moving the others down one place in a loop of fixed
+  /// length. Shifted by a loop over a variable count, the weights stayed in memory for every particle (the 2D
+  /// quadratic's stencil phase 57 ms instead of 40 on the soil block at 10 x 10 cells); folded in local arrays
+  /// and copied into `factors`, the 2D cubic's took 57 ms instead of 50 (benchmarks/README.md).
   void set_axis_factors(double xi, int cells, AxisFactors<Degree + 1>& factors) const {
     // The nodes of the support: xi - 1.5 < i < xi + 1.5 (quadratic), xi - 2 < i < xi + 2 (cubic).
     // (the cubic's cell is the last one on the upper edge, xi = cells, as Grid::cell_of has it)
@@ -95,18 +96,14 @@ class BsplineShape {
     const int first = Degree == 2 ? static_cast<int>(xi + 0.5) - 1 : std::min(static_cast<int>(xi), cells - 1) - 1;
     const bool ghost_below = first < 0;  // only node -1 can lie in the support of a point inside the grid
     const bool ghost_above = first + Degree > cells;
-    if (!ghost_below && !ghost_above) {  // away from the edges: the weights as they are
-      cell_weights(xi - (first + 1), factors.value.data(), factors.derivative.data());
-      for (int k = 0; k <= Degree; ++k) factors.derivative[k] *= inverse_h_;
-      factors.first = first;
-      factors.count = Degree + 1;
-      return;
-    }
-    // At an edge: the weights formed and folded in local arrays, then written once.
-    double value[Degree + 1], derivative[Degree + 1];
-    cell_weights(xi - (first + 1), value, derivative);
-    for (int k = 0; k <= Degree; ++k) derivative[k] *= inverse_h_;
-    // Fold a ghost node below 0 or above `cells` onto the two nodes next to it (file comment).
+    cell_weights(xi - (first + 1), factors.value.data(), factors.derivative.data());
+    for (int k = 0; k <= Degree; ++k) factors.derivative[k] *= inverse_h_;
+    factors.first = first;
+    factors.count = Degree + 1;
+    if (!ghost_below && !ghost_above) return;  // away from the edges: the weights as they are
+    // Fold a ghost node below 0 or above `cells` onto the two nodes next to it (file comment), and drop it.
+    double* value = factors.value.data();
+    double* derivative = factors.derivative.data();
     if (ghost_below) {
       value[1] += 2.0 * value[0], derivative[1] += 2.0 * derivative[0];
       value[2] -= value[0], derivative[2] -= derivative[0];
@@ -114,16 +111,13 @@ class BsplineShape {
     if (ghost_above) {
       value[Degree - 1] += 2.0 * value[Degree], derivative[Degree - 1] += 2.0 * derivative[Degree];
       value[Degree - 2] -= value[Degree], derivative[Degree - 2] -= derivative[Degree];
+      --factors.count;  // the last node dropped
     }
-    // Drop the ghosts: the first node (the others move down one place) and the last.
-    const int dropped_below = ghost_below ? 1 : 0;
-    factors.first = first + dropped_below;
-    factors.count = Degree + 1 - dropped_below - (ghost_above ? 1 : 0);
-    for (int k = 0; k < Degree; ++k) {
-      factors.value[k] = value[k + dropped_below];
-      factors.derivative[k] = derivative[k + dropped_below];
+    if (ghost_below) {  // the first node dropped: the others move down one place, a loop of fixed length
+      for (int k = 0; k < Degree; ++k) value[k] = value[k + 1], derivative[k] = derivative[k + 1];
+      ++factors.first;
+      --factors.count;
     }
-    factors.value[Degree] = value[Degree], factors.derivative[Degree] = derivative[Degree];  // unread when dropped
   }
 
   /// The cardinal B-splines of the Degree + 1 nodes of a support, bspline_value(Degree, xi - node), and their
