@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include <functional>
+#include <stdexcept>
 
 #include "mpm/material/linear_elastic.hpp"
 #include "mpm/particles/particles.hpp"
@@ -30,11 +31,15 @@ void set_initial_velocity(const InitialVelocityField<Dim>& velocity, Particles<D
 
 /// \f$ \boldsymbol\sigma_p = \boldsymbol\sigma_0(\mathbf X_p) \f$, with \f$ \boldsymbol\varepsilon_p = \mathbf D^{-1} \boldsymbol\sigma_p \f$
 /// and \f$ \sigma_{zz,p} \f$ from Eq. (3), for every particle.
+/// \throws std::invalid_argument if a stress is not symmetric: the solver relies on it (the internal force of
+/// mpm/transfer/nodal_forces.hpp reads sigma_xy alone). A scene gives three components, so it cannot be.
 template <int Dim>
 void set_initial_stress(const InitialStressField<Dim>& stress, const std::vector<LinearElastic>& materials, Particles<Dim>& particles) {
   for (int p = 0; p < particles.size(); ++p) {
     const LinearElastic& material = materials[particles.material[p]];
-    particles.strain[p] = material.strain<Dim>(stress(particles.reference_position[p]));
+    const Matrix<Dim> initial = stress(particles.reference_position[p]);
+    if (initial != initial.transpose()) throw std::invalid_argument("set_initial_stress: the initial stress is not symmetric");
+    particles.strain[p] = material.strain<Dim>(initial);
     particles.stress[p] = material.stress<Dim>(particles.strain[p]);
     particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
   }
@@ -57,6 +62,10 @@ TEST_CASE("Initial fields: the first mode's velocity and a prestress, set per pa
   CHECK(block.stress[0](1, 1) == doctest::Approx(-3e4));
   CHECK(block.stress_zz[0] == doctest::Approx(0.3 * (-5e4)));  // plane strain: nu (sigma_xx + sigma_yy)
   CHECK(block.strain[0](0, 1) == doctest::Approx(0.5e4 * 1.3 / 5e6));  // sigma_xy / 2G, 2G = E / 1.3
+  // A stress that is not symmetric is refused (the internal force reads sigma_xy alone).
+  CHECK_THROWS_AS(set_initial_stress<2>([](const Vector<2>&) { return Matrix<2>((Matrix<2>() << -1.0, 0.5, 0.4, -3.0).finished()); },
+                                        {soil}, block),
+                  std::invalid_argument);
 }
 
 }  // namespace mpm
