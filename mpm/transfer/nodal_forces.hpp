@@ -42,9 +42,9 @@ void add_nodal_forces(const Particles<Dim>& particles, const Stencils<Dim>& sten
       for (int k = 0; k < stencil.count; ++k)
         nodal_force[stencil.node[k]] += stencil.value[k] * weight - volume_stress * stencil.gradient[k];
     } else {
-      // sigma is symmetric (Eq. (3) of a symmetric strain), so in components
+      // sigma is symmetric (Eq. (3) of a symmetric strain; set_initial_stress refuses any other), so in components
       // \f$ \boldsymbol\sigma \nabla N = (\sigma_{xx}, \sigma_{yy}) \odot \nabla N + \sigma_{xy} (\partial_y N, \partial_x N) \f$:
-      // two products per node instead of four, the same sums (the same bits).
+      // two products per node, where the matrix-vector product takes four (benchmarks/README.md).
       const Eigen::Array2d diagonal(volume_stress(0, 0), volume_stress(1, 1));
       const double shear = volume_stress(0, 1);
       for (int k = 0; k < stencil.count; ++k) {

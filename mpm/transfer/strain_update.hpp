@@ -36,8 +36,8 @@ Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<
   } else {
     // In components: \f$ \dot\varepsilon_{aa} = \sum_I v_{Ia}\, \partial_a N_I \f$ and
     // \f$ \dot\varepsilon_{xy} = \tfrac12 \sum_I (v_{Iy}\, \partial_x N_I + v_{Ix}\, \partial_y N_I) \f$: the products
-    // \f$ \nabla N \odot \mathbf v \f$ and \f$ \nabla N \odot (v_y, v_x) \f$, two per node, instead of the four of
-    // the full gradient, which the symmetric part halves again (the same sums in the same order: the same bits).
+    // \f$ \nabla N \odot \mathbf v \f$ and \f$ \nabla N \odot (v_y, v_x) \f$: two products per node, where the full
+    // velocity gradient \f$ \sum_I \mathbf v_I \otimes \nabla N_I \f$ takes four (benchmarks/README.md).
     Eigen::Array2d diagonal = Eigen::Array2d::Zero(), crossed = Eigen::Array2d::Zero();
     for (int k = 0; k < stencil.count; ++k) {
       const Eigen::Array2d gradient = stencil.gradient[k].array(), v = velocity[stencil.node[k]].array();
