@@ -96,7 +96,8 @@ auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit)
 }
 
 /// Runs the scene's setup with the scene's shape function and integrator.
-/// \throws SimulationFailure when the method fails; `partial` then holds what was done.
+/// \throws SimulationFailure when the method fails; `partial` then holds what was done (also when the
+/// monitor throws).
 template <int Dim>
 RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor, RunSummary* partial = nullptr) {
   return with_method<Dim>(scene, setup.model.grid, [&](auto shape, auto integrator) {
@@ -104,7 +105,7 @@ RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Di
                                                                        integrator, scene.control);
     try {
       return simulation.run(monitor);
-    } catch (const SimulationFailure&) {
+    } catch (...) {  // a failure of the method, a stop signal, an output failure: keep what was done
       if (partial) *partial = simulation.summary();
       throw;
     }

@@ -122,15 +122,30 @@ cannot_write() {  # cannot_write FILE-PATTERN ARGS...
 }
 touch "$work/file"
 cannot_write "$work/file/x" run "$scene" --out "$work/file/x"
-if [[ -d /proc/self ]]; then cannot_write "/proc/self/observers.csv" run "$scene" --out /proc/self; fi
+if [[ -d /proc/self ]]; then cannot_write "/proc/self/run.json" run "$scene" --out /proc/self; fi
 if [[ $(id -u) -ne 0 ]]; then  # root writes through permissions
   mkdir "$work/readonly" && chmod 555 "$work/readonly"
-  cannot_write "$work/readonly/observers.csv" run "$scene" --out "$work/readonly"
+  cannot_write "$work/readonly/run.json" run "$scene" --out "$work/readonly"
 fi
-if [[ -w /dev/full ]]; then  # a full disk, one file at a time
-  for file in observers.csv energy.csv snapshot_0001.csv snapshot_0002.vtk run.json; do
-    mkdir -p "$work/full_$file" && ln -s /dev/full "$work/full_$file/$file"
-    cannot_write "$work/full_$file/$file" run "$scene" --out "$work/full_$file"
+# A full disk, or a file size limit (RLIMIT_FSIZE, with SIGXFSZ ignored so that the write fails with
+# EFBIG): run.json (about 6 kB) cannot be written at 4 KiB; at 8 KiB run.json is written and exact.csv
+# (13 kB) is the first file cut short, and run.json then says the run failed.
+limited() { (trap '' XFSZ; ulimit -f "$1"; shift; "$mpm" "$@"); }
+limited 4 run "$scene" --out "$work/limit4" >"$work/out" 2>"$work/err"
+[[ $? -eq 3 ]] && grep -qE "^error: $work/limit4/run.json: cannot write: File too large" "$work/err" && ! grep -q wrote "$work/out" ||
+  { echo "FAIL: a run.json cut short by a size limit: $(cat "$work/err")"; failures=$((failures + 1)); }
+limited 8 run "$scene" --out "$work/limit8" >"$work/out" 2>"$work/err"
+[[ $? -eq 3 ]] && grep -qE "^error: $work/limit8/exact.csv: cannot write: File too large" "$work/err" && ! grep -q wrote "$work/out" &&
+  grep -q '"status": "failed"' "$work/limit8/run.json" ||
+  { echo "FAIL: a CSV cut short by a size limit: $(cat "$work/err")"; failures=$((failures + 1)); }
+# Standard output that cannot be written: exit 3, whatever the command.
+if [[ -w /dev/full ]]; then
+  for arguments in "--help" "--version" "run $scene --print-scene" "stability" "shape --dim 1 --kind linear --at 0.5"; do
+    # shellcheck disable=SC2086
+    "$mpm" $arguments >/dev/full 2>"$work/err"
+    code=$?
+    [[ $code -eq 3 ]] && grep -q "standard output: cannot write" "$work/err" ||
+      { echo "FAIL: mpm $arguments >/dev/full -> exit $code: $(cat "$work/err")"; failures=$((failures + 1)); }
   done
 fi
 

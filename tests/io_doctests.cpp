@@ -15,3 +15,7 @@
 #include "mpm/io/scene_budget.hpp"
 #include "mpm/io/particle_file.hpp"
 #include "mpm/io/text_lines.hpp"
+#include "mpm/io/json_writer.hpp"
+#include "mpm/io/output_file.hpp"
+#include "mpm/io/run_folder.hpp"
+#include "mpm/io/run_writer.hpp"

@@ -21,7 +21,8 @@ namespace mpm::cli {
 inline const char* run_usage =
     "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--print-scene]\n"
     "  Runs a scene and writes observers.csv, energy.csv, exact.csv (when the scene names an exact solution),\n"
-    "  snapshot_NNNN.csv/.vtk/.vtp, snapshots.pvd (ParaView time series) and run.json into DIR.\n"
+    "  snapshot_NNNN.csv/.vtp, snapshots.pvd (ParaView time series) and run.json into DIR;\n"
+    "  run.json says \"running\", then \"done\", \"failed\" or \"interrupted\". Files of an earlier run there are removed.\n"
     "  --out DIR          output folder (default runs/<scene file name>)\n"
     "  --set KEY=VALUE    overrides a scene key with a TOML value: --set solver.cfl=0.2,\n"
     "                     --set 'solver.shape=\"lme\"', --set grid.cells=[160], --set 'body[0].max=[1.0]'\n"
@@ -116,8 +117,9 @@ inline const char* exit_codes =
     "Exit codes:\n"
     "  0  done\n"
     "  2  a bad scene, option or run folder: one line `error: FILE:LINE: KEY: what is wrong`, nothing written\n"
-    "  3  the method failed during the run (or gnuplot failed for `mpm plot`): one line on stderr; what was\n"
-    "     written so far is kept\n";
+    "  3  the method failed during the run (or gnuplot failed for `mpm plot`), or a file or standard output\n"
+    "     could not be written (`cannot write`): one line on stderr; what was written so far is kept\n"
+    "  130, 143  SIGINT or SIGTERM stopped the run (run.json says \"interrupted\")\n";
 
 /// Every scene key with its default, unit and meaning, one line each.
 inline std::string scene_keys_help() {

@@ -3,9 +3,9 @@
 ///
 ///   mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--max-memory SIZE] [--max-steps N] [--force]
 ///       Runs a scene on N cores (default: all; the results are the same bits on any number); writes observers.csv, energy.csv, snapshots and run.json to DIR
-///       (default `runs/<scene name>`). Exit codes: 0 done, 2 bad scene or option (nothing written),
+///       (default `runs/<scene name>`; mpm/cli/run_command.hpp). Exit codes: 0 done, 2 bad scene or option (nothing written),
 ///       3 the method failed during the run or a file could not be written (one line on stderr;
-///       what was written is kept). A scene whose estimated memory exceeds --max-memory SIZE (bytes, or 512M, 4G; default
+///       what was written is kept), 128 + N when signal N (SIGINT, SIGTERM) stopped it. A scene whose estimated memory exceeds --max-memory SIZE (bytes, or 512M, 4G; default
 ///       half the machine's memory) or whose end_time / dt exceeds --max-steps (default 1e7;
 ///       --force lifts it) is a bad scene.
 ///   mpm run SCENE.toml --print-scene [--set KEY=VALUE]...
@@ -33,8 +33,10 @@
 ///   $ build/bin/mpm run scenes/dyka_bar.toml --set grid.cells=[160]
 ///   Dyka bar: 2428 steps to t = 0.0002 s, 160 particles, 0.0219 s wall, 1.77e+07 particle-steps/s
 ///   wrote runs/dyka_bar
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -47,12 +49,7 @@
 #include "mpm/cli/plot_command.hpp"
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/cli/stability_command.hpp"
-#include "mpm/io/exact_series.hpp"
-#include "mpm/io/run_writer.hpp"
-#include "mpm/io/scene_resolved.hpp"
-#include "mpm/io/scene_warnings.hpp"
-#include "mpm/run.hpp"
-#include "mpm/stability.hpp"
+#include "mpm/cli/run_command.hpp"
 #include "mpm/version.hpp"  // generated at build time (mpm/cli/version.cmake): MPM_VERSION
 
 namespace {
@@ -70,57 +67,15 @@ const char* usage =
     "       mpm stability [--shape S] [--integrator I] [--newmark-gamma G] [--npc-velocity V] [--ppc N] [--lme-gamma G] [--dim D]\n"
     "       mpm --version | mpm --help | mpm COMMAND --help\n";
 
-/// The version and command line written into run.json.
-mpm::io::RunIdentity identity;
-
-template <int Dim>
-int run_scene(mpm::io::Scene scene, const std::string& folder, int threads) {
-  scene.control.threads = threads;
-  const mpm::Setup<Dim> setup = mpm::build_setup<Dim>(scene);
-  identity.observed.clear();
-  for (size_t k = 0; k < setup.observed.size(); ++k) {
-    const int p = setup.observed[k];
-    const auto& X = setup.particles.reference_position[p];
-    identity.observed.push_back({scene.observers[k].name, setup.particles.id[p], std::vector<double>(X.data(), X.data() + Dim)});
-  }
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) {
-    std::cerr << mpm::OutputFailure(folder, error.message()).message() << "\n";
-    return 3;
-  }
-  mpm::RunSummary summary;
-  try {
-    try {
-      mpm::io::RunWriter<Dim> writer(folder, scene, setup.observed);
-      mpm::io::ExactWriter<Dim> exact_then_writer(folder, scene, setup.particles, writer);
-      summary = mpm::run_setup<Dim>(scene, setup, exact_then_writer, &summary);
-      exact_then_writer.finish();
-      writer.finish();
-    } catch (const mpm::SimulationFailure& failure) {
-      std::cerr << failure.message() << "\n";
-      mpm::io::write_run_json(folder + "/run.json", scene, summary, std::string("failed: ") + failure.what(), setup.particles.size(),
-                              identity);
-      return 3;
-    }
-    mpm::io::write_run_json(folder + "/run.json", scene, summary, "done", setup.particles.size(), identity);
-  } catch (const mpm::OutputFailure& failure) {
-    std::cerr << failure.message() << "\n";
-    return 3;
-  }
-  std::printf("%s: %ld steps to t = %g s, %d particles, %.3g s wall, %.3g particle-steps/s\nwrote %s\n", scene.title.c_str(),
-              summary.steps, summary.final_time, setup.particles.size(), summary.wall_seconds,
-              summary.particle_steps_per_second, folder.c_str());
-  return 0;
-}
-
-int run_command(const std::vector<std::string>& arguments) {
-  std::string scene_path, folder;
+/// Reads `mpm run`'s options into `request`; returns 0, or 2 after a message.
+int read_run_options(const std::vector<std::string>& arguments, mpm::cli::RunRequest& request) {
+  std::string& scene_path = request.scene_path;
+  std::string& folder = request.folder;
   bool folder_given = false;
-  std::vector<std::string> overrides;
-  bool print_scene = false;
-  mpm::io::Budget budget;
-  int threads = 0;
+  std::vector<std::string>& overrides = request.overrides;
+  bool& print_scene = request.print_scene;
+  mpm::io::Budget& budget = request.budget;
+  int& threads = request.threads;
   for (size_t k = 0; k < arguments.size(); ++k) {
     const std::string& argument = arguments[k];
     if ((argument == "--out" || argument == "--set" || argument == "--threads" || argument == "--max-memory" ||
@@ -183,19 +138,34 @@ int run_command(const std::vector<std::string>& arguments) {
     return 2;
   }
   if (folder.empty()) folder = "runs/" + std::filesystem::path(scene_path).stem().string();
-  try {
-    const mpm::io::Scene scene = mpm::load_scene(scene_path, overrides, budget);
-    for (const auto& warning : mpm::io::scene_warnings(scene_path, overrides, scene, mpm::scene_cfl_limit_if_exceeded(scene)))
-      std::cerr << warning << "\n";
-    if (print_scene) {
-      mpm::io::print_resolved_scene(scene, std::cout);
-      return 0;
-    }
-    return scene.dimension == 1 ? run_scene<1>(scene, folder, threads) : run_scene<2>(scene, folder, threads);
-  } catch (const mpm::SceneError& error) {
-    std::cerr << error.message() << "\n";
-    return 2;
+  return 0;
+}
+
+/// Standard output flushed and closed: a full disk or a closed pipe shows here, after the command said
+/// everything (exit 3 in place of 0, and of compare's 1).
+int check_standard_output(int code) {
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) || std::fclose(stdout) != 0;
+  if (!failed || (code != 0 && code != 1)) return code;
+  std::cerr << "error: standard output: cannot write: " << std::strerror(errno) << "\n";
+  return 3;
+}
+
+int dispatch(const std::vector<std::string>& arguments, const mpm::io::RunIdentity& identity) {
+  const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
+  if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);
+  if (arguments[0] == "exact") return mpm::cli::exact_command(rest, std::cout, std::cerr);
+  if (arguments[0] == "compare") return mpm::cli::compare_command(rest, std::cout, std::cerr);
+  if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
+  if (arguments[0] == "stability") return mpm::cli::stability_command(rest, std::cout, std::cerr);
+  if (arguments[0] == "run") {
+    mpm::cli::RunRequest request;
+    request.identity = identity;
+    const int code = read_run_options(rest, request);
+    return code != 0 ? code : mpm::cli::run_command(request);
   }
+  std::cerr << "error: " << arguments[0] << ": unknown command\n" << usage;
+  return 2;
 }
 
 }  // namespace
@@ -206,6 +176,7 @@ int main(int argc, char** argv) {
     std::cerr << usage;
     return 2;
   }
+  mpm::io::RunIdentity identity;  // the version and command line written into run.json
   identity.version = MPM_VERSION;
   identity.command_line.assign(argv, argv + argc);
   if (arguments[0] == "--version" || arguments[0] == "version") {
@@ -214,27 +185,19 @@ int main(int argc, char** argv) {
       return 2;
     }
     std::cout << "mpm " << MPM_VERSION << "\n";
-    return 0;
+    return check_standard_output(0);
   }
   if (arguments[0] == "help" || mpm::cli::asks_for_help(arguments)) {
     std::cout << mpm::cli::command_help(arguments.size() > 1 && arguments[0] == "help" ? arguments[1] : arguments[0]);
-    return 0;
+    return check_standard_output(0);
   }
-  const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
+  int code = 3;
   try {  // validation refuses bad input first; this only keeps a defect from ending in a signal
-    if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);
-    if (arguments[0] == "exact") return mpm::cli::exact_command(rest, std::cout, std::cerr);
-    if (arguments[0] == "compare") return mpm::cli::compare_command(rest, std::cout, std::cerr);
-    if (arguments[0] == "run") return run_command(rest);
-    if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
-    if (arguments[0] == "stability") return mpm::cli::stability_command(rest, std::cout, std::cerr);
+    code = dispatch(arguments, identity);
   } catch (const std::bad_alloc&) {
     std::cerr << "failure: out of memory (the scene's estimate was below --max-memory; please report it)\n";
-    return 3;
   } catch (const std::exception& defect) {
     std::cerr << "failure: internal error: " << defect.what() << " (please report it)\n";
-    return 3;
   }
-  std::cerr << "error: " << arguments[0] << ": unknown command\n" << usage;
-  return 2;
+  return check_standard_output(code);
 }

@@ -3,6 +3,7 @@
 ///
 /// - SceneError: the input is wrong. Raised before anything runs; the CLI prints
 ///   `error: FILE:LINE: KEY: what is wrong and what is allowed` and exits with code 2.
+/// - InputError: another input is wrong (a file named on the command line, an output folder); exit code 2.
 /// - OutputFailure: a file of the output cannot be written; exit code 3, the file named.
 /// - SimulationFailure: the method failed during the run (NaN, a particle leaving the grid,
 ///   an LME Newton iteration that does not converge, unbounded energy growth). The CLI prints
@@ -26,6 +27,14 @@ struct SceneError : std::runtime_error {
     out << "error: " << file << ":" << line << ": " << key << ": " << what();
     return out.str();
   }
+};
+
+/// An input other than the scene is wrong (a file given on the command line, an output folder holding a
+/// link where a file goes). The CLI prints `error: PATH: what is wrong` and exits with code 2.
+struct InputError : std::runtime_error {
+  InputError(std::string path_, const std::string& what_is_wrong) : std::runtime_error(what_is_wrong), path(std::move(path_)) {}
+  std::string path;
+  std::string message() const { return "error: " + path + ": " + what(); }
 };
 
 /// A file of the run's output could not be written (no permission, disk full). The CLI prints

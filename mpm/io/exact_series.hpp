@@ -60,13 +60,11 @@ class ExactWriter : public Monitor<Dim> {
     if (scene.exact == "dyka_bar") pieces = bar_pieces(scene, initial);
     solution_ = std::make_unique<SceneExactSolution>(scene, StrainMeasure::small, std::vector<double>{}, pieces);
     columns_ = exact_columns(scene.exact);
-    path_ = folder + "/exact.csv";
-    out_.open(path_);
-    check_written(out_, path_);
-    out_ << std::setprecision(12) << "t";
+    out_ = std::make_unique<OutputFile>(folder + "/exact.csv");
+    *out_ << "t";
     for (const auto& observer : scene.observers)
-      for (const auto& column : columns_) out_ << "," << observer.name << "." << column;
-    out_ << "\n";
+      for (const auto& column : columns_) *out_ << "," << observer.name << "." << column;
+    *out_ << "\n";
   }
 
   /// The columns per observer: dyka_bar and vibrating_bar v_x, sigma_xx; soil_column u_y (the settlement,
@@ -78,21 +76,21 @@ class ExactWriter : public Monitor<Dim> {
   }
 
   void sample(long step, double time, const Particles<Dim>& particles, const Balances<Dim>& balances) override {
-    if (out_.is_open()) {
-      out_ << time;
+    if (out_) {
+      *out_ << time;
       for (const auto& point : reference_) {
         const ExactState state = solution_->at(point, time);
-        for (const auto& column : columns_) out_ << "," << state.quantity(column);
+        for (const auto& column : columns_) *out_ << "," << state.quantity(column);
       }
-      out_ << "\n";
-      check_written(out_, path_);
+      *out_ << "\n";
+      out_->check();
     }
     next_.sample(step, time, particles, balances);
   }
 
   /// Closes exact.csv. \throws OutputFailure if it could not be written in full.
   void finish() {
-    if (out_.is_open()) close_checked(out_, path_);
+    if (out_) out_->close();
   }
   void snapshot(int index, double time, const Particles<Dim>& particles) override { next_.snapshot(index, time, particles); }
   void progress(double time, double end_time) override { next_.progress(time, end_time); }
@@ -102,8 +100,7 @@ class ExactWriter : public Monitor<Dim> {
   std::vector<std::vector<double>> reference_;  ///< each observer's material point X, in the scene's coordinates
   std::unique_ptr<SceneExactSolution> solution_;
   std::vector<std::string> columns_;
-  std::ofstream out_;
-  std::string path_;
+  std::unique_ptr<OutputFile> out_;  ///< exact.csv; none when the scene names no exact solution
 };
 
 TEST_CASE("exact.csv: the bar's initial data from the particles, merged where the velocity is equal") {

@@ -24,6 +24,7 @@ namespace mpm::io {
 /// One particle of a file: position, mass (kg per unit area or thickness) and velocity, both axes (y ignored in 1D).
 struct FileParticle {
   double x = 0.0, y = 0.0, mass = 0.0, v_x = 0.0, v_y = 0.0;
+  int line = 0;  ///< its row's line in the file, for the errors found later (a particle too large for uGIMP)
 };
 
 /// The most rows a particle file may hold.
@@ -96,6 +97,7 @@ inline std::vector<FileParticle> read_particle_file(const std::string& path, int
       return true;
     };
     FileParticle particle;
+    particle.line = number;
     particle.v_x = default_velocity.at(0), particle.v_y = dimension == 2 ? default_velocity.at(1) : 0.0;
     double volume = 0.0;
     if (!number_at(column_x, particle.x) || !number_at(dimension == 2 ? column_y : -1, particle.y) ||

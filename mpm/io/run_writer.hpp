@@ -4,29 +4,30 @@
 ///                        per observer its displacement since t = 0, NAME.u_x (2D: NAME.u_y), x_p - X_p
 ///   energy.csv           t,kinetic,strain,total,momentum_x (2D adds momentum_y)
 ///   snapshot_NNNN.csv    every particle: id, position, velocity, stress, density
-///   snapshot_NNNN.vtk    the same as legacy VTK polydata
 ///   snapshot_NNNN.vtp    the same as VTK XML polydata, listed with its time in
 ///   snapshots.pvd        the collection ParaView opens as a time series (mpm/io/vtk_collection.hpp)
-/// and shows progress on stderr when stderr is a terminal. Every stream is checked: a file that
-/// cannot be opened or written (no permission, disk full) raises OutputFailure naming it.
+///   run.json             the run's status, identity, resolved scene, numbers and units (write_run_json)
+/// and shows progress on stderr when stderr is a terminal. Every file goes through OutputFile
+/// (mpm/io/output_file.hpp): a file that cannot be opened or written in full (no permission, disk full,
+/// a symbolic link in its place) raises OutputFailure naming it.
 #pragma once
 #include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
-#include <cstring>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "mpm/io/json_writer.hpp"
+#include "mpm/io/output_file.hpp"
 #include "mpm/io/scene.hpp"
 #include "mpm/io/scene_keys.hpp"
 #include "mpm/io/scene_resolved.hpp"
@@ -35,17 +36,6 @@
 
 namespace mpm::io {
 
-/// \throws OutputFailure if `out` failed (opening, writing or flushing `path`).
-inline void check_written(const std::ostream& out, const std::string& path) {
-  if (!out) throw OutputFailure(path, errno != 0 ? std::strerror(errno) : "the stream failed");
-}
-
-/// Flushes and closes `out`, then checks it: a full disk shows only when the buffer is written.
-inline void close_checked(std::ofstream& out, const std::string& path) {
-  if (out.is_open()) out.close();
-  check_written(out, path);
-}
-
 template <int Dim>
 class RunWriter : public Monitor<Dim> {
  public:
@@ -53,7 +43,7 @@ class RunWriter : public Monitor<Dim> {
       : folder_(folder), scene_(scene), observed_(std::move(observed)),
         observers_(folder + "/observers.csv"), energy_(folder + "/energy.csv"), collection_(folder + "/snapshots.pvd"),
         show_progress_(isatty(fileno(stderr))) {
-    observers_ << std::setprecision(12) << "t";
+    observers_ << "t";
     for (const auto& observer : scene.observers) {
       const std::string& name = observer.name;
       for (int axis = 0; axis < Dim; ++axis) observers_ << "," << name << "." << axis_name(axis);
@@ -65,17 +55,13 @@ class RunWriter : public Monitor<Dim> {
     for (const auto& observer : scene.observers)
       for (int axis = 0; axis < Dim; ++axis) observers_ << "," << observer.name << ".u_" << axis_name(axis);
     observers_ << "\n";
-    energy_ << std::setprecision(12) << "t,kinetic,strain,total,momentum_x" << (Dim == 2 ? ",momentum_y" : "") << "\n";
-    for (auto [stream, name] : {std::pair{&observers_, "/observers.csv"}, {&energy_, "/energy.csv"}}) {
-      if (!*stream) errno = 0, stream->clear(), stream->open(folder_ + name);  // again, for the reason in errno
-      check_written(*stream, folder_ + name);
-    }
+    energy_ << "t,kinetic,strain,total,momentum_x" << (Dim == 2 ? ",momentum_y" : "") << "\n";
   }
 
   /// Closes the CSV histories. \throws OutputFailure if either could not be written in full.
   void finish() {
-    close_checked(observers_, folder_ + "/observers.csv");
-    close_checked(energy_, folder_ + "/energy.csv");
+    observers_.close();
+    energy_.close();
   }
 
   void sample(long, double time, const Particles<Dim>& particles, const Balances<Dim>& balances) override {
@@ -92,19 +78,16 @@ class RunWriter : public Monitor<Dim> {
     energy_ << time << "," << balances.kinetic << "," << balances.strain << "," << balances.total();
     for (int axis = 0; axis < Dim; ++axis) energy_ << "," << balances.momentum[axis];
     energy_ << "\n";
-    check_written(observers_, folder_ + "/observers.csv");
-    check_written(energy_, folder_ + "/energy.csv");
+    observers_.check();
+    energy_.check();
   }
 
   void snapshot(int index, double time, const Particles<Dim>& particles) override {
     char stem[32];
     std::snprintf(stem, sizeof stem, "/snapshot_%04d", index);
     write_csv(folder_ + stem + ".csv", particles);
-    write_vtk(folder_ + stem + ".vtk", time, particles);
-    if (!write_vtp(folder_ + stem + ".vtp", particles))
-      throw OutputFailure(folder_ + stem + ".vtp", errno != 0 ? std::strerror(errno) : "the stream failed");
-    if (!collection_.add(time, std::string(stem + 1) + ".vtp"))
-      throw OutputFailure(folder_ + "/snapshots.pvd", errno != 0 ? std::strerror(errno) : "the stream failed");
+    write_vtp(folder_ + stem + ".vtp", particles);
+    collection_.add(time, std::string(stem + 1) + ".vtp");
   }
 
   void progress(double time, double end_time) override {
@@ -118,8 +101,8 @@ class RunWriter : public Monitor<Dim> {
 
  private:
   void write_csv(const std::string& path, const Particles<Dim>& particles) const {
-    std::ofstream out(path);
-    out << std::setprecision(12) << "id";
+    OutputFile out(path);
+    out << "id";
     for (int axis = 0; axis < Dim; ++axis) out << "," << axis_name(axis);
     for (int axis = 0; axis < Dim; ++axis) out << ",v_" << axis_name(axis);
     for (int axis = 0; axis < Dim; ++axis) out << ",sigma_" << axis_name(axis) << axis_name(axis);
@@ -133,42 +116,13 @@ class RunWriter : public Monitor<Dim> {
       if (Dim == 2) out << "," << particles.stress[p](0, 1) << "," << particles.stress_zz[p];
       out << "," << particles.density[p] << "\n";
     }
-    close_checked(out, path);
-  }
-
-  void write_vtk(const std::string& path, double time, const Particles<Dim>& particles) const {
-    std::ofstream out(path);
-    const int count = particles.size();
-    out << std::setprecision(12) << "# vtk DataFile Version 3.0\n" << scene_.title << " t = " << time
-        << "\nASCII\nDATASET POLYDATA\nPOINTS " << count << " double\n";
-    for (int p = 0; p < count; ++p) {
-      const auto& x = particles.position[p];
-      out << x[0] << " " << (Dim == 2 ? x[Dim - 1] : 0.0) << " 0\n";
-    }
-    out << "VERTICES " << count << " " << 2 * count << "\n";
-    for (int p = 0; p < count; ++p) out << "1 " << p << "\n";
-    out << "POINT_DATA " << count << "\nVECTORS velocity double\n";
-    for (int p = 0; p < count; ++p) {
-      const auto& v = particles.velocity[p];
-      out << v[0] << " " << (Dim == 2 ? v[Dim - 1] : 0.0) << " 0\n";
-    }
-    out << "TENSORS stress double\n";
-    for (int p = 0; p < count; ++p) {
-      const auto& s = particles.stress[p];
-      const double xy = Dim == 2 ? s(0, Dim - 1) : 0.0, yy = Dim == 2 ? s(Dim - 1, Dim - 1) : 0.0;
-      out << s(0, 0) << " " << xy << " 0\n" << xy << " " << yy << " 0\n0 0 " << particles.stress_zz[p] << "\n";
-    }
-    out << "SCALARS density double 1\nLOOKUP_TABLE default\n";
-    for (int p = 0; p < count; ++p) out << particles.density[p] << "\n";
-    out << "SCALARS id int 1\nLOOKUP_TABLE default\n";
-    for (int p = 0; p < count; ++p) out << particles.id[p] << "\n";
-    close_checked(out, path);
+    out.close();
   }
 
   std::string folder_;
   const Scene& scene_;
   std::vector<int> observed_;
-  std::ofstream observers_, energy_;
+  OutputFile observers_, energy_;
   PvdCollection collection_;
   bool show_progress_;
   std::chrono::steady_clock::time_point last_progress_{};
@@ -188,21 +142,6 @@ struct RunIdentity {
   std::vector<std::string> command_line;
   std::vector<ObservedParticle> observed;
 };
-
-/// `text` as a JSON string, quoted and escaped.
-inline std::string json_string(const std::string& text) {
-  std::string json = "\"";
-  for (unsigned char character : text) {
-    if (character == '"' || character == '\\') json += std::string("\\") + static_cast<char>(character);
-    else if (character == '\n') json += "\\n";
-    else if (character < 0x20 || character == 0x7f) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", character);
-      json += escaped;
-    } else json += static_cast<char>(character);
-  }
-  return json + "\"";
-}
 
 /// The unit of every column of the CSV files a run writes (NAME: any observer's name), SI. Energies and
 /// momentum are per unit cross-section area in 1D (the bar) and per unit thickness in 2D (plane strain).
@@ -234,74 +173,89 @@ inline std::vector<std::pair<std::string, std::string>> column_units(int dimensi
 /// The unit of every field of run.json but the scene (whose keys' units are "scene_units").
 inline const std::vector<std::pair<std::string, std::string>>& run_json_units() {
   static const std::vector<std::pair<std::string, std::string>> units{
-      {"status", "-"}, {"version", "-"}, {"command_line", "-"}, {"observed", "reference_position: m"}, {"particles", "-"}, {"steps", "-"}, {"final_time", "s"},
+      {"status", "running | done | failed | interrupted"}, {"failure", "-"}, {"version", "-"}, {"command_line", "-"}, {"observed", "reference_position: m"}, {"particles", "-"}, {"steps", "-"}, {"final_time", "s"},
       {"smallest_time_step", "s"}, {"largest_time_step", "s"}, {"wall_seconds", "s"}, {"particle_steps_per_second", "1/s"},
       {"largest_mass_error", "- (relative)"}, {"neighbours_mean", "nodes"}, {"neighbours_max", "nodes"},
       {"newton_iterations_mean", "-"}, {"newton_iterations_max", "-"}, {"threads", "-"}, {"phase_seconds", "s"}};
   return units;
 }
 
-/// run.json: the version and command line, the resolved scene, the run's numbers, and the unit of each
-/// (its fields, the scene's keys, the CSV files' columns). \throws OutputFailure if it cannot be written.
-inline void write_run_json(const std::string& path, const Scene& scene, const RunSummary& summary,
-                           const std::string& status, int particle_count, const RunIdentity& identity = {}) {
-  std::ofstream out(path);
-  out << std::setprecision(12) << "{\n"
-      << "  \"status\": " << json_string(status) << ",\n"
-      << "  \"version\": " << json_string(identity.version) << ",\n"
-      << "  \"command_line\": [";
-  for (size_t k = 0; k < identity.command_line.size(); ++k) out << (k ? ", " : "") << json_string(identity.command_line[k]);
-  out << "],\n  \"observed\": [";
-  for (size_t k = 0; k < identity.observed.size(); ++k) {
-    const ObservedParticle& observed = identity.observed[k];
-    out << (k ? ", " : "") << "{\"name\": " << json_string(observed.name) << ", \"particle\": " << observed.particle
-        << ", \"reference_position\": [";
-    for (size_t axis = 0; axis < observed.reference_position.size(); ++axis) out << (axis ? ", " : "") << observed.reference_position[axis];
-    out << "]}";
+/// What run.json says of its run: written first as running, rewritten at the end as one of the others.
+enum class RunState { running, done, failed, interrupted };
+
+inline const char* run_state_name(RunState state) {
+  switch (state) {
+    case RunState::running: return "running";
+    case RunState::done: return "done";
+    case RunState::failed: return "failed";
+    case RunState::interrupted: return "interrupted";
   }
-  out << "],\n"
-      << "  \"scene\": " << resolved_json(scene) << ",\n"
-      << "  \"particles\": " << particle_count << ",\n"
-      << "  \"steps\": " << summary.steps << ",\n"
-      << "  \"final_time\": " << summary.final_time << ",\n"
-      << "  \"smallest_time_step\": " << summary.smallest_time_step << ",\n"
-      << "  \"largest_time_step\": " << summary.largest_time_step << ",\n"
-      << "  \"wall_seconds\": " << summary.wall_seconds << ",\n"
-      << "  \"particle_steps_per_second\": " << summary.particle_steps_per_second << ",\n"
-      << "  \"largest_mass_error\": " << summary.largest_mass_error << ",\n"
-      << "  \"neighbours_mean\": " << summary.shape.neighbours_mean() << ",\n"
-      << "  \"neighbours_max\": " << summary.shape.neighbours_max() << ",\n"
-      << "  \"newton_iterations_mean\": " << summary.shape.newton_iterations_mean() << ",\n"
-      << "  \"newton_iterations_max\": " << summary.shape.newton_iterations_max() << ",\n"
-      << "  \"threads\": " << summary.threads << ",\n"
-      << "  \"phase_seconds\": {";
-  for (int phase = 0; phase < phase_count; ++phase)
-    out << (phase ? ", " : "") << "\"" << phase_name(phase) << "\": " << summary.phase_seconds[phase];
-  out << "},\n  \"units\": {";
-  for (size_t k = 0; k < run_json_units().size(); ++k)
-    out << (k ? ", " : "") << json_string(run_json_units()[k].first) << ": " << json_string(run_json_units()[k].second);
-  out << "},\n  \"scene_units\": {";
-  for (size_t k = 0; k < scene_keys().size(); ++k)
-    out << (k ? ", " : "") << json_string(scene_keys()[k].key) << ": " << json_string(scene_keys()[k].unit);
-  out << "},\n  \"column_units\": {";
-  const auto columns = column_units(scene.dimension);
-  for (size_t k = 0; k < columns.size(); ++k) out << (k ? ", " : "") << json_string(columns[k].first) << ": " << json_string(columns[k].second);
-  out << "}\n"
-      << "}\n";
-  close_checked(out, path);
+  return "failed";
 }
 
-TEST_CASE("run.json: strings escaped, every field written has its unit") {
-  CHECK(json_string("failed: \"x\"\n\\") == "\"failed: \\\"x\\\"\\n\\\\\"");
-  CHECK(json_string(std::string("a\tb")) == "\"a\\u0009b\"");
+/// run.json's members of one kind (name, unit) as an object.
+inline void write_units(JsonWriter& json, const std::vector<std::pair<std::string, std::string>>& units) {
+  json.begin_object();
+  for (const auto& [name, unit] : units) json.key(name).value(unit);
+  json.end_object();
+}
+
+/// run.json's numbers: the summary of what the run did (zeros while it runs).
+inline void write_summary(JsonWriter& json, const RunSummary& summary, int particle_count) {
+  json.key("particles").value(particle_count).key("steps").value(summary.steps).key("final_time").value(summary.final_time);
+  json.key("smallest_time_step").value(summary.smallest_time_step).key("largest_time_step").value(summary.largest_time_step);
+  json.key("wall_seconds").value(summary.wall_seconds).key("particle_steps_per_second").value(summary.particle_steps_per_second);
+  json.key("largest_mass_error").value(summary.largest_mass_error);
+  json.key("neighbours_mean").value(summary.shape.neighbours_mean()).key("neighbours_max").value(summary.shape.neighbours_max());
+  json.key("newton_iterations_mean").value(summary.shape.newton_iterations_mean());
+  json.key("newton_iterations_max").value(summary.shape.newton_iterations_max());
+  json.key("threads").value(summary.threads).key("phase_seconds").begin_object();
+  for (int phase = 0; phase < phase_count; ++phase) json.key(phase_name(phase)).value(summary.phase_seconds[phase]);
+  json.end_object();
+}
+
+/// run.json: the status (and the failure, or null), the version and command line, the resolved scene, the
+/// run's numbers, and the unit of each (its fields, the scene's keys, the CSV files' columns). Written
+/// atomically: a reader sees the previous run.json or this one whole. \throws OutputFailure.
+inline void write_run_json(const std::string& path, const Scene& scene, const RunSummary& summary, RunState state,
+                           const std::string& failure, int particle_count, const RunIdentity& identity = {}) {
+  OutputFile out(path, OutputFile::Mode::atomic);
+  JsonWriter json(out);
+  json.begin_object().key("status").value(run_state_name(state)).key("failure");
+  if (failure.empty()) json.raw("null");
+  else json.value(failure);
+  json.key("version").value(identity.version).key("command_line").array(identity.command_line).key("observed").begin_array();
+  for (const ObservedParticle& observed : identity.observed) {
+    json.begin_object().key("name").value(observed.name).key("particle").value(observed.particle);
+    json.key("reference_position").array(observed.reference_position).end_object();
+  }
+  json.end_array().key("scene").raw(resolved_json(scene));
+  write_summary(json, summary, particle_count);
+  json.key("units");
+  write_units(json, run_json_units());
+  std::vector<std::pair<std::string, std::string>> scene_units;
+  for (const SceneKey& key : scene_keys()) scene_units.emplace_back(key.key, key.unit);
+  json.key("scene_units");
+  write_units(json, scene_units);
+  json.key("column_units");
+  write_units(json, column_units(scene.dimension));
+  json.end_object();
+  out.close();
+}
+
+TEST_CASE("run.json: its status and failure, strings escaped, every field written has its unit") {
   const std::string path = (std::filesystem::temp_directory_path() / ("mpm_run_json_" + std::to_string(getpid()) + ".json")).string();
   Scene scene;
   scene.dimension = 2;
-  write_run_json(path, scene, RunSummary{}, "done", 3, {"1.2.3", {"mpm", "run", "it's \"here\""}, {{"A", 7, {0.5, 1.5}}}});
+  RunSummary summary;
+  summary.smallest_time_step = std::numeric_limits<double>::infinity();  // no step taken yet
+  write_run_json(path, scene, summary, RunState::interrupted, "SIGTERM", 3,
+                 {"1.2.3", {"mpm", "run", "it's \"here\""}, {{"A", 7, {0.5, 1.5}}}});
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::remove(path.c_str());
-  CHECK(text.find("\"version\": \"1.2.3\"") != std::string::npos);
+  CHECK(text.find("{\n  \"status\": \"interrupted\",\n  \"failure\": \"SIGTERM\",\n  \"version\": \"1.2.3\"") == 0);
+  CHECK(text.find("\"smallest_time_step\": null") != std::string::npos);  // inf (no step yet) is not JSON
   CHECK(text.find("\"observed\": [{\"name\": \"A\", \"particle\": 7, \"reference_position\": [0.5, 1.5]}]") != std::string::npos);
   CHECK(text.find("\"command_line\": [\"mpm\", \"run\", \"it's \\\"here\\\"\"]") != std::string::npos);
   // every top-level field of run.json (a line `  "name": `) but the unit tables and the scene is in run_json_units

@@ -4,6 +4,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "mpm/exact/manufactured.hpp"
 
@@ -106,6 +107,20 @@ Model<Dim> build_model(const Scene& scene) {
   return model;
 }
 
+/// uGIMP needs each particle's half-length l_p in (0, h] (mpm/shape/ugimp.hpp); a seeded body's particles
+/// always fit, a file's may not. \throws SceneError located at the particle's row of the file.
+inline void check_file_particle_for_ugimp(const Scene& scene, const BodySettings& body, const FileParticle& particle,
+                                          double half_length) {
+  if (scene.shape != "ugimp" || half_length / scene.spacing <= 1.0) return;  // as UgimpShape::set_half_length tests it
+  namespace fs = std::filesystem;
+  const fs::path path = fs::path(body.file).is_absolute() ? fs::path(body.file) : fs::path(scene.file).parent_path() / body.file;
+  std::ostringstream message;
+  message << "the particle's half-length l_p = V^(1/" << scene.dimension << ") / 2 = " << half_length
+          << " m exceeds the cell size h = " << scene.spacing
+          << " m; uGIMP needs 0 < l_p <= h: give smaller particles, a coarser grid, or another shape";
+  throw SceneError(path.string(), particle.line, "volume", message.str());
+}
+
 template <int Dim>
 Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
   Particles<Dim> particles;
@@ -119,6 +134,7 @@ Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
         Vector<Dim> x, v;
         for (int axis = 0; axis < Dim; ++axis) x[axis] = position[axis], v[axis] = velocity[axis];
         const double half = 0.5 * std::pow(particle.mass / density, 1.0 / Dim);
+        check_file_particle_for_ugimp(scene, body, particle, half);
         particles.add(x, particle.mass, density, v, Vector<Dim>::Constant(half), material);
       }
       continue;

@@ -2,25 +2,25 @@
 /// Snapshots as a ParaView time series: each snapshot as a VTK XML PolyData file (snapshot_NNNN.vtp)
 /// and one collection, snapshots.pvd, listing every file with its physical time. ParaView reads a
 /// .pvd's DataSets only in the XML formats (its collection reader picks the reader by the extension
-/// .vtp, .vtu, ...), which is why the legacy .vtk snapshots are not listed in it. The collection is
+/// .vtp, .vtu, ...). The collection is
 /// a VTKFile of type "Collection" with one DataSet element per snapshot, whose attributes are the
 /// physical time (`timestep="0.0001"`) and the file (`file="snapshot_0001.vtp"`).
 #pragma once
-#include <fstream>
 #include <iomanip>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "mpm/io/output_file.hpp"
 #include "mpm/particles/particles.hpp"
 
 namespace mpm::io {
 
 /// Writes every particle as a vertex of a VTK XML PolyData file (ASCII), with its velocity, stress
-/// (3x3, plane strain sigma_zz included), density and id. Returns false if the file cannot be written.
+/// (3x3, plane strain sigma_zz included), density and id. \throws OutputFailure if it cannot be written.
 template <int Dim>
-bool write_vtp(const std::string& path, const Particles<Dim>& particles) {
-  std::ofstream out(path);
+void write_vtp(const std::string& path, const Particles<Dim>& particles) {
+  OutputFile out(path);
   const int count = particles.size();
   out << std::setprecision(12) << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n"
@@ -53,26 +53,25 @@ bool write_vtp(const std::string& path, const Particles<Dim>& particles) {
   for (int p = 0; p < count; ++p) out << p + 1 << "\n";
   out << "</DataArray>\n</Verts>\n</Piece>\n</PolyData>\n</VTKFile>\n";
   out.close();
-  return static_cast<bool>(out);
 }
 
-/// The .pvd collection of a run's snapshots. It is rewritten whole after every snapshot, so a run
-/// that fails half-way leaves a valid collection of what it wrote.
+/// The .pvd collection of a run's snapshots. It is rewritten whole (atomically) after every snapshot, so a
+/// run that fails or is stopped half-way leaves a valid collection of what it wrote.
 class PvdCollection {
  public:
   explicit PvdCollection(std::string path) : path_(std::move(path)) {}
 
   /// Adds `file` (relative to the .pvd's folder) at physical time `time` and rewrites the collection.
-  bool add(double time, const std::string& file) {
+  /// \throws OutputFailure if it cannot be written.
+  void add(double time, const std::string& file) {
     entries_.emplace_back(time, file);
-    std::ofstream out(path_);
+    OutputFile out(path_, OutputFile::Mode::atomic);
     out << std::setprecision(17) << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n<Collection>\n";
     for (const auto& [entry_time, entry_file] : entries_)
       out << "  <DataSet timestep=\"" << entry_time << "\" group=\"\" part=\"0\" file=\"" << entry_file << "\"/>\n";
     out << "</Collection>\n</VTKFile>\n";
     out.close();
-    return static_cast<bool>(out);
   }
 
  private:
