@@ -95,16 +95,16 @@ bad "^error: --set\(1\):1: observer\[0\]\.position: lies outside the grid" run "
 bad "^error: .*dyka_bar.toml:[0-9]+: solver\.end_time: end_time / dt = .* more than the limit of 100;.*--force" run "$scene" --out "$work/a" --max-steps 100
 bad "^error: .*dyka_bar.toml:[0-9]+: grid\.cells: the scene needs 40 particles.*the limit is 10 KiB \(--max-memory\)" run "$scene" --out "$work/a" --max-memory 10K
 bad "^error: --max-memory: 'lots' is not a size" run "$scene" --out "$work/a" --max-memory lots
-bad "^error: --max-steps: 'nan' is not a number" run "$scene" --out "$work/a" --max-steps nan
-bad "^error: --out: empty" run "$scene" --out ""
+bad "^error: --max-steps: must be a number in \[1, .*got 'nan'" run "$scene" --out "$work/a" --max-steps nan
+bad "^error: --out: must not be empty" run "$scene" --out ""
 bad "^error: $work:0: \(file\): is a directory" run "$work" --out "$work/a"
 bad "^error: --at: coordinates must lie within" shape --dim 1 --kind linear --at 1e300
 bad "^error: --at: 'nan' is not" shape --dim 1 --kind linear --at nan
-bad "^error: --dim: must be 1 or 2, got '2x'" shape --dim 2x --kind linear --at 0.5,0.5
+bad "^error: --dim: must be a whole number from 1 to 2, got '2x'" shape --dim 2x --kind linear --at 0.5,0.5
 bad "^error: --at: '0.5,' is not" shape --dim 1 --kind linear --at 0.5,
 # mpm stability: every option validated before anything is computed, the option named
 bad "^error: --newmark-gamma: must be a number in \[0, 1\], got '1.5'" stability --integrator npc --newmark-gamma 1.5
-bad "^error: --shape: must be linear, ugimp, lme, bspline2 or bspline3, got 'cubic'" stability --shape cubic
+bad "^error: --shape: must be one of linear \| ugimp \| lme \| bspline2 \| bspline3, got 'cubic'" stability --shape cubic
 bad "^error: --ppc: must be a whole number from 1 to 4, got '2.5'" stability --ppc 2.5
 bad "^error: --cells: the body would have 1008 unknowns, more than 1000" stability --dim 2 --cells 12
 bad "^error: --flip-fraction: must be a number in \[0, 1\], got 'nan'" stability --flip-fraction nan

@@ -27,7 +27,7 @@ for command in "--help" "run --help" "shape --help" "plot --help" "help run"; do
   # shellcheck disable=SC2086
   expect 0 -- $command
   grep -q "^Exit codes:" "$work/out" || fail "mpm $command: no exit codes"
-  grep -q "^usage: mpm" "$work/out" || fail "mpm $command: no usage"
+  grep -qi "^usage: mpm" "$work/out" || fail "mpm $command: no usage"
 done
 expect 0 -- run "$scene" --help
 grep -qE "^  solver\.cfl +0\.5 +- " "$work/out" || fail "mpm run --help: no solver.cfl with its default 0.5"

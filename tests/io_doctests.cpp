@@ -19,3 +19,4 @@
 #include "mpm/io/output_file.hpp"
 #include "mpm/io/run_folder.hpp"
 #include "mpm/io/run_writer.hpp"
+#include "mpm/cli/options.hpp"

@@ -67,80 +67,6 @@ const char* usage =
     "       mpm stability [--shape S] [--integrator I] [--newmark-gamma G] [--npc-velocity V] [--ppc N] [--lme-gamma G] [--dim D]\n"
     "       mpm --version | mpm --help | mpm COMMAND --help\n";
 
-/// Reads `mpm run`'s options into `request`; returns 0, or 2 after a message.
-int read_run_options(const std::vector<std::string>& arguments, mpm::cli::RunRequest& request) {
-  std::string& scene_path = request.scene_path;
-  std::string& folder = request.folder;
-  bool folder_given = false;
-  std::vector<std::string>& overrides = request.overrides;
-  bool& print_scene = request.print_scene;
-  mpm::io::Budget& budget = request.budget;
-  int& threads = request.threads;
-  for (size_t k = 0; k < arguments.size(); ++k) {
-    const std::string& argument = arguments[k];
-    if ((argument == "--out" || argument == "--set" || argument == "--threads" || argument == "--max-memory" ||
-         argument == "--max-steps") &&
-        k + 1 >= arguments.size()) {
-      std::cerr << "error: " << argument << ": needs a value\n" << usage;
-      return 2;
-    }
-    if (argument == "--out") {
-      folder = arguments[++k];
-      folder_given = true;
-    } else if (argument == "--max-memory") {
-      const auto bytes = mpm::io::parse_byte_size(arguments[++k]);
-      if (!bytes) {
-        std::cerr << "error: --max-memory: '" << arguments[k] << "' is not a size; give bytes or <n>K, <n>M, <n>G, <n>T\n";
-        return 2;
-      }
-      budget.max_bytes = *bytes;
-    } else if (argument == "--max-steps") {
-      const std::string& text = arguments[++k];
-      std::size_t end = 0;
-      try {
-        budget.max_steps = std::stod(text, &end);
-      } catch (const std::exception&) {
-        end = 0;
-      }
-      if (end != text.size() || !(budget.max_steps >= 1.0) || !std::isfinite(budget.max_steps)) {
-        std::cerr << "error: --max-steps: '" << text << "' is not a number >= 1\n";
-        return 2;
-      }
-    } else if (argument == "--force") {
-      budget.force = true;
-    } else if (argument == "--threads") {
-      const std::string value = arguments[++k];
-      if (value.empty() || value.size() > 4 || value.find_first_not_of("0123456789") != std::string::npos ||
-          std::stoi(value) < 1) {
-        std::cerr << "error: --threads: expected a whole number of cores >= 1, got '" << value << "'\n" << usage;
-        return 2;
-      }
-      threads = std::stoi(value);
-    } else if (argument == "--set") {
-      overrides.push_back(arguments[++k]);
-    } else if (argument == "--print-scene") {
-      print_scene = true;
-    } else if (argument.rfind("--set=", 0) == 0) {
-      overrides.push_back(argument.substr(6));
-    } else if (argument.rfind("--", 0) == 0 || !scene_path.empty()) {
-      std::cerr << "error: " << argument << ": unknown option\n" << usage;
-      return 2;
-    } else {
-      scene_path = argument;
-    }
-  }
-  if (scene_path.empty()) {
-    std::cerr << "error: run: no scene file given\n" << usage;
-    return 2;
-  }
-  if (folder_given && folder.empty()) {
-    std::cerr << "error: --out: empty; give a folder, or leave --out out for runs/<scene name>\n";
-    return 2;
-  }
-  if (folder.empty()) folder = "runs/" + std::filesystem::path(scene_path).stem().string();
-  return 0;
-}
-
 /// Standard output flushed and closed: a full disk or a closed pipe shows here, after the command said
 /// everything (exit 3 in place of 0, and of compare's 1).
 int check_standard_output(int code) {
@@ -161,8 +87,8 @@ int dispatch(const std::vector<std::string>& arguments, const mpm::io::RunIdenti
   if (arguments[0] == "run") {
     mpm::cli::RunRequest request;
     request.identity = identity;
-    const int code = read_run_options(rest, request);
-    return code != 0 ? code : mpm::cli::run_command(request);
+    const auto code = mpm::cli::read_run_options(rest, request, std::cout, std::cerr);
+    return code ? *code : mpm::cli::run_command(request);
   }
   std::cerr << "error: " << arguments[0] << ": unknown command\n" << usage;
   return 2;

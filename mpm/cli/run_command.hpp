@@ -16,10 +16,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "mpm/cli/options.hpp"
 #include "mpm/io/exact_series.hpp"
 #include "mpm/io/run_folder.hpp"
 #include "mpm/io/run_writer.hpp"
@@ -151,6 +154,53 @@ int run_scene(io::Scene scene, RunRequest request) {
     std::cerr << failure.message() << "\n";
     return 3;
   }
+}
+
+/// `mpm run`'s parser, its options bound to `request`.
+inline std::unique_ptr<CommandParser> run_parser(RunRequest& request) {
+  auto app = std::make_unique<CommandParser>(
+      "run",
+      "Runs a scene and writes observers.csv, energy.csv, exact.csv (when the scene names an exact solution),\n"
+      "snapshot_NNNN.csv/.vtp, snapshots.pvd (ParaView time series) and run.json into its folder; run.json says\n"
+      "\"running\", then \"done\", \"failed\" or \"interrupted\". Files of an earlier run there are removed first.\n"
+      "Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.");
+  app->add_option("scene", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
+  app->add_option("--out", request.folder, "output folder (default runs/<scene file name>)")
+      ->check(CLI::Validator([](const std::string& text) { return text.empty() ? "must not be empty" : ""; }, "DIR"));
+  app->add_option("--set", request.overrides,
+                  "overrides a scene key with a TOML value: --set solver.cfl=0.2, --set 'solver.shape=\"lme\"',\n"
+                  "--set grid.cells=[160], --set 'body[0].max=[1.0]'; repeat for more")
+      ->allow_extra_args(false);
+  app->add_option("--threads", request.threads, "cores to run on (0: all; the results are the same bits on any number)")
+      ->check(whole_in(0, 4096));
+  app->add_flag("--print-scene", request.print_scene, "prints the resolved scene (every key, defaults filled in) and exits");
+  app->add_option("--max-memory", request.budget.max_bytes, "refuse a scene whose estimated memory exceeds SIZE: bytes or <n>K, <n>M, <n>G (0: half the machine's)")
+      ->transform(CLI::Validator(
+          [](std::string& text) -> std::string {
+            const auto bytes = io::parse_byte_size(text);
+            if (!bytes) return "'" + text + "' is not a size; give bytes or <n>K, <n>M, <n>G, <n>T";
+            text = std::to_string(*bytes);
+            return "";
+          },
+          "SIZE"));
+  app->add_option("--max-steps", request.budget.max_steps, "refuse a scene whose end_time / dt at t = 0 exceeds N")
+      ->check(number_in(1.0, 1e300));
+  app->add_flag("--force", request.budget.force, "run even beyond --max-steps");
+  return app;
+}
+
+/// `mpm run --help`: the parser's own help.
+inline std::string run_usage() {
+  RunRequest request;
+  return run_parser(request)->help();
+}
+
+/// Reads `mpm run`'s arguments into `request`. Returns nullopt when the run should go on, else the exit code.
+inline std::optional<int> read_run_options(const std::vector<std::string>& arguments, RunRequest& request, std::ostream& out,
+                                           std::ostream& err) {
+  if (const auto code = parse_arguments(*run_parser(request), arguments, "run", out, err)) return code;
+  if (request.folder.empty()) request.folder = "runs/" + std::filesystem::path(request.scene_path).stem().string();
+  return std::nullopt;
 }
 
 /// `mpm run` once its options are read. Returns the exit code.

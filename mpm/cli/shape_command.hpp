@@ -12,12 +12,13 @@
 
 #include <cmath>
 #include <iomanip>
+#include <memory>
 #include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "mpm/cli/parse_number.hpp"
+#include "mpm/cli/options.hpp"
 
 #include "mpm/shape/bspline.hpp"
 #include "mpm/shape/lme.hpp"
@@ -103,59 +104,64 @@ void evaluate_request(const ShapeRequest& request, std::ostream& out) {
   }
 }
 
+/// `mpm shape`'s parser, its options bound to `request` and to `points` (each --at as written).
+inline std::unique_ptr<CommandParser> shape_parser(ShapeRequest& request, std::vector<std::string>& points) {
+  auto app = std::make_unique<CommandParser>(
+      "shape",
+      "Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of the cell size) and prints\n"
+      "CSV, one row per node of each point's stencil: point,node_x[,node_y],N,dN_dx[,dN_dy]; point counts the --at from 0.");
+  app->add_option("--dim", request.dimension, "dimension")->check(whole_in(1, 2));
+  app->add_option("--kind", request.kind, "shape function")->required()->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
+  app->add_option("--at", points, "a point X (1D) or X,Y (2D); repeat for more")->required()->allow_extra_args(false);
+  app->add_option("--gamma", request.gamma, "LME locality gamma, <= -ln(tol)/dim")->check(positive());
+  app->add_option("--cell-size", request.cell_size, "cell size h")->check(positive());
+  app->add_option("--particle-size", request.particle_size, "uGIMP particle length 2 l_p, <= h (-1: h/2)")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            const auto number = parse_number(text);
+            return number && (*number > 0.0 || *number == -1.0) ? "" : "must be a number > 0, got '" + text + "'";
+          },
+          "NUMBER > 0"));
+  app->add_option("--tol", request.tolerance, "LME support tolerance")->check(number_in(0.0, 1.0, true));
+  return app;
+}
+
+/// `mpm shape --help`: the parser's own help.
+inline std::string shape_usage() {
+  ShapeRequest request;
+  std::vector<std::string> points;
+  return shape_parser(request, points)->help();
+}
+
+/// "X" or "X,Y" as numbers; false if a part is not a finite number ("0.5," is refused: every comma separates two).
+inline bool read_point(const std::string& text, std::vector<double>& point) {
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    const auto coordinate = parse_number(text.substr(start, comma - start));
+    if (!coordinate) return false;
+    point.push_back(*coordinate);
+    if (comma == std::string::npos) return true;
+    start = comma + 1;
+  }
+}
+
 /// Parses the options and prints the CSV; returns the exit code (2 with a message on bad input).
 inline int shape_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   ShapeRequest request;
+  std::vector<std::string> points;
+  if (const auto code = parse_arguments(*shape_parser(request, points), arguments, "shape", out, err)) return *code;
   auto fail = [&](const std::string& option, const std::string& what) {
     err << "error: " << option << ": " << what << "\n";
     return 2;
   };
-  // A number is the whole of its text and finite: "2x", "0.5," and "nan" are not numbers.
-  auto read_number = [](const std::string& text, double& number) {
-    const auto parsed = parse_number(text);
-    if (parsed) number = *parsed;
-    return parsed.has_value();
-  };
-  for (size_t k = 0; k < arguments.size(); ++k) {
-    const std::string& option = arguments[k];
-    if (k + 1 >= arguments.size()) return fail(option, "needs a value");
-    const std::string value = arguments[++k];
-    const auto not_a_number = "'" + value + "' is not a finite number";
-    if (option == "--dim") {
-      if (value != "1" && value != "2") return fail(option, "must be 1 or 2, got '" + value + "'");
-      request.dimension = value == "1" ? 1 : 2;
-    } else if (option == "--kind") {
-      request.kind = value;
-    } else if (option == "--gamma") {
-      if (!read_number(value, request.gamma)) return fail(option, not_a_number);
-    } else if (option == "--cell-size") {
-      if (!read_number(value, request.cell_size)) return fail(option, not_a_number);
-    } else if (option == "--particle-size") {
-      if (!read_number(value, request.particle_size)) return fail(option, not_a_number);
-    } else if (option == "--tol") {
-      if (!read_number(value, request.tolerance)) return fail(option, not_a_number);
-    } else if (option == "--at") {
-      std::vector<double> point;
-      for (std::size_t start = 0;;) {  // every comma separates two numbers: "0.5," is refused
-        const std::size_t comma = value.find(',', start);
-        double coordinate = 0.0;
-        if (!read_number(value.substr(start, comma - start), coordinate))
-          return fail(option, "'" + value + "' is not X or X,Y of finite numbers");
-        point.push_back(coordinate);
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-      }
-      request.points.push_back(point);
-    } else {
-      return fail(option, "unknown option; allowed: --dim --kind --gamma --cell-size --particle-size --tol --at");
-    }
+  for (const std::string& text : points) {
+    request.points.emplace_back();
+    if (!read_point(text, request.points.back())) return fail("--at", "'" + text + "' is not X or X,Y of finite numbers");
   }
   if (request.dimension != 1 && request.dimension != 2) return fail("--dim", "must be 1 or 2");
   if (request.kind != "linear" && request.kind != "ugimp" && request.kind != "lme" && request.kind != "bspline2" && request.kind != "bspline3")
     return fail("--kind", "must be linear, ugimp, lme, bspline2 or bspline3");
-  if (!(request.cell_size > 0.0)) return fail("--cell-size", "must be > 0");
-  if (!(request.gamma > 0.0)) return fail("--gamma", "must be > 0");
-  if (!(request.tolerance > 0.0 && request.tolerance < 1.0)) return fail("--tol", "must be in (0, 1)");
+  if (!(request.tolerance > 0.0)) return fail("--tol", "must be in (0, 1)");
   if (request.kind == "lme" && request.gamma > -std::log(request.tolerance) / request.dimension)
     return fail("--gamma", "too large for --tol: the support must reach the corners of a cell, gamma <= -ln(tol)/dim");
   if (request.kind == "ugimp" && request.particle_size > request.cell_size)

@@ -10,12 +10,13 @@
 
 #include <cmath>
 #include <iomanip>
+#include <memory>
 #include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "mpm/cli/parse_number.hpp"
+#include "mpm/cli/options.hpp"
 
 #include "mpm/stability.hpp"
 
@@ -27,93 +28,51 @@ struct StabilityRequest {
   double newmark_gamma = 0.5, lme_gamma = 3.0, flip_fraction = 1.0, poisson_ratio = 0.0;
 };
 
+/// Declares every option of `mpm stability`, bound to `request` (whose members hold the defaults).
+inline void declare_stability_options(CLI::App& app, StabilityRequest& request) {
+  app.add_option("--shape", request.shape, "shape function")->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
+  app.add_option("--integrator", request.integrator, "fe (forward Euler) | npc (the predictor-corrector)")->check(one_of({"fe", "npc"}));
+  app.add_option("--newmark-gamma", request.newmark_gamma, "Newmark gamma of npc")->check(number_in(0.0, 1.0));
+  app.add_option("--npc-velocity", request.npc_velocity, "npc's particle velocity: Eq. (32) or the Newmark average")
+      ->check(one_of({"eq32", "average"}));
+  app.add_option("--flip-fraction", request.flip_fraction, "forward Euler's PIC/FLIP blend")->check(number_in(0.0, 1.0));
+  app.add_option("--stress-update", request.stress_update, "forward Euler's stress update")->check(one_of({"usf", "usl", "musl"}));
+  app.add_option("--ppc", request.ppc, "particles per cell and axis")->check(whole_in(1, 4));
+  app.add_option("--lme-gamma", request.lme_gamma, "LME locality gamma")->check(positive());
+  app.add_option("--dim", request.dimension, "dimension")->check(whole_in(1, 2));
+  app.add_option("--poisson-ratio", request.poisson_ratio, "plane strain")->check(number_in(0.0, 0.5, true));
+  app.add_option("--cells", request.cells,
+                 "cells per axis, at most 1000 unknowns in all (0: max(16, 64 / ppc) in 1D, max(4, 8 / ppc) in 2D)")
+      ->check(whole_in(0, 256));
+}
+
+/// `mpm stability`'s parser, its options bound to `request`.
+inline std::unique_ptr<CommandParser> stability_parser(StabilityRequest& request) {
+  auto app = std::make_unique<CommandParser>("stability",
+                    "Prints CSV with the largest stable CFL (Eq. 42, c = sqrt(E / rho)) of a method: cfl_limit, from the spectral\n"
+                    "radius of the code's own step linearised about rest on a uniform bar (1D) or square (2D) held at its walls,\n"
+                    "and cfl_limit_from_modes, the one-mode analysis (2 for forward Euler and the Newmark average, 2/sqrt(3 - 2 gamma)\n"
+                    "for Eq. 32) divided by the body's highest mode omega_max h / c (highest_mode); inf when no CFL up to 1000\n"
+                    "is unstable.");
+  declare_stability_options(*app, request);
+  return app;
+}
+
+/// `mpm stability --help`: the parser's own help.
 inline std::string stability_usage() {
-  const StabilityRequest defaults;
-  std::ostringstream out;
-  out << "usage: mpm stability [--shape linear|ugimp|lme|bspline2|bspline3] [--integrator fe|npc] [--newmark-gamma G]\n"
-         "                     [--npc-velocity eq32|average] [--flip-fraction A] [--ppc N] [--lme-gamma G]\n"
-         "                     [--dim 1|2] [--poisson-ratio NU] [--cells N] [--stress-update usf|usl|musl]\n"
-         "  Prints CSV with the largest stable CFL (Eq. 42, c = sqrt(E / rho)) of a method: cfl_limit, from the spectral\n"
-         "  radius of the code's own step linearised about rest on a uniform bar (1D) or square (2D) held at its walls,\n"
-         "  and cfl_limit_from_modes, the one-mode analysis (2 for forward Euler and the Newmark average, 2/sqrt(3 - 2 gamma)\n"
-         "  for Eq. 32) divided by the body's highest mode omega_max h / c (highest_mode); inf when no CFL up to 1000\n"
-         "  is unstable.\n"
-      << "  --shape S          linear | ugimp | lme | bspline2 | bspline3 (default " << defaults.shape << ")\n"
-      << "  --integrator I     fe | npc (default " << defaults.integrator << ")\n"
-      << "  --newmark-gamma G  Newmark gamma of npc, in [0, 1] (default " << defaults.newmark_gamma << ")\n"
-      << "  --npc-velocity V   eq32 | average (default " << defaults.npc_velocity << ")\n"
-      << "  --flip-fraction A  forward Euler's PIC/FLIP blend, in [0, 1] (default " << defaults.flip_fraction << ")\n"
-      << "  --stress-update U  forward Euler's stress update: usf | usl | musl (default " << defaults.stress_update << ")\n"
-      << "  --ppc N            particles per cell and axis, 1 to 4 (default " << defaults.ppc << ")\n"
-      << "  --lme-gamma G      LME locality gamma (default " << defaults.lme_gamma << ")\n"
-      << "  --dim D            1 or 2 (default " << defaults.dimension << ")\n"
-      << "  --poisson-ratio NU plane strain, in [0, 0.5) (default " << defaults.poisson_ratio << ")\n"
-      << "  --cells N          cells per axis, 4 to 256, at most 1000 unknowns in all (default max(16, 64 / ppc) in 1D,\n"
-         "                     max(4, 8 / ppc) in 2D)\n";
-  return out.str();
+  StabilityRequest request;
+  return stability_parser(request)->help();
 }
 
 /// Parses the options and prints the CSV; returns the exit code (2 with a message naming the option on bad input).
 inline int stability_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   StabilityRequest request;
+  if (const auto code = parse_arguments(*stability_parser(request), arguments, "stability", out, err)) return *code;
   auto fail = [&](const std::string& option, const std::string& what) {
     err << "error: " << option << ": " << what << "\n";
     return 2;
   };
-  auto read_number = [](const std::string& text, double& number) {
-    const auto parsed = parse_number(text);
-    if (parsed) number = *parsed;
-    return parsed.has_value();
-  };
-  auto read_whole = [&](const std::string& text, int& number, int low, int high) {
-    double value = 0.0;
-    if (!read_number(text, value) || value != std::floor(value) || value < low || value > high) return false;
-    number = static_cast<int>(value);
-    return true;
-  };
-  for (size_t k = 0; k < arguments.size(); ++k) {
-    const std::string& option = arguments[k];
-    if (k + 1 >= arguments.size()) return fail(option, "needs a value");
-    const std::string value = arguments[++k];
-    const auto in = [&](double number, double low, double high) { return number >= low && number <= high; };
-    if (option == "--shape") {
-      if (value != "linear" && value != "ugimp" && value != "lme" && value != "bspline2" && value != "bspline3")
-        return fail(option, "must be linear, ugimp, lme, bspline2 or bspline3, got '" + value + "'");
-      request.shape = value;
-    } else if (option == "--integrator") {
-      if (value != "fe" && value != "npc") return fail(option, "must be fe or npc, got '" + value + "'");
-      request.integrator = value;
-    } else if (option == "--npc-velocity") {
-      if (value != "eq32" && value != "average") return fail(option, "must be eq32 or average, got '" + value + "'");
-      request.npc_velocity = value;
-    } else if (option == "--stress-update") {
-      if (value != "usf" && value != "usl" && value != "musl") return fail(option, "must be usf, usl or musl, got '" + value + "'");
-      request.stress_update = value;
-    } else if (option == "--newmark-gamma") {
-      if (!read_number(value, request.newmark_gamma) || !in(request.newmark_gamma, 0.0, 1.0))
-        return fail(option, "must be a number in [0, 1], got '" + value + "'");
-    } else if (option == "--flip-fraction") {
-      if (!read_number(value, request.flip_fraction) || !in(request.flip_fraction, 0.0, 1.0))
-        return fail(option, "must be a number in [0, 1], got '" + value + "'");
-    } else if (option == "--lme-gamma") {
-      if (!read_number(value, request.lme_gamma) || !(request.lme_gamma > 0.0))
-        return fail(option, "must be a number > 0, got '" + value + "'");
-    } else if (option == "--poisson-ratio") {
-      if (!read_number(value, request.poisson_ratio) || !(request.poisson_ratio >= 0.0 && request.poisson_ratio < 0.5))
-        return fail(option, "must be a number in [0, 0.5), got '" + value + "'");
-    } else if (option == "--ppc") {
-      if (!read_whole(value, request.ppc, 1, 4)) return fail(option, "must be a whole number from 1 to 4, got '" + value + "'");
-    } else if (option == "--cells") {
-      if (!read_whole(value, request.cells, 4, 256)) return fail(option, "must be a whole number from 4 to 256, got '" + value + "'");
-    } else if (option == "--dim") {
-      if (value != "1" && value != "2") return fail(option, "must be 1 or 2, got '" + value + "'");
-      request.dimension = value == "1" ? 1 : 2;
-    } else {
-      return fail(option,
-                  "unknown option; allowed: --shape --integrator --newmark-gamma --npc-velocity --flip-fraction --ppc "
-                  "--lme-gamma --dim --poisson-ratio --cells --stress-update");
-    }
-  }
+  if (request.cells != 0 && request.cells < 4) return fail("--cells", "must be 0 (the default) or from 4 to 256");
   if (request.integrator == "npc" && request.stress_update != "usf")
     return fail("--stress-update", "usl and musl are forward Euler's (the predictor-corrector updates stress first): give --integrator fe");
   StabilityBody body;
