@@ -15,3 +15,4 @@
 #include "mpm/io/scene_budget.hpp"
 #include "mpm/io/particle_file.hpp"
 #include "mpm/io/text_lines.hpp"
+#include "mpm/cli/gnuplot.hpp"
