@@ -14,5 +14,5 @@
 #include "mpm/cli/compare_command.hpp"
 #include "mpm/io/scene_budget.hpp"
 #include "mpm/io/particle_file.hpp"
-#include "mpm/io/text_lines.hpp"
+#include "mpm/io/csv_file.hpp"
 #include "mpm/cli/gnuplot.hpp"

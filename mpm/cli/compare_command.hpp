@@ -12,7 +12,8 @@
 /// Exit codes: 0 every rms_normalised <= TOL (or no --tolerance given); 1 one is above TOL; 2 a bad input
 /// (unknown column, unreadable CSV, no exact solution in the scene; one line on stderr, nothing written);
 /// 3 --plot could not be drawn whole (`error: FILE.png: cannot write: ...`; it takes precedence over 1).
-/// The picture is made afresh (never through a symbolic link) by gnuplot, run without a shell (mpm/cli/gnuplot.hpp).
+/// The CSV is read by io::CsvFile (regular files only, a byte-order mark skipped, lines of at most 1 MiB); the
+/// picture is made afresh (never through a symbolic link) by gnuplot, run without a shell (mpm/cli/gnuplot.hpp).
 #pragma once
 #include <doctest/doctest.h>
 #include <unistd.h>
@@ -21,7 +22,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <ostream>
 #include <sstream>
@@ -31,6 +31,7 @@
 #include "mpm/analysis/rms_error.hpp"
 #include "mpm/cli/exact_command.hpp"
 #include "mpm/cli/gnuplot.hpp"
+#include "mpm/io/csv_file.hpp"
 
 namespace mpm::cli {
 
@@ -40,80 +41,44 @@ struct CsvColumns {
   std::map<std::string, std::vector<double>> values;  ///< by column name, one entry per data row
 };
 
-/// Splits a CSV line at commas; each field trimmed of spaces and of one pair of surrounding double quotes.
-inline std::vector<std::string> csv_fields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream stream(line);
-  for (std::string field; std::getline(stream, field, ',');) {
-    const auto start = field.find_first_not_of(" \t"), end = field.find_last_not_of(" \t");
-    field = start == std::string::npos ? "" : field.substr(start, end - start + 1);
-    if (field.size() >= 2 && field.front() == '"' && field.back() == '"') field = field.substr(1, field.size() - 2);
-    fields.push_back(field);
-  }
-  if (!line.empty() && line.back() == ',') fields.push_back("");
-  return fields;
-}
-
-/// Reads the columns `wanted` of the CSV file `path` (header on the first line that is neither blank nor a
-/// # comment). Every data row must have the header's number of fields and a finite number in each column
-/// wanted. Returns an empty header with `error` set ("FILE:LINE: ...") on a problem.
+/// Reads the columns `wanted` of the CSV file `path` (io::CsvFile: header on the first line that is neither
+/// blank nor a # comment). Every data row must have the header's number of fields and a finite number in each
+/// column wanted. Returns an empty header with `error` set ("FILE:LINE: ...") on a problem.
 inline CsvColumns read_csv_columns(const std::string& path, const std::vector<std::string>& wanted, std::string& error) {
+  io::CsvFile file(path);
+  if (!file.read_header()) {
+    error = file.error().empty() ? path + ": empty; a header line and data rows are needed" : file.error();
+    return {};
+  }
   CsvColumns csv;
-  std::error_code code;
-  if (std::filesystem::is_directory(path, code)) {
-    error = path + ": is a folder; give a CSV file";
-    return {};
-  }
-  std::ifstream in(path);
-  if (!in) {
-    error = path + ": cannot be read: no such file, or no permission";
-    return {};
-  }
-  std::vector<int> index(wanted.size(), -1);
-  std::string line;
-  bool too_long = false;
-  int number = 1;
-  for (; io::read_line(in, line, too_long); ++number) {
-    const auto start = line.find_first_not_of(" \t");
-    if (start == std::string::npos || line[start] == '#') continue;
-    const auto fields = csv_fields(line);
-    if (csv.header.empty()) {
-      csv.header = fields;
-      for (size_t k = 0; k < wanted.size(); ++k) {
-        const auto found = std::find(fields.begin(), fields.end(), wanted[k]);
-        if (found == fields.end()) {
-          std::string names;
-          for (const auto& name : fields) names += (names.empty() ? "" : ", ") + name;
-          error = path + ":" + std::to_string(number) + ": no column '" + wanted[k] + "' in the header (" + names + ")";
-          return {};
-        }
-        index[k] = static_cast<int>(found - fields.begin());
-      }
-      continue;
-    }
-    if (fields.size() != csv.header.size()) {
-      error = path + ":" + std::to_string(number) + ": " + std::to_string(fields.size()) + " fields; the header has " +
-              std::to_string(csv.header.size());
+  csv.header = file.header();
+  std::vector<std::size_t> index;
+  for (const auto& name : wanted) {
+    const auto found = std::find(csv.header.begin(), csv.header.end(), name);
+    if (found == csv.header.end()) {
+      std::string names;
+      for (const auto& column : csv.header) names += (names.empty() ? "" : ", ") + column;
+      error = file.where() + "no column '" + name + "' in the header (" + names + ")";
       return {};
     }
-    if (csv.values.empty() || csv.values.begin()->second.size() < most_times) {
-      for (size_t k = 0; k < wanted.size(); ++k) {
-        const auto value = parse_number(fields[index[k]]);
-        if (!value) {
-          error = path + ":" + std::to_string(number) + ": " + wanted[k] + ": '" + fields[index[k]] + "' is not a finite number";
-          return {};
-        }
-        csv.values[wanted[k]].push_back(*value);
-      }
-    } else {
-      error = path + ":" + std::to_string(number) + ": more than 1000000 rows";
+    index.push_back(static_cast<std::size_t>(found - csv.header.begin()));
+  }
+  for (std::vector<std::string> fields; file.next_row(fields);) {
+    if (!csv.values.empty() && csv.values.begin()->second.size() == most_times) {
+      error = file.where() + "more than 1000000 rows";
       return {};
     }
+    for (size_t k = 0; k < wanted.size(); ++k) {
+      const auto value = parse_number(fields[index[k]]);
+      if (!value) {
+        error = file.where() + wanted[k] + ": '" + fields[index[k]] + "' is not a finite number";
+        return {};
+      }
+      csv.values[wanted[k]].push_back(*value);
+    }
   }
-  if (too_long) error = path + ":" + std::to_string(number) + ": a line longer than 1 MiB (is it a CSV file?)";
-  else if (in.bad()) error = path + ": cannot be read";
-  else if (csv.header.empty()) error = path + ": empty; a header line and data rows are needed";
-  else if (csv.values.empty()) error = path + ": has a header but no data row";
+  error = file.error();
+  if (error.empty() && csv.values.empty()) error = path + ": has a header but no data row";
   return error.empty() ? csv : CsvColumns{};
 }
 
@@ -361,7 +326,6 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   const ColumnScore spike = score_column(times, {1.0, -2.0, 3.5, 4.0}, exact, 1.0);
   CHECK(spike.rms == doctest::Approx(1.5).epsilon(1e-14));
   CHECK(spike.t_of_max == 2.0);
-  CHECK(csv_fields(" t , \"A v\",x,") == std::vector<std::string>{"t", "A v", "x", ""});
 }
 
 }  // namespace mpm::cli

@@ -5,7 +5,8 @@
 ///   energy.png     kinetic, strain and total energy; momentum
 /// The gnuplot script is kept as RUN_DIR/plot.gp, to be edited and rerun by hand.
 /// Either CSV may be missing (a folder of another code's observers.csv, say): what is there is drawn.
-/// The CSV files' column names reach the script only as gnuplot single-quoted strings, and a name with a control character is refused. The
+/// The CSV files are read by io::CsvFile (regular files only, lines of at most 1 MiB); their column names reach
+/// the script only as gnuplot single-quoted strings, and a name with a control character is refused. The
 /// script, plot.log and the pictures are created afresh, never through a symbolic link (mpm/cli/gnuplot.hpp).
 /// Exit codes: 0 done; 2 no such folder, neither CSV, a CSV that cannot be read or without its header, a name
 /// with a control character; 3 a file cannot be written, gnuplot failed or left a picture incomplete.
@@ -22,23 +23,27 @@
 #include <vector>
 
 #include "mpm/cli/gnuplot.hpp"
+#include "mpm/io/csv_file.hpp"
 
 namespace mpm::cli {
 
-/// The column names of the header line of `path`, empty when there is no such file; false with `error` set
-/// (`FILE:1: ...`) when a name holds a control character (a name is written into the gnuplot script).
+/// The column names of the header of `path` (io::CsvFile), empty when there is no such file; false with
+/// `error` set (`FILE:LINE: ...`) when it cannot be read or a name holds a control character (a name is
+/// written into the gnuplot script).
 inline bool plot_header(const std::string& path, std::vector<std::string>& names, std::string& error) {
-  std::ifstream in(path);
-  std::string line;
+  io::CsvFile file(path);
   names.clear();
-  if (!in || !std::getline(in, line)) return true;
-  std::stringstream stream(line);
-  for (std::string name; std::getline(stream, name, ',');) names.push_back(name);
-  for (size_t k = 0; k < names.size(); ++k)
-    if (has_control_character(names[k])) {
-      error = path + ":1: column " + std::to_string(k + 1) + ": its name holds a control character";
+  if (file.missing()) return true;
+  if (!file.read_header()) {
+    error = file.error().empty() ? path + ": empty; a header line is needed" : file.error();
+    return false;
+  }
+  for (size_t k = 0; k < file.header().size(); ++k)
+    if (has_control_character(file.header()[k])) {
+      error = file.where() + "column " + std::to_string(k + 1) + ": its name holds a control character";
       return false;
     }
+  names = file.header();
   return true;
 }
 
@@ -204,14 +209,14 @@ TEST_CASE("mpm plot: the script draws each observer's column beside the exact on
   CHECK(plot_script({"t", hostile}, {}, {}).find("title 'A.x'' . system(''touch F'') . '''\n") != std::string::npos);
   CHECK(plot_script({"t"}, {}, {"t", "momentum' . system('id') . '"}).find("title 'momentum'' . system(''id'') . '''") != std::string::npos);
   const std::string path = (std::filesystem::temp_directory_path() / "mpm_plot_header_test.csv").string();
-  std::ofstream(path) << "t,A.x,B\tx\n0,1,2\n";
+  std::ofstream(path) << "\xEF\xBB\xBFt,A.x,B\tx\n0,1,2\n";
   std::vector<std::string> names;
   std::string error;
   CHECK(!plot_header(path, names, error));
   CHECK(error == path + ":1: column 3: its name holds a control character");
-  std::ofstream(path) << "t,A.x\n0,1\n";
+  std::ofstream(path) << "\xEF\xBB\xBFt,A.x\n0,1\n";
   CHECK(plot_header(path, names, error));
-  CHECK(names == std::vector<std::string>{"t", "A.x"});
+  CHECK(names == std::vector<std::string>{"t", "A.x"});  // the byte-order mark is not part of t
   std::filesystem::remove(path);
   CHECK(plot_header(path, names, error));  // no such file: no header, and no error (either CSV is optional)
   CHECK(names.empty());
