@@ -7,6 +7,8 @@
 #     or `error: --OPTION: ...`, and no output folder was made;
 #   - exit 3: one line naming the failure, and stdout never says "wrote";
 #   - exit 0: "wrote", run.json says "done", and the run took at most twice its step budget.
+# Then hostile files for each reader of a file (FIFO, device, folder, /proc, byte-order mark, a long line, a
+# header name that closes gnuplot's quote, a control character): exit 0, 2 or 3 within 10 s, nothing run.
 #
 #   bash tests/fuzz_cli.sh build/bin/mpm [CASES] [SEED]
 # CASES defaults to $MPM_FUZZ_CASES or 300 (what `make test` runs); SEED to $MPM_FUZZ_SEED or 11.
@@ -171,6 +173,49 @@ for ((number = 0; number < cases; ++number)); do
   esac
   rm -rf "$out" "$scene_copy"
 done
+# Hostile files for every reader of a file (the times file, compare's CSV, a particle file, a run folder's
+# observers.csv): not regular files, a byte-order mark, a line over 1 MiB, a header name that closes
+# gnuplot's quote and runs a command, a control character. Each returns within 10 s with 0, 2 or 3, runs
+# nothing, and exit 2 says `error: ` and names the file.
+hostile() {  # hostile CLASS FILE: makes FILE of that class
+  rm -rf "$2"
+  case $1 in
+    fifo) mkfifo "$2" ;;
+    device) ln -s /dev/zero "$2" ;;
+    folder) mkdir "$2" ;;
+    proc) ln -s /proc/self/mem "$2" ;;
+    bom) printf '\xef\xbb\xbft,A.v_x,x,y,volume\n0,1,0.1,0.1,0.001\n' >"$2" ;;
+    long) { head -c 1100000 /dev/zero | tr '\0' 7; printf '\n'; } >"$2" ;;
+    inject) printf "t,A.x' . system('touch %s') . '\n0,1\n" "$work/pwned" >"$2" ;;
+    control) printf 't,A.v\001x\n0,1\n' >"$2" ;;
+  esac
+}
+hostile_cases=0
+for class in fifo device folder proc bom long inject control; do
+  for reader in times compare particles plot; do
+    mkdir -p "$work/hostile"
+    file=$work/hostile/observers.csv
+    hostile $class "$file"
+    case $reader in
+      times) arguments=(exact "$root/scenes/dyka_bar.toml" --at 0 --times-file "$file") ;;
+      compare) arguments=(compare "$file" "$root/scenes/dyka_bar.toml" --at 0 --column A.v_x=v_x) ;;
+      particles) arguments=(run "$root/scenes/colliding_disks.toml" --print-scene --set 'body[0].shape="file"' --set "body[0].file=\"$file\"") ;;
+      plot) arguments=(plot "$work/hostile") ;;
+    esac
+    hostile_cases=$((hostile_cases + 1))
+    timeout -s KILL 10 "$mpm" "${arguments[@]}" >"$work/stdout" 2>"$work/err"
+    code=$?
+    [[ -n ${MPM_FUZZ_VERBOSE:-} ]] && echo "case $class/$reader: exit $code: $(head -n 1 "$work/err" | cut -c1-150)"
+    codes[$code]=$((${codes[$code]:-0} + 1))
+    scene_copy=""
+    [[ $code -eq 0 || $code -eq 2 || $code -eq 3 ]] || report "$class/$reader" "exit $code (a hang, a signal or an unexpected code)" "${arguments[@]}"
+    [[ $code -eq 2 ]] && ! grep -q "^error: .*$file" "$work/err" && report "$class/$reader" "exit 2 without naming the file" "${arguments[@]}"
+    [[ -e $work/pwned ]] && report "$class/$reader" "a header ran a command" "${arguments[@]}"
+    grep -q "internal error" "$work/err" && report "$class/$reader" "internal error" "${arguments[@]}"
+    rm -rf "$work/hostile" "$work/pwned"
+  done
+done
+cases=$((cases + hostile_cases))
 summary=""
 for code in "${!codes[@]}"; do summary+=" exit $code: ${codes[$code]};"; done
 echo "fuzz_cli: $cases cases (seed $seed) in $((SECONDS - start)) s:$summary $failures failed"

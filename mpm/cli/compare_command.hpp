@@ -11,7 +11,9 @@
 /// t_of_max the first sample time at which it occurs.
 /// Exit codes: 0 every rms_normalised <= TOL (or no --tolerance given); 1 one is above TOL; 2 a bad input
 /// (unknown column, unreadable CSV, no exact solution in the scene; one line on stderr, nothing written);
-/// 3 gnuplot failed to draw --plot.
+/// 3 --plot could not be drawn whole (`error: FILE.png: cannot write: ...`; it takes precedence over 1).
+/// The CSV is read by io::CsvFile (regular files only, a byte-order mark skipped, lines of at most 1 MiB); the
+/// picture is made afresh (never through a symbolic link) by gnuplot, run without a shell (mpm/cli/gnuplot.hpp).
 #pragma once
 #include <doctest/doctest.h>
 #include <unistd.h>
@@ -19,9 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <ostream>
 #include <sstream>
@@ -30,6 +30,8 @@
 
 #include "mpm/analysis/rms_error.hpp"
 #include "mpm/cli/exact_command.hpp"
+#include "mpm/cli/gnuplot.hpp"
+#include "mpm/io/csv_file.hpp"
 
 namespace mpm::cli {
 
@@ -39,80 +41,44 @@ struct CsvColumns {
   std::map<std::string, std::vector<double>> values;  ///< by column name, one entry per data row
 };
 
-/// Splits a CSV line at commas; each field trimmed of spaces and of one pair of surrounding double quotes.
-inline std::vector<std::string> csv_fields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream stream(line);
-  for (std::string field; std::getline(stream, field, ',');) {
-    const auto start = field.find_first_not_of(" \t"), end = field.find_last_not_of(" \t");
-    field = start == std::string::npos ? "" : field.substr(start, end - start + 1);
-    if (field.size() >= 2 && field.front() == '"' && field.back() == '"') field = field.substr(1, field.size() - 2);
-    fields.push_back(field);
-  }
-  if (!line.empty() && line.back() == ',') fields.push_back("");
-  return fields;
-}
-
-/// Reads the columns `wanted` of the CSV file `path` (header on the first line that is neither blank nor a
-/// # comment). Every data row must have the header's number of fields and a finite number in each column
-/// wanted. Returns an empty header with `error` set ("FILE:LINE: ...") on a problem.
+/// Reads the columns `wanted` of the CSV file `path` (io::CsvFile: header on the first line that is neither
+/// blank nor a # comment). Every data row must have the header's number of fields and a finite number in each
+/// column wanted. Returns an empty header with `error` set ("FILE:LINE: ...") on a problem.
 inline CsvColumns read_csv_columns(const std::string& path, const std::vector<std::string>& wanted, std::string& error) {
+  io::CsvFile file(path);
+  if (!file.read_header()) {
+    error = file.error().empty() ? path + ": empty; a header line and data rows are needed" : file.error();
+    return {};
+  }
   CsvColumns csv;
-  std::error_code code;
-  if (std::filesystem::is_directory(path, code)) {
-    error = path + ": is a folder; give a CSV file";
-    return {};
-  }
-  std::ifstream in(path);
-  if (!in) {
-    error = path + ": cannot be read: no such file, or no permission";
-    return {};
-  }
-  std::vector<int> index(wanted.size(), -1);
-  std::string line;
-  bool too_long = false;
-  int number = 1;
-  for (; io::read_line(in, line, too_long); ++number) {
-    const auto start = line.find_first_not_of(" \t");
-    if (start == std::string::npos || line[start] == '#') continue;
-    const auto fields = csv_fields(line);
-    if (csv.header.empty()) {
-      csv.header = fields;
-      for (size_t k = 0; k < wanted.size(); ++k) {
-        const auto found = std::find(fields.begin(), fields.end(), wanted[k]);
-        if (found == fields.end()) {
-          std::string names;
-          for (const auto& name : fields) names += (names.empty() ? "" : ", ") + name;
-          error = path + ":" + std::to_string(number) + ": no column '" + wanted[k] + "' in the header (" + names + ")";
-          return {};
-        }
-        index[k] = static_cast<int>(found - fields.begin());
-      }
-      continue;
-    }
-    if (fields.size() != csv.header.size()) {
-      error = path + ":" + std::to_string(number) + ": " + std::to_string(fields.size()) + " fields; the header has " +
-              std::to_string(csv.header.size());
+  csv.header = file.header();
+  std::vector<std::size_t> index;
+  for (const auto& name : wanted) {
+    const auto found = std::find(csv.header.begin(), csv.header.end(), name);
+    if (found == csv.header.end()) {
+      std::string names;
+      for (const auto& column : csv.header) names += (names.empty() ? "" : ", ") + column;
+      error = file.where() + "no column '" + name + "' in the header (" + names + ")";
       return {};
     }
-    if (csv.values.empty() || csv.values.begin()->second.size() < most_times) {
-      for (size_t k = 0; k < wanted.size(); ++k) {
-        const auto value = parse_number(fields[index[k]]);
-        if (!value) {
-          error = path + ":" + std::to_string(number) + ": " + wanted[k] + ": '" + fields[index[k]] + "' is not a finite number";
-          return {};
-        }
-        csv.values[wanted[k]].push_back(*value);
-      }
-    } else {
-      error = path + ":" + std::to_string(number) + ": more than 1000000 rows";
+    index.push_back(static_cast<std::size_t>(found - csv.header.begin()));
+  }
+  for (std::vector<std::string> fields; file.next_row(fields);) {
+    if (!csv.values.empty() && csv.values.begin()->second.size() == most_times) {
+      error = file.where() + "more than 1000000 rows";
       return {};
     }
+    for (size_t k = 0; k < wanted.size(); ++k) {
+      const auto value = parse_number(fields[index[k]]);
+      if (!value) {
+        error = file.where() + wanted[k] + ": '" + fields[index[k]] + "' is not a finite number";
+        return {};
+      }
+      csv.values[wanted[k]].push_back(*value);
+    }
   }
-  if (too_long) error = path + ":" + std::to_string(number) + ": a line longer than 1 MiB (is it a CSV file?)";
-  else if (in.bad()) error = path + ": cannot be read";
-  else if (csv.header.empty()) error = path + ": empty; a header line and data rows are needed";
-  else if (csv.values.empty()) error = path + ": has a header but no data row";
+  error = file.error();
+  if (error.empty() && csv.values.empty()) error = path + ": has a header but no data row";
   return error.empty() ? csv : CsvColumns{};
 }
 
@@ -137,19 +103,16 @@ inline ColumnScore score_column(const std::vector<double>& times, const std::vec
 }
 
 /// The gnuplot script of --plot: one panel per column, the CSV's values and the exact solution at the same
-/// times, the data inline (no other file is read or written but the picture).
+/// times, the data inline (no other file is read or written but the picture). Every string is a gnuplot
+/// single-quoted string; the caller refuses control characters in the picture's path and the column names.
 inline std::string compare_plot_script(const std::string& picture, const std::vector<double>& times,
                                        const std::vector<ColumnScore>& scores, const std::vector<std::vector<double>>& computed,
                                        const std::vector<std::vector<double>>& exact) {
-  auto quoted = [](const std::string& text) {  // a gnuplot single-quoted string: ' doubled
-    std::string result = "'";
-    for (char character : text) result += character == '\'' ? std::string("''") : std::string(1, character);
-    return result + "'";
-  };
   std::ostringstream gp;
   gp.precision(15);
   gp << "set datafile separator ','\nset grid lc rgb '#dddddd'\nset key outside right top\nset lmargin 14\nset xlabel 't (s)'\n"
-     << "set terminal pngcairo noenhanced size 1000," << 260 * scores.size() << " font ',10'\nset output " << quoted(picture) << "\n";
+     << "set terminal pngcairo noenhanced size 1000," << 260 * scores.size() << " font ',10'\nset output "
+     << gnuplot_quoted(gnuplot_output_path(picture)) << "\n";
   for (size_t c = 0; c < scores.size(); ++c) {
     gp << "$data" << c << " << EOD\n";
     for (size_t n = 0; n < times.size(); ++n) gp << times[n] << "," << computed[c][n] << "," << exact[c][n] << "\n";
@@ -157,34 +120,36 @@ inline std::string compare_plot_script(const std::string& picture, const std::ve
   }
   gp << "set multiplot layout " << scores.size() << ",1\n";
   for (size_t c = 0; c < scores.size(); ++c)
-    gp << "set ylabel " << quoted(scores[c].quantity + " (" + io::quantity_unit(scores[c].quantity) + ")") << "\nplot $data" << c
-       << " using 1:2 with lines lw 1.5 title " << quoted(scores[c].column) << ", $data" << c
+    gp << "set ylabel " << gnuplot_quoted(scores[c].quantity + " (" + io::quantity_unit(scores[c].quantity) + ")") << "\nplot $data" << c
+       << " using 1:2 with lines lw 1.5 title " << gnuplot_quoted(scores[c].column) << ", $data" << c
        << " using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'exact'\n";
   gp << "unset multiplot\nunset output\n";
   return gp.str();
 }
 
-/// Runs gnuplot on `script` (kept in a temporary file, removed after); true if it wrote `picture`.
-inline bool draw_with_gnuplot(const std::string& script, const std::string& picture, std::string& log) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  char name[] = "/tmp/mpm_compare_XXXXXX";
-  const int descriptor = mkstemp(name);
-  if (descriptor < 0) return false;
-  close(descriptor);
-  const std::string script_path = name, log_path = std::string(name) + ".log";
-  {
-    std::ofstream file(script_path);
-    file << script;
-    if (!file.flush()) return fs::remove(script_path, error), false;
+/// Runs gnuplot on `script`, given on its standard input from an unnamed temporary file, its messages into
+/// another; `picture` is made afresh first (create_fresh). True if gnuplot wrote `picture` whole
+/// (png_file_complete); `reason` says why not, with the first line of gnuplot's messages.
+inline bool draw_with_gnuplot(const std::string& script, const std::string& picture, std::string& reason) {
+  std::FILE* input = std::tmpfile();
+  std::FILE* log = std::tmpfile();
+  const int descriptor = input && log ? create_fresh(picture, reason) : -1;
+  if (!input || !log) reason = "no temporary file for gnuplot's script";
+  bool drawn = false;
+  if (descriptor >= 0 && (::close(descriptor), write_all(fileno(input), script, reason)) && ::lseek(fileno(input), 0, SEEK_SET) == 0) {
+    const int status = run_gnuplot("", "", fileno(input), fileno(log));
+    drawn = status == 0 && png_file_complete(picture);
+    std::string message(512, '\0');
+    const ssize_t count = ::pread(fileno(log), &message[0], message.size(), 0);
+    message.resize(count > 0 ? static_cast<std::size_t>(count) : 0);
+    message = message.substr(0, message.find_first_of("\r\n"));
+    reason = (status != 0 ? "gnuplot failed (status " + std::to_string(status) + "; is gnuplot installed? make deps)"
+                          : std::string("gnuplot left it incomplete (no PNG end chunk)")) + (message.empty() ? "" : ": " + message);
   }
-  fs::remove(picture, error);
-  const int status = std::system(("gnuplot " + script_path + " 2>" + log_path).c_str());
-  std::ifstream in(log_path);
-  std::getline(in, log, '\0');
-  fs::remove(script_path, error);
-  fs::remove(log_path, error);
-  return status == 0 && fs::file_size(picture, error) > 0 && !error;
+  if (descriptor >= 0 && !drawn) ::unlink(picture.c_str());  // made here, and not whole: not left to be taken for a picture
+  if (input) std::fclose(input);
+  if (log) std::fclose(log);
+  return drawn;
 }
 
 /// `mpm compare`; returns the exit code.
@@ -247,6 +212,10 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
     for (const auto& spec : column_specs) {
       const auto equals = spec.find('=');
       const std::string column = spec.substr(0, equals), quantity = equals == std::string::npos ? "" : spec.substr(equals + 1);
+      if (has_control_character(spec)) {
+        err << "error: --column: a column name holds a control character (a newline, a tab...)\n";
+        return 2;
+      }
       if (equals == std::string::npos || column.empty()) {
         err << "error: --column " << spec << ": give COL=QUANTITY, e.g. v=v_x\n";
         return 2;
@@ -264,6 +233,10 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       }
       columns.push_back(column);
       asked.push_back(quantity);
+    }
+    if (has_control_character(plot_path)) {
+      err << "error: --plot: the path holds a control character (a newline, a tab...); give another\n";
+      return 2;
     }
     if (!plot_path.empty()) {
       const std::filesystem::path folder = std::filesystem::path(plot_path).parent_path();
@@ -318,10 +291,9 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
     }
     out << text.str() << std::flush;
     if (!plot_path.empty()) {
-      std::string log;
-      if (!draw_with_gnuplot(compare_plot_script(plot_path, times, scores, computed_series, exact_series), plot_path, log)) {
-        err << "failure: gnuplot failed to draw " << plot_path << " (is gnuplot installed? make deps)"
-            << (log.empty() ? "" : ": " + log.substr(0, log.find('\n'))) << "\n";
+      std::string reason;
+      if (!draw_with_gnuplot(compare_plot_script(plot_path, times, scores, computed_series, exact_series), plot_path, reason)) {
+        err << "error: " << plot_path << ": cannot write: " << reason << "\n";
         return 3;
       }
       err << "wrote " << plot_path << "\n";
@@ -354,7 +326,6 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   const ColumnScore spike = score_column(times, {1.0, -2.0, 3.5, 4.0}, exact, 1.0);
   CHECK(spike.rms == doctest::Approx(1.5).epsilon(1e-14));
   CHECK(spike.t_of_max == 2.0);
-  CHECK(csv_fields(" t , \"A v\",x,") == std::vector<std::string>{"t", "A v", "x", ""});
 }
 
 }  // namespace mpm::cli

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -23,7 +23,7 @@
 #include "mpm/io/exact_solution.hpp"
 #include "mpm/io/scene.hpp"
 #include "mpm/cli/parse_number.hpp"
-#include "mpm/io/text_lines.hpp"
+#include "mpm/io/csv_file.hpp"
 
 namespace mpm::cli {
 
@@ -73,20 +73,11 @@ inline std::vector<double> parse_time_range(const std::string& text, std::string
 /// A file of times, one number (seconds, >= 0) per line; blank lines and lines starting with # are skipped,
 /// and a first line that is not a number is a header. Empty with `error` ("FILE:LINE: ...") on a problem.
 inline std::vector<double> read_times_file(const std::string& path, std::string& error) {
-  std::ifstream in(path);
-  if (!in) {
-    error = path + ": cannot be read: no such file, or no permission";
-    return {};
-  }
+  io::CsvFile file(path);
   std::vector<double> times;
-  std::string line;
+  std::string text;
   bool first = true;
-  bool too_long = false;
-  int number = 1;
-  for (; io::read_line(in, line, too_long); ++number) {
-    const auto start = line.find_first_not_of(" \t");
-    if (start == std::string::npos || line[start] == '#') continue;
-    const std::string text = line.substr(start, line.find_last_not_of(" \t") - start + 1);
+  while (file.next_line(text)) {
     const auto value = parse_number(text);
     if (!value && first) {
       first = false;
@@ -94,19 +85,18 @@ inline std::vector<double> read_times_file(const std::string& path, std::string&
     }
     first = false;
     if (!value || *value < 0.0) {
-      error = path + ":" + std::to_string(number) + ": '" + text + "' is not a time in seconds >= 0";
+      error = file.where() + "'" + text + "' is not a time in seconds >= 0";
       return {};
     }
     if (times.size() == most_times) {
-      error = path + ":" + std::to_string(number) + ": more than 1000000 times";
+      error = file.where() + "more than 1000000 times";
       return {};
     }
     times.push_back(*value);
   }
-  if (too_long) error = path + ":" + std::to_string(number) + ": a line longer than 1 MiB (is it a text file?)";
-  else if (in.bad()) error = path + ": cannot be read";
-  else if (times.empty()) error = path + ": holds no time";
-  return times;
+  error = file.error();
+  if (error.empty() && times.empty()) error = path + ": holds no time";
+  return error.empty() ? times : std::vector<double>{};
 }
 
 /// What `mpm exact` and `mpm compare` both read: the scene and its overrides, the points, the strain measure.
@@ -297,6 +287,17 @@ TEST_CASE("mpm exact: numbers, points and time ranges are read whole, or refused
   CHECK(parse_time_range("0:1", error).empty());
   CHECK(parse_time_range("0:1e-9:10", error).empty());
   CHECK(error.find("at most 1000000") != std::string::npos);
+  const std::string path = (std::filesystem::temp_directory_path() / "mpm_times_file_test.txt").string();
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  REQUIRE(file);
+  std::fputs("\xEF\xBB\xBF" "1e-5\r\n# a comment\n\n 2e-5 \n", file);  // a spreadsheet's byte-order mark and line ends
+  std::fclose(file);
+  error.clear();
+  CHECK(read_times_file(path, error) == std::vector<double>{1e-5, 2e-5});  // the first time kept, not taken for a header
+  CHECK(error.empty());
+  std::filesystem::remove(path);
+  CHECK(read_times_file(std::filesystem::temp_directory_path().string(), error).empty());
+  CHECK(error.find(": is a folder, not a regular file") != std::string::npos);
 }
 
 }  // namespace mpm::cli

@@ -5,12 +5,15 @@
 ///   energy.png     kinetic, strain and total energy; momentum
 /// The gnuplot script is kept as RUN_DIR/plot.gp, to be edited and rerun by hand.
 /// Either CSV may be missing (a folder of another code's observers.csv, say): what is there is drawn.
-/// Exit codes: 0 done; 2 no such folder, neither CSV, or a CSV without its header; 3 gnuplot failed.
+/// The CSV files are read by io::CsvFile (regular files only, lines of at most 1 MiB); their column names reach
+/// the script only as gnuplot single-quoted strings, and a name with a control character is refused. The
+/// script, plot.log and the pictures are created afresh, never through a symbolic link (mpm/cli/gnuplot.hpp).
+/// Exit codes: 0 done; 2 no such folder, neither CSV, a CSV that cannot be read or without its header, a name
+/// with a control character; 3 a file cannot be written, gnuplot failed or left a picture incomplete.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
@@ -19,17 +22,29 @@
 #include <utility>
 #include <vector>
 
+#include "mpm/cli/gnuplot.hpp"
+#include "mpm/io/csv_file.hpp"
+
 namespace mpm::cli {
 
-/// The column names of a CSV file's header line; empty if the file cannot be read or has no header.
-inline std::vector<std::string> csv_header(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::vector<std::string> names;
-  if (!in || !std::getline(in, line)) return names;
-  std::stringstream stream(line);
-  for (std::string name; std::getline(stream, name, ',');) names.push_back(name);
-  return names;
+/// The column names of the header of `path` (io::CsvFile), empty when there is no such file; false with
+/// `error` set (`FILE:LINE: ...`) when it cannot be read or a name holds a control character (a name is
+/// written into the gnuplot script).
+inline bool plot_header(const std::string& path, std::vector<std::string>& names, std::string& error) {
+  io::CsvFile file(path);
+  names.clear();
+  if (file.missing()) return true;
+  if (!file.read_header()) {
+    error = file.error().empty() ? path + ": empty; a header line is needed" : file.error();
+    return false;
+  }
+  for (size_t k = 0; k < file.header().size(); ++k)
+    if (has_control_character(file.header()[k])) {
+      error = file.where() + "column " + std::to_string(k + 1) + ": its name holds a control character";
+      return false;
+    }
+  names = file.header();
+  return true;
 }
 
 /// "A.v_x" -> "v_x"; "t" -> "".
@@ -62,15 +77,15 @@ inline std::string plot_script(const std::vector<std::string>& observers, const 
     gp << "set terminal pngcairo noenhanced size 1000," << 260 * quantities.size() << " font ',10'\n"
        << "set output 'observers.png'\nset multiplot layout " << quantities.size() << ",1\n";
     for (const auto& quantity : quantities) {
-      gp << "set ylabel '" << quantity_label(quantity) << "'\nplot ";
+      gp << "set ylabel " << gnuplot_quoted(quantity_label(quantity)) << "\nplot ";
       std::string separator;
       for (size_t k = 0; k < observers.size(); ++k) {
         if (quantity_of(observers[k]) != quantity) continue;
-        gp << separator << "'observers.csv' using 1:" << k + 1 << " with lines lw 1.5 title '" << observers[k] << "'";
+        gp << separator << "'observers.csv' using 1:" << k + 1 << " with lines lw 1.5 title " << gnuplot_quoted(observers[k]);
         separator = ", ";
         for (size_t j = 0; j < exact.size(); ++j)
           if (exact[j] == observers[k])
-            gp << ", 'exact.csv' using 1:" << j + 1 << " with lines dt 2 lw 2 lc rgb 'black' title '" << exact[j] << " exact'";
+            gp << ", 'exact.csv' using 1:" << j + 1 << " with lines dt 2 lw 2 lc rgb 'black' title " << gnuplot_quoted(exact[j] + " exact");
       }
       gp << "\n";
     }
@@ -82,18 +97,41 @@ inline std::string plot_script(const std::vector<std::string>& observers, const 
   std::string separator;
   for (size_t k = 1; k < energy.size(); ++k)
     if (energy[k] == "kinetic" || energy[k] == "strain" || energy[k] == "total") {
-      gp << separator << "'energy.csv' using 1:" << k + 1 << " with lines lw 1.5 title '" << energy[k] << "'";
+      gp << separator << "'energy.csv' using 1:" << k + 1 << " with lines lw 1.5 title " << gnuplot_quoted(energy[k]);
       separator = ", ";
     }
   gp << "\nset ylabel 'momentum'\nplot ";
   separator.clear();
   for (size_t k = 1; k < energy.size(); ++k)
     if (energy[k].rfind("momentum", 0) == 0) {
-      gp << separator << "'energy.csv' using 1:" << k + 1 << " with lines lw 1.5 title '" << energy[k] << "'";
+      gp << separator << "'energy.csv' using 1:" << k + 1 << " with lines lw 1.5 title " << gnuplot_quoted(energy[k]);
       separator = ", ";
     }
   gp << "\nunset multiplot\nunset output\n";
   return gp.str();
+}
+
+/// Reads the headers of `folder`'s observers.csv, energy.csv and exact.csv (plot_header); false, with a line
+/// on `err`, when one cannot be read or neither observers.csv nor energy.csv is a run's.
+inline bool plot_headers(const std::string& folder, std::vector<std::string>& observers, std::vector<std::string>& energy,
+                         std::vector<std::string>& exact, std::ostream& err) {
+  std::string problem;
+  if (!plot_header(folder + "/observers.csv", observers, problem) || !plot_header(folder + "/energy.csv", energy, problem) ||
+      !plot_header(folder + "/exact.csv", exact, problem)) {
+    err << "error: " << problem << "\n";
+    return false;
+  }
+  if (observers.empty() && energy.empty()) {  // either is optional, not both
+    err << "error: " << folder << ": holds neither observers.csv nor energy.csv (is " << folder << " the folder of an `mpm run`?)\n";
+    return false;
+  }
+  for (const auto& [name, header] : {std::pair{"observers.csv", observers}, std::pair{"energy.csv", energy}})
+    if (!header.empty() && header[0] != "t") {
+      err << "error: " << folder << "/" << name << ": its header line does not start with t (is " << folder
+          << " the folder of an `mpm run`?)\n";
+      return false;
+    }
+  return true;
 }
 
 /// Draws the run in `arguments[0]`; returns the exit code.
@@ -104,49 +142,53 @@ inline int plot_command(const std::vector<std::string>& arguments, std::ostream&
     return 2;
   }
   const std::string folder = arguments[0];
+  if (has_control_character(folder)) {
+    err << "error: plot: the folder's name holds a control character (a newline, a tab...); rename it\n";
+    return 2;
+  }
   std::error_code error;
   if (!fs::is_directory(folder, error)) {
     err << "error: " << folder << ": no such folder (give the folder of an `mpm run`, e.g. runs/dyka_bar)\n";
     return 2;
   }
-  const auto observers = csv_header(folder + "/observers.csv");
-  const auto energy = csv_header(folder + "/energy.csv");  // optional, as observers.csv is: at least one
-  if (observers.empty() && energy.empty()) {
-    err << "error: " << folder << ": holds neither observers.csv nor energy.csv (is " << folder << " the folder of an `mpm run`?)\n";
-    return 2;
-  }
-  for (const auto& [name, header] : {std::pair{"observers.csv", observers}, std::pair{"energy.csv", energy}})
-    if (!header.empty() && header[0] != "t") {
-      err << "error: " << folder << "/" << name << ": its header line does not start with t (is " << folder
-          << " the folder of an `mpm run`?)\n";
-      return 2;
-    }
-  const auto exact = csv_header(folder + "/exact.csv");  // optional
-  {
-    std::ofstream script(folder + "/plot.gp");
-    script << plot_script(observers, exact, energy);
-    if (!script.flush()) {
-      err << "failure: " << folder << "/plot.gp: cannot be written\n";
-      return 3;
-    }
-  }
+  std::vector<std::string> observers, energy, exact;
+  if (!plot_headers(folder, observers, energy, exact, err)) return 2;
   std::vector<std::string> pictures;
   if (observers.size() > 1) pictures.push_back("observers.png");
   if (!energy.empty()) pictures.push_back("energy.png");
-  for (const auto& picture : pictures) fs::remove(folder + "/" + picture, error);
-  std::string quoted = "'";  // the folder in single quotes for the shell
-  for (char character : folder) quoted += character == '\'' ? std::string("'\\''") : std::string(1, character);
-  quoted += "'";
-  const int status = std::system(("cd " + quoted + " && gnuplot plot.gp 2>plot.log").c_str());
+  std::string reason;
+  for (const auto& picture : pictures) {  // each made afresh, so that gnuplot writes no symbolic link's target
+    const int descriptor = create_fresh(folder + "/" + picture, reason);
+    if (descriptor < 0) {
+      err << "error: " << folder << "/" << picture << ": cannot write: " << reason << "\n";
+      return 3;
+    }
+    ::close(descriptor);
+  }
+  if (!write_fresh(folder + "/plot.gp", plot_script(observers, exact, energy), reason)) {
+    err << "error: " << folder << "/plot.gp: cannot write: " << reason << "\n";
+    return 3;
+  }
+  const int log = create_fresh(folder + "/plot.log", reason);
+  if (log < 0) {
+    err << "error: " << folder << "/plot.log: cannot write: " << reason << "\n";
+    return 3;
+  }
+  const int status = run_gnuplot(folder, "plot.gp", -1, log);
+  ::close(log);
+  auto remove_pictures = [&] {  // made here, and not whole: no picture is left to be taken for a finished one
+    for (const auto& picture : pictures) ::unlink((folder + "/" + picture).c_str());
+  };
   if (status != 0) {
     err << "failure: gnuplot failed (status " << status << "; is gnuplot installed? make deps): see " << folder
         << "/plot.log and " << folder << "/plot.gp\n";
-    return 3;
+    return remove_pictures(), 3;
   }
   for (const auto& picture : pictures)
-    if (fs::file_size(folder + "/" + picture, error) == 0 || error) {
-      err << "failure: gnuplot wrote no " << folder << "/" << picture << ": see " << folder << "/plot.log\n";
-      return 3;
+    if (!png_file_complete(folder + "/" + picture)) {
+      err << "error: " << folder << "/" << picture << ": cannot write: gnuplot left it incomplete (no PNG end chunk): see " << folder
+          << "/plot.log\n";
+      return remove_pictures(), 3;
     }
   for (const auto& picture : pictures) out << "wrote " << folder << "/" << picture << "\n";
   return 0;
@@ -163,6 +205,21 @@ TEST_CASE("mpm plot: the script draws each observer's column beside the exact on
   CHECK(script.find("'energy.csv' using 1:5 with lines lw 1.5 title 'momentum_x'") != std::string::npos);
   CHECK(plot_script({"t"}, {}, {"t", "kinetic"}).find("observers.png") == std::string::npos);
   CHECK(plot_script({"t", "A.x"}, {}, {}).find("energy.png") == std::string::npos);  // no energy.csv, no energy.png
+  const std::string hostile = "A.x' . system('touch F') . '";  // a header name closing its string: doubled quotes keep it inside
+  CHECK(plot_script({"t", hostile}, {}, {}).find("title 'A.x'' . system(''touch F'') . '''\n") != std::string::npos);
+  CHECK(plot_script({"t"}, {}, {"t", "momentum' . system('id') . '"}).find("title 'momentum'' . system(''id'') . '''") != std::string::npos);
+  const std::string path = (std::filesystem::temp_directory_path() / "mpm_plot_header_test.csv").string();
+  std::ofstream(path) << "\xEF\xBB\xBFt,A.x,B\tx\n0,1,2\n";
+  std::vector<std::string> names;
+  std::string error;
+  CHECK(!plot_header(path, names, error));
+  CHECK(error == path + ":1: column 3: its name holds a control character");
+  std::ofstream(path) << "\xEF\xBB\xBFt,A.x\n0,1\n";
+  CHECK(plot_header(path, names, error));
+  CHECK(names == std::vector<std::string>{"t", "A.x"});  // the byte-order mark is not part of t
+  std::filesystem::remove(path);
+  CHECK(plot_header(path, names, error));  // no such file: no header, and no error (either CSV is optional)
+  CHECK(names.empty());
   std::ostringstream out, err;
   CHECK(plot_command({}, out, err) == 2);
   CHECK(plot_command({"/nonexistent/run"}, out, err) == 2);

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/io/text_lines.hpp"
+#include "mpm/io/csv_file.hpp"
 
 namespace mpm::io {
 
@@ -34,54 +34,31 @@ inline constexpr std::size_t most_file_particles = 1'000'000;
 /// empty list with `error` ("PATH:LINE: ...") on a problem.
 inline std::vector<FileParticle> read_particle_file(const std::string& path, int dimension, double density,
                                                     const std::vector<double>& default_velocity, std::string& error) {
-  std::error_code code;
-  std::ifstream in(path);
-  if (std::filesystem::is_directory(path, code) || !in) {
-    error = path + ": cannot be read: no such file, or no permission";
+  CsvFile file(path);
+  if (!file.read_header()) {
+    error = file.error().empty() ? path + ": empty; a header line (x[,y],volume|mass[,v_x[,v_y]]) and one row per particle are needed"
+                                 : file.error();
     return {};
   }
-  auto fields_of = [](const std::string& line) {
-    std::vector<std::string> fields;
-    std::stringstream stream(line);
-    for (std::string field; std::getline(stream, field, ',');) {
-      const auto start = field.find_first_not_of(" \t"), end = field.find_last_not_of(" \t");
-      fields.push_back(start == std::string::npos ? "" : field.substr(start, end - start + 1));
-    }
-    return fields;
-  };
-  std::vector<FileParticle> particles;
-  std::vector<std::string> header;
+  const std::vector<std::string>& header = file.header();
   int column_x = -1, column_y = -1, column_volume = -1, column_mass = -1, column_vx = -1, column_vy = -1;
-  std::string line;
-  bool too_long = false;
-  int number = 1;
-  for (; read_line(in, line, too_long); ++number) {
-    const auto start = line.find_first_not_of(" \t");
-    if (start == std::string::npos || line[start] == '#') continue;
-    const auto fields = fields_of(line);
-    const std::string where = path + ":" + std::to_string(number) + ": ";
-    if (header.empty()) {
-      header = fields;
-      for (int k = 0; k < static_cast<int>(fields.size()); ++k) {
-        const std::string& name = fields[k];
-        int* column = name == "x" ? &column_x : name == "y" ? &column_y : name == "volume" ? &column_volume : name == "mass" ? &column_mass
-                    : name == "v_x" ? &column_vx : name == "v_y" ? &column_vy : nullptr;
-        if (column && *column >= 0) {
-          error = where + "column '" + name + "' appears twice";
-          return {};
-        }
-        if (column) *column = k;
-      }
-      if (column_x < 0 || (dimension == 2 && column_y < 0)) error = where + "the header needs the columns x" + (dimension == 2 ? " and y" : "");
-      else if ((column_volume < 0) == (column_mass < 0)) error = where + "the header needs one of the columns volume or mass";
-      else if (dimension == 2 && (column_vx < 0) != (column_vy < 0)) error = where + "give both v_x and v_y, or neither";
-      if (!error.empty()) return {};
-      continue;
-    }
-    if (fields.size() != header.size()) {
-      error = where + std::to_string(fields.size()) + " fields; the header has " + std::to_string(header.size());
+  for (int k = 0; k < static_cast<int>(header.size()); ++k) {
+    const std::string& name = header[k];
+    int* column = name == "x" ? &column_x : name == "y" ? &column_y : name == "volume" ? &column_volume : name == "mass" ? &column_mass
+                : name == "v_x" ? &column_vx : name == "v_y" ? &column_vy : nullptr;
+    if (column && *column >= 0) {
+      error = file.where() + "column '" + name + "' appears twice";
       return {};
     }
+    if (column) *column = k;
+  }
+  if (column_x < 0 || (dimension == 2 && column_y < 0)) error = file.where() + "the header needs the columns x" + (dimension == 2 ? " and y" : "");
+  else if ((column_volume < 0) == (column_mass < 0)) error = file.where() + "the header needs one of the columns volume or mass";
+  else if (dimension == 2 && (column_vx < 0) != (column_vy < 0)) error = file.where() + "give both v_x and v_y, or neither";
+  if (!error.empty()) return {};
+  std::vector<FileParticle> particles;
+  for (std::vector<std::string> fields; file.next_row(fields);) {
+    const std::string where = file.where();
     auto number_at = [&](int column, double& value) {
       if (column < 0) return true;
       std::size_t end = 0;
@@ -115,8 +92,7 @@ inline std::vector<FileParticle> read_particle_file(const std::string& path, int
     }
     particles.push_back(particle);
   }
-  if (too_long) error = path + ":" + std::to_string(number) + ": a line longer than 1 MiB (is it a CSV file?)";
-  else if (header.empty()) error = path + ": empty; a header line (x[,y],volume|mass[,v_x[,v_y]]) and one row per particle are needed";
+  if (!file.error().empty()) error = file.error();
   else if (particles.empty()) error = path + ": holds no particle";
   return error.empty() ? particles : std::vector<FileParticle>{};
 }
@@ -140,6 +116,8 @@ TEST_CASE("Particle file: columns by name, mass from volume, velocity optional, 
   REQUIRE(bar.size() == 1);
   CHECK(bar[0].mass == 7.8);
   CHECK(bar[0].v_x == 0.5);  // the body's velocity
+  CHECK(read("\xEF\xBB\xBFx,mass\n0.05,7.8\n", 1, error).size() == 1);  // a spreadsheet's byte-order mark: x is still found
+  CHECK(error.empty());
   read("x,y,mass\n0.1,0.2,-1\n", 2, error);
   CHECK(error == path + ":2: mass: must be > 0");
   error.clear();

@@ -1,0 +1,239 @@
+/// \file
+/// The one reader of the project's text inputs (the CSV of `mpm compare`, the headers `mpm plot` reads, a
+/// body's particle file, the times file of `mpm exact`), bounded against hostile files:
+/// - regular files only: the path is examined before it is opened, so a FIFO, a device or a folder is
+///   refused at once (`FILE: not a regular file`) instead of blocking or filling the memory; the files of
+///   /proc and /sys (regular to stat, but endless or unreadable) are refused likewise;
+/// - lines of at most 1 MiB (LF or CR LF), a UTF-8 byte-order mark at the start skipped (spreadsheets write one);
+/// - blank lines and lines starting with # skipped; each line numbered, for `FILE:LINE: ...` errors;
+/// - the file read with read(2): a read error is a located message, never an exception.
+#pragma once
+#include <doctest/doctest.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/vfs.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace mpm::io {
+
+/// The longest line the readers accept (1 MiB).
+inline constexpr std::size_t longest_line = 1 << 20;
+
+/// Splits a CSV line at commas; each field trimmed of spaces and tabs and of one pair of surrounding double
+/// quotes; a line ending in a comma has an empty last field.
+inline std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', begin);
+    std::string field = line.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
+    const auto start = field.find_first_not_of(" \t"), end = field.find_last_not_of(" \t");
+    field = start == std::string::npos ? "" : field.substr(start, end - start + 1);
+    if (field.size() >= 2 && field.front() == '"' && field.back() == '"') field = field.substr(1, field.size() - 2);
+    fields.push_back(field);
+    if (comma == std::string::npos) return fields;
+    begin = comma + 1;
+  }
+}
+
+/// A text file read line by line, as the file's comment says. Every reading call returns false at the end of
+/// the file or on a problem; error() then tells which ("" at the end), as `FILE: ...` or `FILE:LINE: ...`.
+class CsvFile {
+ public:
+  explicit CsvFile(std::string path) : path_(std::move(path)) { open(); }
+  CsvFile(const CsvFile&) = delete;
+  CsvFile& operator=(const CsvFile&) = delete;
+  ~CsvFile() {
+    if (descriptor_ >= 0) ::close(descriptor_);
+  }
+
+  const std::string& error() const { return error_; }
+  /// True when the path names nothing (so that an optional file can be told from an unreadable one).
+  bool missing() const { return missing_; }
+  /// The number of the line last read (1 = the first line of the file).
+  int line() const { return number_; }
+  /// "FILE:LINE: " of the line last read.
+  std::string where() const { return path_ + ":" + std::to_string(number_) + ": "; }
+  const std::vector<std::string>& header() const { return header_; }
+
+  /// The next line that is neither blank nor a # comment, trimmed of spaces and tabs.
+  bool next_line(std::string& line) {
+    while (raw_line(line)) {
+      const auto start = line.find_first_not_of(" \t");
+      if (start == std::string::npos || line[start] == '#') continue;
+      line = line.substr(start, line.find_last_not_of(" \t") - start + 1);
+      return true;
+    }
+    return false;
+  }
+
+  /// Reads the header (the fields of the first line that is neither blank nor a comment); false on an empty
+  /// file (error() empty) or a problem.
+  bool read_header() {
+    std::string line;
+    if (!next_line(line)) return false;
+    header_ = csv_fields(line);
+    return true;
+  }
+
+  /// The fields of the next data row, as many as the header's (`FILE:LINE: N fields; the header has M` else).
+  bool next_row(std::vector<std::string>& fields) {
+    std::string line;
+    if (!next_line(line)) return false;
+    fields = csv_fields(line);
+    if (fields.size() == header_.size()) return true;
+    error_ = where() + std::to_string(fields.size()) + " fields; the header has " + std::to_string(header_.size());
+    return false;
+  }
+
+ private:
+  /// Why the open file `descriptor` (or, at -1, the path) is not a regular file; "" if it is one.
+  static std::string kind_refused(const struct stat& status, int descriptor) {
+    if (S_ISDIR(status.st_mode)) return "is a folder, not a regular file; give a file";
+    if (S_ISFIFO(status.st_mode)) return "not a regular file (a FIFO)";
+    if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode)) return "not a regular file (a device)";
+    if (!S_ISREG(status.st_mode)) return "not a regular file";
+    struct statfs system {};
+    if (descriptor >= 0 && ::fstatfs(descriptor, &system) == 0 && (system.f_type == 0x9fa0 || system.f_type == 0x62656572))
+      return "not a regular file (a file of /proc or /sys)";
+    return "";
+  }
+
+  void open() {
+    struct stat before {}, after {};
+    if (::stat(path_.c_str(), &before) != 0) {  // examined before it is opened: a FIFO is never opened
+      missing_ = errno == ENOENT;
+      error_ = path_ + (errno == ENOENT || errno == EACCES || errno == ENOTDIR ? ": cannot be read: no such file, or no permission"
+                                                                              : ": cannot be read: " + std::string(std::strerror(errno)));
+      return;
+    }
+    if (std::string refused = kind_refused(before, -1); !refused.empty()) {
+      error_ = path_ + ": " + refused;
+      return;
+    }
+    // O_NONBLOCK: should the path have become a FIFO since, opening it does not wait for a writer.
+    descriptor_ = ::open(path_.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (descriptor_ < 0) {
+      error_ = path_ + ": cannot be read: " + std::strerror(errno);
+      return;
+    }
+    if (::fstat(descriptor_, &after) != 0 || after.st_ino != before.st_ino || after.st_dev != before.st_dev) {
+      error_ = path_ + ": changed while it was opened";
+      return;
+    }
+    if (std::string refused = kind_refused(after, descriptor_); !refused.empty()) error_ = path_ + ": " + refused;
+  }
+
+  /// The next byte, or -1 at the end of the file or on a read error (error_ set).
+  int next_byte() {
+    if (position_ == buffer_.size()) {
+      if (descriptor_ < 0 || !error_.empty()) return -1;
+      buffer_.resize(1 << 16);
+      ssize_t count = -1;
+      do count = ::read(descriptor_, &buffer_[0], buffer_.size());
+      while (count < 0 && errno == EINTR);
+      if (count < 0) error_ = path_ + ": cannot be read: " + std::strerror(errno);
+      buffer_.resize(count > 0 ? static_cast<std::size_t>(count) : 0);
+      position_ = 0;
+      if (count <= 0) return -1;
+    }
+    return static_cast<unsigned char>(buffer_[position_++]);
+  }
+
+  /// The next line of the file, without its end and (on line 1) without a byte-order mark.
+  bool raw_line(std::string& line) {
+    line.clear();
+    if (!error_.empty()) return false;
+    int byte = next_byte();
+    if (byte < 0) return false;
+    ++number_;
+    for (; byte >= 0 && byte != '\n'; byte = next_byte()) {
+      if (line.size() == longest_line) {
+        error_ = where() + "a line longer than 1 MiB (is it a text file?)";
+        return false;
+      }
+      line.push_back(static_cast<char>(byte));
+    }
+    if (!error_.empty()) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (number_ == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    return true;
+  }
+
+  std::string path_, error_;
+  int descriptor_ = -1;
+  bool missing_ = false;
+  int number_ = 0;
+  std::string buffer_;
+  std::size_t position_ = 0;
+  std::vector<std::string> header_;
+};
+
+TEST_CASE("CsvFile: header and rows located, a BOM skipped, comments and blank lines skipped, a line too long refused") {
+  namespace fs = std::filesystem;
+  const std::string path = (fs::temp_directory_path() / "mpm_csv_file_test.csv").string();
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  REQUIRE(file);
+  std::fputs("\xEF\xBB\xBFt, \"A v\" ,x,\r\n# a comment\n\n0,1,2,\n1,2\nlast", file);
+  std::fclose(file);
+  CsvFile csv(path);
+  CHECK(csv.error().empty());
+  REQUIRE(csv.read_header());
+  CHECK(csv.header() == std::vector<std::string>{"t", "A v", "x", ""});  // the BOM gone, the CR gone
+  std::vector<std::string> row;
+  REQUIRE(csv.next_row(row));
+  CHECK(csv.line() == 4);
+  CHECK(row == std::vector<std::string>{"0", "1", "2", ""});
+  CHECK(!csv.next_row(row));
+  CHECK(csv.error() == path + ":5: 2 fields; the header has 4");
+  CsvFile lines(path);
+  std::string line;
+  for (int k = 0; k < 4; ++k) REQUIRE(lines.next_line(line));
+  CHECK(line == "last");  // the last line, without a newline
+  CHECK(lines.line() == 6);
+  CHECK(!lines.next_line(line));
+  CHECK(lines.error().empty());  // the end, no problem
+  file = std::fopen(path.c_str(), "wb");
+  REQUIRE(file);
+  std::fputs((std::string(longest_line, 'x') + "\nok\n").c_str(), file);  // 1 MiB exactly: taken
+  std::fclose(file);
+  CsvFile whole_line(path);
+  CHECK(whole_line.next_line(line));
+  CHECK(line.size() == longest_line);
+  CHECK(whole_line.next_line(line));
+  CHECK(line == "ok");
+  file = std::fopen(path.c_str(), "wb");
+  REQUIRE(file);
+  std::fputs((std::string(longest_line + 1, 'x') + "\n").c_str(), file);  // a byte more: refused
+  std::fclose(file);
+  CsvFile long_line(path);
+  CHECK(!long_line.next_line(line));
+  CHECK(long_line.error() == path + ":1: a line longer than 1 MiB (is it a text file?)");
+  fs::remove(path);
+  CsvFile gone(path);
+  CHECK(gone.missing());
+  CHECK(gone.error() == path + ": cannot be read: no such file, or no permission");
+  CHECK(!gone.next_line(line));
+}
+
+TEST_CASE("CsvFile: a folder, a FIFO, a device and a file of /proc are refused at once, never read") {
+  namespace fs = std::filesystem;
+  CHECK(CsvFile(fs::temp_directory_path().string()).error() == fs::temp_directory_path().string() + ": is a folder, not a regular file; give a file");
+  const std::string fifo = (fs::temp_directory_path() / "mpm_csv_file_fifo").string();
+  fs::remove(fifo);
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK(CsvFile(fifo).error() == fifo + ": not a regular file (a FIFO)");  // and no wait for a writer
+  fs::remove(fifo);
+  CHECK(CsvFile("/dev/zero").error() == "/dev/zero: not a regular file (a device)");
+  CHECK(CsvFile("/proc/self/mem").error() == "/proc/self/mem: not a regular file (a file of /proc or /sys)");
+  CHECK(!CsvFile("/proc/self/mem").missing());
+}
+
+}  // namespace mpm::io
