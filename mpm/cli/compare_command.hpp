@@ -152,55 +152,60 @@ inline bool draw_with_gnuplot(const std::string& script, const std::string& pict
   return drawn;
 }
 
-/// `mpm compare`; returns the exit code.
-inline int compare_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
-  ExactOptions options;
+/// What `mpm compare` was asked, besides the scene and the point.
+struct CompareRequest {
   std::string result_path, time_column = "t", plot_path;
   std::vector<std::string> column_specs;
   std::optional<double> tolerance;
-  std::vector<std::string> positional;
-  for (size_t k = 0; k < arguments.size(); ++k) {
-    const std::string& argument = arguments[k];
-    const bool takes_value = argument == "--set" || argument == "--at" || argument == "--column" || argument == "--time-column" ||
-                             argument == "--tolerance" || argument == "--plot" || argument == "--strain";
-    if (takes_value && k + 1 >= arguments.size()) {
-      err << "error: " << argument << ": needs a value (mpm compare --help)\n";
-      return 2;
-    }
-    if (argument == "--set") options.overrides.push_back(arguments[++k]);
-    else if (argument == "--at") options.points.push_back(arguments[++k]);
-    else if (argument == "--strain") options.strain = arguments[++k];
-    else if (argument == "--column") column_specs.push_back(arguments[++k]);
-    else if (argument == "--time-column") time_column = arguments[++k];
-    else if (argument == "--plot") plot_path = arguments[++k];
-    else if (argument == "--tolerance") {
-      tolerance = parse_number(arguments[++k]);
-      if (!tolerance || *tolerance < 0.0) {
-        err << "error: --tolerance: '" << arguments[k] << "' is not a number >= 0 (a bound on rms_normalised)\n";
-        return 2;
-      }
-    } else if (argument.rfind("-", 0) == 0 || positional.size() == 2) {
-      err << "error: " << argument << ": unknown option (mpm compare --help)\n";
-      return 2;
-    } else {
-      positional.push_back(argument);
-    }
-  }
-  if (positional.size() != 2) {
-    err << "error: compare: give RESULT.csv and SCENE.toml (mpm compare --help)\n";
-    return 2;
-  }
-  result_path = positional[0], options.scene_path = positional[1];
+};
+
+/// `mpm compare`'s parser, its options bound to `options` and `request`.
+inline std::unique_ptr<CommandParser> compare_parser(ExactOptions& options, CompareRequest& request) {
+  auto app = std::make_unique<CommandParser>(
+      "compare",
+      "Scores any CSV with a header line (another code's output) against the scene's exact solution (as mpm exact\n"
+      "evaluates it) at the material point --at and at the CSV's own sample times, and prints CSV:\n"
+      "  column,quantity,samples,rms,rms_normalised,max_abs,t_of_max\n"
+      "rms: Eq. (43), sqrt(sum (c_n - e_n)^2 / N) over the N rows, in the quantity's unit; rms_normalised: rms\n"
+      "divided by the solution's scale of the quantity: velocity V* (the largest |v_0| or |sigma_0|/Z of the initial\n"
+      "data: v0 for the Dyka bar, so the paper's RMS/v0), stress Z V*, displacement V* L/c (dyka_bar); rho g H,\n"
+      "rho g H^2/(2M), g H/c (soil_column: base stress, top settlement, wave velocity); Z|V|, |V|, |V|/omega\n"
+      "(vibrating_bar); A omega, (lambda + 2G) k A, |A| (manufactured); max_abs: the largest |c_n - e_n|, at t_of_max (s).");
+  app->add_option("RESULT.csv", request.result_path, "the CSV to score")->required();
+  app->add_option("SCENE.toml", options.scene_path, "the scene file whose exact solution scores it")->required();
+  declare_exact_options(*app, options);
+  app->add_option("--column", request.column_specs,
+                  "COL=QUANTITY: the CSV's column COL holds QUANTITY: u_x, v_x, sigma_xx (2D also u_y, v_y, sigma_yy,\n"
+                  "sigma_xy), SI units; repeat for more columns")
+      ->required()
+      ->allow_extra_args(false);
+  app->add_option("--time-column", request.time_column, "the column of the sample times, s")
+      ->check(CLI::Validator([](const std::string& text) { return text.empty() ? "empty" : ""; }, ""));
+  app->add_option("--tolerance", request.tolerance, "exit 1 when an rms_normalised exceeds TOL (none: no check, exit 0)")
+      ->check(number_in(0.0, 1e300));
+  app->add_option("--plot", request.plot_path, "draws each column and the exact solution against t into FILE.png (gnuplot)");
+  app->footer("Exit codes: 0 within the tolerance, 1 above it, 2 a bad input (nothing written), 3 gnuplot failed or\n"
+              "an output could not be written (cannot write).");
+  return app;
+}
+
+/// `mpm compare --help`: the parser's own help.
+inline std::string compare_usage() {
+  ExactOptions options;
+  CompareRequest request;
+  return compare_parser(options, request)->help();
+}
+
+/// `mpm compare`; returns the exit code.
+inline int compare_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+  ExactOptions options;
+  CompareRequest request;
+  if (const auto code = parse_arguments(*compare_parser(options, request), arguments, "compare", out, err)) return *code;
+  const std::string &result_path = request.result_path, &time_column = request.time_column, &plot_path = request.plot_path;
+  const std::vector<std::string>& column_specs = request.column_specs;
+  const std::optional<double>& tolerance = request.tolerance;
   if (options.points.size() > 1) {
     err << "error: --at: give one material point (the one whose history the CSV holds)\n";
-    return 2;
-  }
-  if (column_specs.empty()) {
-    err << "error: --column: missing; give at least one COL=QUANTITY, e.g. --column v=v_x\n";
-    return 2;
-  }
-  if (time_column.empty()) {
-    err << "error: --time-column: empty\n";
     return 2;
   }
   std::vector<std::vector<double>> points;

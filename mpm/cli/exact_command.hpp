@@ -17,12 +17,13 @@
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "mpm/io/exact_solution.hpp"
 #include "mpm/io/scene.hpp"
-#include "mpm/cli/parse_number.hpp"
+#include "mpm/cli/options.hpp"
 #include "mpm/io/csv_file.hpp"
 
 namespace mpm::cli {
@@ -182,42 +183,75 @@ inline bool times_within_precision(const io::SceneExactSolution& solution, const
   return false;
 }
 
+/// Declares the options `mpm exact` and `mpm compare` share: --set, --at, --strain.
+inline void declare_exact_options(CLI::App& app, ExactOptions& options) {
+  app.add_option("--set", options.overrides, "overrides a scene key with a TOML value, as for mpm run; repeat for more")
+      ->allow_extra_args(false);
+  app.add_option("--at", options.points, "a material point of the body, by its reference position X[,Y] (m)")
+      ->required()
+      ->allow_extra_args(false);
+  app.add_option("--strain", options.strain,
+                 "small: the small-strain solution; finite: the finite-strain reference of the solver's\n"
+                 "updated-Lagrangian model (soil_column, vibrating_bar)")
+      ->check(one_of({"small", "finite"}));
+}
+
+/// The solutions `mpm exact` evaluates, for its help.
+inline const char* exact_solutions =
+    "The solutions (scene key `exact`; their parameters come from the scene, SI units):\n"
+    "    dyka_bar            1D elastic bar [origin, origin + L], free at xmin, fixed at xmax (appendix A.1-A.19):\n"
+    "                        L = grid.length (m), E = material.young_modulus (Pa), rho = material.density (kg/m^3);\n"
+    "                        piecewise-constant initial velocity (m/s) from body.velocity, [initial_field] velocity and\n"
+    "                        [[initial_velocity]] boxes (later boxes win), initial stress (Pa) from [initial_field] stress\n"
+    "                        (default 0); every jump located to 1e-14 L\n"
+    "    soil_column         2D column on a roller base under gravity (paper/07_exact_column.md): H = grid.length[1] (m),\n"
+    "                        M = E(1 - nu)/((1 + nu)(1 - 2 nu)) (Pa), rho, g = -gravity.acceleration[1] (m/s^2), the\n"
+    "                        ramp of Eq. (44) with T = gravity.ramp_period (s; 0: none); 200 modes; sigma_xx =\n"
+    "                        nu/(1 - nu) sigma_yy. --strain finite: the static settlement at finite (logarithmic)\n"
+    "                        strain under full gravity, at every t (v = 0)\n"
+    "    vibrating_bar       the bar of dyka_bar in its mode n: v(X, 0) = V cos((2n - 1) pi X / 2L), unstressed;\n"
+    "                        n = exact_parameters.mode (default 1), V = exact_parameters.velocity_amplitude (m/s,\n"
+    "                        required). --strain finite: sigma = E ln(stretch), solved by finite differences\n"
+    "                        (512 cells, second order; at most 4000 times)\n"
+    "    manufactured_small  2D square [origin, origin + L]^2, every face held: u = A sin(omega t) (sin kX sin kY,\n"
+    "                        sin 2kX sin kY), k = pi/L, omega = c_p k; A = exact_parameters.displacement_amplitude\n"
+    "                        (m, required, |A| pi/L < 0.01); E, nu, rho of [material]\n"
+    "    manufactured_large  2D square, rollers on every face, each axis stretched on its own at finite strain;\n"
+    "                        [a_x, a_y] = exact_parameters.displacement_amplitude (m, required)\n"
+    "  Both manufactured solutions give the run (mpm run) its body force and initial velocity (mpm/exact/manufactured.hpp).\n";
+
+/// `mpm exact`'s parser, its options bound to `options` and to the times asked (`range` or `times_file`).
+inline std::unique_ptr<CommandParser> exact_parser(ExactOptions& options, std::string& range, std::string& times_file) {
+  auto app = std::make_unique<CommandParser>(
+      "exact",
+      "Prints, without running the solver, the exact solution the scene's `exact` key names at every material\n"
+      "point and time asked, as CSV in SI units, one row per time and point:\n"
+      "  1D  t,X,u_x,v_x,sigma_xx           2D  t,X,Y,u_x,u_y,v_x,v_y,sigma_xx,sigma_yy,sigma_xy\n"
+      "t (s), X, Y: the point's reference position (m, the scene's coordinates), u: displacement since t = 0 (m),\n"
+      "v: velocity (m/s), sigma: Cauchy stress (Pa, tension > 0).");
+  app->add_option("SCENE.toml", options.scene_path, "the scene file")->required();
+  declare_exact_options(*app, options);
+  const auto not_empty = CLI::Validator([](const std::string& text) { return text.empty() ? "empty" : ""; }, "");
+  auto* times = app->add_option("--times", range, "the times T0, T0 + DT, ... <= T1 (s): T0:DT:T1")->check(not_empty);
+  auto* file = app->add_option("--times-file", times_file, "one time (s) per line; # comments and a first header line are skipped")
+                   ->check(not_empty);
+  times->excludes(file);
+  app->footer(exact_solutions);
+  return app;
+}
+
+/// `mpm exact --help`: the parser's own help.
+inline std::string exact_usage() {
+  ExactOptions options;
+  std::string range, times_file;
+  return exact_parser(options, range, times_file)->help();
+}
+
 /// `mpm exact`; returns the exit code.
 inline int exact_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   ExactOptions options;
   std::string range, times_file;
-  for (size_t k = 0; k < arguments.size(); ++k) {
-    const std::string& argument = arguments[k];
-    const bool takes_value = argument == "--set" || argument == "--at" || argument == "--times" || argument == "--times-file" ||
-                             argument == "--strain";
-    if (takes_value && k + 1 >= arguments.size()) {
-      err << "error: " << argument << ": needs a value (mpm exact --help)\n";
-      return 2;
-    }
-    if (argument == "--set") options.overrides.push_back(arguments[++k]);
-    else if (argument == "--at") options.points.push_back(arguments[++k]);
-    else if (argument == "--strain") options.strain = arguments[++k];
-    else if (argument == "--times" || argument == "--times-file") {
-      if (!range.empty() || !times_file.empty()) {
-        err << "error: " << argument << ": give the times once, by --times or by --times-file\n";
-        return 2;
-      }
-      (argument == "--times" ? range : times_file) = arguments[++k];
-      if (arguments[k].empty()) {
-        err << "error: " << argument << ": empty\n";
-        return 2;
-      }
-    } else if (argument.rfind("-", 0) == 0 || !options.scene_path.empty()) {
-      err << "error: " << argument << ": unknown option (mpm exact --help)\n";
-      return 2;
-    } else {
-      options.scene_path = argument;
-    }
-  }
-  if (options.scene_path.empty()) {
-    err << "error: exact: no scene file given (mpm exact --help)\n";
-    return 2;
-  }
+  if (const auto code = parse_arguments(*exact_parser(options, range, times_file), arguments, "exact", out, err)) return *code;
   if (range.empty() && times_file.empty()) {
     err << "error: --times: missing; give --times T0:DT:T1 or --times-file FILE\n";
     return 2;

@@ -12,77 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "mpm/cli/compare_command.hpp"
+#include "mpm/cli/exact_command.hpp"
+#include "mpm/cli/plot_command.hpp"
 #include "mpm/cli/run_command.hpp"
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/cli/stability_command.hpp"
 #include "mpm/io/scene_keys.hpp"
 
 namespace mpm::cli {
-
-inline const char* plot_usage =
-    "usage: mpm plot RUN_DIR\n"
-    "  Draws a run's observer histories (observers.csv, with exact.csv beside them when the scene names an\n"
-    "  exact solution) into RUN_DIR/observers.png and its energy balance (energy.csv) into RUN_DIR/energy.png,\n"
-    "  with gnuplot. Either CSV may be missing (a folder of another code's observers.csv): what is there is drawn.\n";
-
-/// `mpm exact`'s usage, with each solution's parameters, defaults and units.
-inline const char* exact_usage =
-    "usage: mpm exact SCENE.toml [--set KEY=VALUE]... --at X[,Y] [--at ...] (--times T0:DT:T1 | --times-file FILE)\n"
-    "                 [--strain small|finite]\n"
-    "  Prints, without running the solver, the exact solution the scene's `exact` key names at every material\n"
-    "  point and time asked, as CSV in SI units, one row per time and point:\n"
-    "    1D  t,X,u_x,v_x,sigma_xx           2D  t,X,Y,u_x,u_y,v_x,v_y,sigma_xx,sigma_yy,sigma_xy\n"
-    "  t (s), X, Y: the point's reference position (m, the scene's coordinates), u: displacement since t = 0 (m),\n"
-    "  v: velocity (m/s), sigma: Cauchy stress (Pa, tension > 0).\n"
-    "  --at X[,Y]          a material point of the body, by its reference position (m); repeat for more\n"
-    "  --times T0:DT:T1    the times T0, T0 + DT, ... <= T1 (s)\n"
-    "  --times-file FILE   one time (s) per line; # comments and a first header line are skipped\n"
-    "  --strain small      the small-strain solution (default)\n"
-    "  --strain finite     the finite-strain reference of the solver's updated-Lagrangian model (soil_column,\n"
-    "                      vibrating_bar)\n"
-    "  --set KEY=VALUE     overrides a scene key, as for mpm run\n"
-    "  The solutions (scene key `exact`; their parameters come from the scene, SI units):\n"
-    "    dyka_bar            1D elastic bar [origin, origin + L], free at xmin, fixed at xmax (appendix A.1-A.19):\n"
-    "                        L = grid.length (m), E = material.young_modulus (Pa), rho = material.density (kg/m^3);\n"
-    "                        piecewise-constant initial velocity (m/s) from body.velocity, [initial_field] velocity and\n"
-    "                        [[initial_velocity]] boxes (later boxes win), initial stress (Pa) from [initial_field] stress\n"
-    "                        (default 0); every jump located to 1e-14 L\n"
-    "    soil_column         2D column on a roller base under gravity (paper/07_exact_column.md): H = grid.length[1] (m),\n"
-    "                        M = E(1 - nu)/((1 + nu)(1 - 2 nu)) (Pa), rho, g = -gravity.acceleration[1] (m/s^2), the\n"
-    "                        ramp of Eq. (44) with T = gravity.ramp_period (s; 0: none); 200 modes; sigma_xx =\n"
-    "                        nu/(1 - nu) sigma_yy. --strain finite: the static settlement at finite (logarithmic)\n"
-    "                        strain under full gravity, at every t (v = 0)\n"
-    "    vibrating_bar       the bar of dyka_bar in its mode n: v(X, 0) = V cos((2n - 1) pi X / 2L), unstressed;\n"
-    "                        n = exact_parameters.mode (default 1), V = exact_parameters.velocity_amplitude (m/s,\n"
-    "                        required). --strain finite: sigma = E ln(stretch), solved by finite differences\n"
-    "                        (512 cells, second order; at most 4000 times)\n"
-    "    manufactured_small  2D square [origin, origin + L]^2, every face held: u = A sin(omega t) (sin kX sin kY,\n"
-    "                        sin 2kX sin kY), k = pi/L, omega = c_p k; A = exact_parameters.displacement_amplitude\n"
-    "                        (m, required, |A| pi/L < 0.01); E, nu, rho of [material]\n"
-    "    manufactured_large  2D square, rollers on every face, each axis stretched on its own at finite strain;\n"
-    "                        [a_x, a_y] = exact_parameters.displacement_amplitude (m, required)\n"
-    "  Both manufactured solutions give the run (mpm run) its body force and initial velocity (mpm/exact/manufactured.hpp).\n";
-
-/// `mpm compare`'s usage.
-inline const char* compare_usage =
-    "usage: mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [--column ...] [--time-column NAME]\n"
-    "                   [--tolerance TOL] [--plot FILE.png] [--set KEY=VALUE]... [--strain small|finite]\n"
-    "  Scores any CSV with a header line (another code's output) against the scene's exact solution (as mpm exact\n"
-    "  evaluates it) at the material point --at and at the CSV's own sample times, and prints CSV:\n"
-    "    column,quantity,samples,rms,rms_normalised,max_abs,t_of_max\n"
-    "  rms: Eq. (43), sqrt(sum (c_n - e_n)^2 / N) over the N rows, in the quantity's unit; rms_normalised: rms\n"
-    "  divided by the solution's scale of the quantity: velocity V* (the largest |v_0| or |sigma_0|/Z of the initial\n"
-    "  data: v0 for the Dyka bar, so the paper's RMS/v0), stress Z V*, displacement V* L/c (dyka_bar); rho g H,\n"
-    "  rho g H^2/(2M), g H/c (soil_column: base stress, top settlement, wave velocity); Z|V|, |V|, |V|/omega\n"
-    "  (vibrating_bar); A omega, (lambda + 2G) k A, |A| (manufactured); max_abs: the largest |c_n - e_n|, at t_of_max (s).\n"
-    "  --at X[,Y]           the material point whose history the CSV holds, by its reference position (m)\n"
-    "  --column COL=QUANTITY  the CSV's column COL holds QUANTITY: u_x, v_x, sigma_xx (2D also u_y, v_y, sigma_yy,\n"
-    "                       sigma_xy), SI units; repeat for more columns\n"
-    "  --time-column NAME   the column of the sample times, s (default t)\n"
-    "  --tolerance TOL      exit 1 when an rms_normalised exceeds TOL (default: no check, exit 0)\n"
-    "  --plot FILE.png      draws each column and the exact solution against t (gnuplot)\n"
-    "  --strain, --set      as for mpm exact\n"
-    "  Exit codes: 0 within the tolerance, 1 above it, 2 a bad input (nothing written), 3 gnuplot failed.\n";
 
 inline const char* exit_codes =
     "Exit codes:\n"
@@ -118,7 +56,7 @@ inline std::string scene_keys_help() {
 /// `mpm --help`
 inline std::string main_help() {
   return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") +
-         run_usage() + "\n" + exact_usage + "\n" + compare_usage + "\n" + shape_usage() + "\n" + plot_usage + "\n" + stability_usage() + "\n" +
+         run_usage() + "\n" + exact_usage() + "\n" + compare_usage() + "\n" + shape_usage() + "\n" + plot_usage() + "\n" + stability_usage() + "\n" +
          "usage: mpm --version\n  Prints the version (git describe at build time).\n\n" + scene_keys_help() + "\n" + exit_codes;
 }
 
@@ -126,10 +64,10 @@ inline std::string main_help() {
 inline std::string command_help(const std::string& command) {
   if (command == "run") return run_usage() + "\n" + scene_keys_help() + "\n" + exit_codes;
   if (command == "shape") return shape_usage() + "\n" + exit_codes;
-  if (command == "plot") return std::string(plot_usage) + "\n" + exit_codes;
+  if (command == "plot") return plot_usage() + "\n" + exit_codes;
   if (command == "stability") return stability_usage() + "\n" + exit_codes;
-  if (command == "exact") return std::string(exact_usage) + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
-  if (command == "compare") return compare_usage;
+  if (command == "exact") return exact_usage() + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
+  if (command == "compare") return compare_usage();
   return main_help();
 }
 
@@ -154,7 +92,7 @@ TEST_CASE("mpm help: every scene key with its default and unit, and the exit cod
   for (const std::string name : {"dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"})
     CHECK(command_help("exact").find("\n    " + name + " ") != std::string::npos);  // every value of the scene key `exact`
   CHECK(command_help("compare").find("Exit codes: 0 within the tolerance, 1 above it, 2 a bad input") != std::string::npos);
-  CHECK(main_help().find("usage: mpm compare RESULT.csv SCENE.toml") != std::string::npos);
+  CHECK(main_help().find("Usage: mpm compare [OPTIONS] RESULT.csv SCENE.toml") != std::string::npos);
   CHECK(command_help("shape").find("--tol") != std::string::npos);
   CHECK(command_help("shape").find("LME support tolerance") != std::string::npos);
   CHECK(asks_for_help({"--dim", "1", "-h"}));

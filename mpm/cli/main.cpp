@@ -1,33 +1,14 @@
 /// \file
-/// The `mpm` command.
-///
-///   mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--max-memory SIZE] [--max-steps N] [--force]
-///       Runs a scene on N cores (default: all; the results are the same bits on any number); writes observers.csv, energy.csv, snapshots and run.json to DIR
-///       (default `runs/<scene name>`; mpm/cli/run_command.hpp). Exit codes: 0 done, 2 bad scene or option (nothing written),
-///       3 the method failed during the run or a file could not be written (one line on stderr;
-///       what was written is kept), 128 + N when signal N (SIGINT, SIGTERM) stopped it. A scene whose estimated memory exceeds --max-memory SIZE (bytes, or 512M, 4G; default
-///       half the machine's memory) or whose end_time / dt exceeds --max-steps (default 1e7;
-///       --force lifts it) is a bad scene.
-///   mpm run SCENE.toml --print-scene [--set KEY=VALUE]...
-///       Prints the resolved scene (every key, defaults filled in) and exits 0 without running.
-///   mpm plot RUN_DIR
-///       Draws the run's observers (beside exact.csv when the scene names an exact solution) and
-///       energy balance into RUN_DIR/observers.png and energy.png (mpm/cli/plot_command.hpp).
-///   mpm stability [--shape S] [--integrator I] [--newmark-gamma G] [--npc-velocity V] [--ppc N] [--lme-gamma G] [--dim D] ...
-///       Prints the largest stable CFL of a method from its own linearised step (mpm/cli/stability_command.hpp).
-///   mpm exact SCENE.toml --at X[,Y] (--times T0:DT:T1 | --times-file FILE) [--strain small|finite] [--set KEY=VALUE]...
-///       Prints the scene's exact solution at material points and times, without running (mpm/cli/exact_command.hpp).
-///   mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [...] [--tolerance TOL] [--plot FILE.png]
-///       Scores another code's CSV against the exact solution, Eq. (43); exit 0/1 within/above TOL
-///       (mpm/cli/compare_command.hpp).
-///   mpm --version
-///       Prints the version: the project's version and `git describe` at build time (mpm/cli/version.cmake).
-///   mpm --help, mpm run --help, mpm exact --help, mpm compare --help, mpm shape --help, mpm plot --help,
-///   mpm stability --help (mpm/cli/help.hpp)
-///   mpm shape --dim 1|2 --kind linear|ugimp|lme|bspline2|bspline3 --at X[,Y] [--at ...] [--gamma G] [--cell-size H]
-///             [--particle-size S] [--tol T]
-///       Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of
-///       the cell size) and prints CSV: point,node_x[,node_y],N,dN_dx[,dN_dy].
+/// The `mpm` command: one command per file of mpm/cli/, each parsing its own options with CLI11
+/// (mpm/cli/options.hpp) and generating its own help from them; `mpm --help` prints them all.
+///   mpm run SCENE.toml      runs a scene into its folder (run_command.hpp)
+///   mpm exact SCENE.toml    the scene's exact solution at points and times, without running (exact_command.hpp)
+///   mpm compare CSV SCENE   scores another code's CSV against the exact solution, Eq. (43) (compare_command.hpp)
+///   mpm shape               a shape function on an unbounded grid (shape_command.hpp)
+///   mpm plot RUN_DIR        draws a run with gnuplot (plot_command.hpp)
+///   mpm stability           the largest stable CFL of a method from its own linearised step (stability_command.hpp)
+///   mpm --version           the project's version and `git describe` at build time (version.cmake)
+/// Whatever the command, standard output is checked when it ends: exit 3 `cannot write` if it failed.
 ///
 /// Sample run (measured on the 2-core development machine; the wall time varies):
 ///   $ build/bin/mpm run scenes/dyka_bar.toml --set grid.cells=[160]
@@ -55,17 +36,9 @@
 namespace {
 
 const char* usage =
-    "usage: mpm run SCENE.toml [--out DIR] [--set KEY=VALUE]... [--threads N] [--print-scene]\n"
-    "                [--max-memory BYTES|<n>G] [--max-steps N] [--force]\n"
-    "       mpm exact SCENE.toml [--set KEY=VALUE]... --at X[,Y] [--at ...] (--times T0:DT:T1 | --times-file FILE)\n"
-    "                 [--strain small|finite]\n"
-    "       mpm compare RESULT.csv SCENE.toml --at X[,Y] --column COL=QUANTITY [--column ...] [--time-column NAME]\n"
-    "                   [--tolerance TOL] [--plot FILE.png] [--set KEY=VALUE]... [--strain small|finite]\n"
-    "       mpm shape --dim 1|2 --kind linear|ugimp|lme|bspline2|bspline3 --at X[,Y] [--at ...] [--gamma G] [--cell-size H]\n"
-    "                 [--particle-size S] [--tol T]\n"
-    "       mpm plot RUN_DIR\n"
-    "       mpm stability [--shape S] [--integrator I] [--newmark-gamma G] [--npc-velocity V] [--ppc N] [--lme-gamma G] [--dim D]\n"
-    "       mpm --version | mpm --help | mpm COMMAND --help\n";
+    "usage: mpm run SCENE.toml | mpm exact SCENE.toml | mpm compare RESULT.csv SCENE.toml | mpm plot RUN_DIR\n"
+    "       mpm shape | mpm stability   [OPTIONS]: mpm COMMAND --help\n"
+    "       mpm --version | mpm --help\n";
 
 /// Standard output flushed and closed: a full disk or a closed pipe shows here, after the command said
 /// everything (exit 3 in place of 0, and of compare's 1).

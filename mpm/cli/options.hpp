@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <optional>
 #include <ostream>
@@ -15,9 +16,21 @@
 #include <utility>
 #include <vector>
 
-#include "mpm/cli/parse_number.hpp"
-
 namespace mpm::cli {
+
+/// The whole text as a finite number; nullopt for anything else ("1e-3" yes, "1e-3s", "", "nan" no).
+inline std::optional<double> parse_number(const std::string& text) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return std::nullopt;
+  std::size_t end = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &end);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (end != text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
 
 /// A finite number in [low, high] (or [low, high) when `open_high`); CLI11's Range lets NaN through.
 inline CLI::Validator number_in(double low, double high, bool open_high = false) {
@@ -91,6 +104,11 @@ inline std::string error_message(const CLI::ParseError& error, const std::string
   const auto equals = what.find(" = ");
   if (dynamic_cast<const CLI::ConversionError*>(&error) && mismatch != std::string::npos && equals != std::string::npos)
     return what.substr(mismatch + 2, equals - mismatch - 2) + ": '" + what.substr(equals + 3) + "' cannot be read";
+  if (dynamic_cast<const CLI::ExcludesError*>(&error)) {
+    const auto excludes = what.find(" excludes ");
+    if (excludes != std::string::npos)
+      return what.substr(0, excludes) + ": give it or " + what.substr(excludes + 10) + ", not both";
+  }
   if (dynamic_cast<const CLI::RequiredError*>(&error)) {
     const std::string name = what.substr(0, what.find(' '));
     return name + ": required (mpm " + command + " --help)";
@@ -108,8 +126,9 @@ inline std::optional<int> parse_arguments(CLI::App& app, std::vector<std::string
   } catch (const CLI::CallForHelp&) {
     out << app.help();
     return 0;
-  } catch (const CLI::ParseError& error) {
-    err << "error: " << error_message(error, command) << "\n";
+  } catch (const CLI::ParseError& error) {  // an unknown option first: it may be what left a required one out
+    err << "error: " << (app.remaining().empty() ? error_message(error, command) : extra_message(app.remaining().front(), command))
+        << "\n";
     return 2;
   }
   if (!app.remaining().empty()) {

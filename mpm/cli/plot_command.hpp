@@ -18,11 +18,13 @@
 #include <fstream>
 #include <ostream>
 #include <sstream>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "mpm/cli/gnuplot.hpp"
+#include "mpm/cli/options.hpp"
 #include "mpm/io/csv_file.hpp"
 
 namespace mpm::cli {
@@ -134,14 +136,28 @@ inline bool plot_headers(const std::string& folder, std::vector<std::string>& ob
   return true;
 }
 
-/// Draws the run in `arguments[0]`; returns the exit code.
+/// `mpm plot`'s parser, its folder bound to `folder`.
+inline std::unique_ptr<CommandParser> plot_parser(std::string& folder) {
+  auto app = std::make_unique<CommandParser>(
+      "plot",
+      "Draws a run's observer histories (observers.csv, with exact.csv beside them when the scene names an\n"
+      "exact solution) into RUN_DIR/observers.png and its energy balance (energy.csv) into RUN_DIR/energy.png,\n"
+      "with gnuplot. Either CSV may be missing (a folder of another code's observers.csv): what is there is drawn.");
+  app->add_option("RUN_DIR", folder, "the folder of an `mpm run` (or of another code's observers.csv)")->required();
+  return app;
+}
+
+/// `mpm plot --help`: the parser's own help.
+inline std::string plot_usage() {
+  std::string folder;
+  return plot_parser(folder)->help();
+}
+
+/// Draws the run in the folder the arguments name; returns the exit code.
 inline int plot_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   namespace fs = std::filesystem;
-  if (arguments.size() != 1 || arguments[0].rfind("-", 0) == 0) {
-    err << "error: plot: give exactly one run folder: mpm plot RUN_DIR\n";
-    return 2;
-  }
-  const std::string folder = arguments[0];
+  std::string folder;
+  if (const auto code = parse_arguments(*plot_parser(folder), arguments, "plot", out, err)) return *code;
   if (has_control_character(folder)) {
     err << "error: plot: the folder's name holds a control character (a newline, a tab...); rename it\n";
     return 2;

@@ -164,7 +164,7 @@ inline std::unique_ptr<CommandParser> run_parser(RunRequest& request) {
       "snapshot_NNNN.csv/.vtp, snapshots.pvd (ParaView time series) and run.json into its folder; run.json says\n"
       "\"running\", then \"done\", \"failed\" or \"interrupted\". Files of an earlier run there are removed first.\n"
       "Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.");
-  app->add_option("scene", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
+  app->add_option("SCENE.toml", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
   app->add_option("--out", request.folder, "output folder (default runs/<scene file name>)")
       ->check(CLI::Validator([](const std::string& text) { return text.empty() ? "must not be empty" : ""; }, "DIR"));
   app->add_option("--set", request.overrides,

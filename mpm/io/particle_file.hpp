@@ -74,7 +74,7 @@ inline std::vector<FileParticle> read_particle_file(const std::string& path, int
       return true;
     };
     FileParticle particle;
-    particle.line = number;
+    particle.line = file.line();
     particle.v_x = default_velocity.at(0), particle.v_y = dimension == 2 ? default_velocity.at(1) : 0.0;
     double volume = 0.0;
     if (!number_at(column_x, particle.x) || !number_at(dimension == 2 ? column_y : -1, particle.y) ||
