@@ -30,7 +30,8 @@ time_limit=30  # seconds per case
 
 scenes=("$root"/scenes/*.toml)
 values=(0 1 -1 2 3 0.5 -0.5 1e-300 1e300 -1e300 inf -inf nan +nan 4294967297 2147483647 -2147483648
-  9223372036854775807 1e9 3e9 0.1 20 '"lme"' '"ugimp"' '"linear"' '"npc"' '"fe"' '"sum"' '"gauss"' '"xmax"' '"ymin"'
+  9223372036854775807 9223372036854775808 18446744073709551617 -9223372036854775809
+  99999999999999999999999999 1e9 3e9 0.1 20 '"lme"' '"ugimp"' '"linear"' '"npc"' '"fe"' '"sum"' '"gauss"' '"xmax"' '"ymin"'
   '""' '"a\nb"' '"x"' true '[]' '[0]' '[1]' '[1.0]' '[-1.0]' '[nan]' '[inf]' '[1e9]' '[3e9]' '[0.0, 0.0]' '[2, 2]'
   '[1, 1e9]' '[0.0, 1.0, 2.0]' '["x"]' '["y"]' '["x", "y"]' '[[1]]' '{a = 1}' '[ "x", 1 ]' '1979-05-27' '0x10'
   '[0.0, 1e-4, 2e-4]' '[100000000]' '[2147483000]' '[10, 10]' '[0.05]' '[5.0]' '[4.5, 9.5]' '[-5000.0]')
@@ -216,6 +217,43 @@ for class in fifo device folder proc bom long inject control; do
   done
 done
 cases=$((cases + hostile_cases))
+# Truncated writes: each shipped scene run, then plotted, under a file size limit (RLIMIT_FSIZE, SIGXFSZ
+# ignored, so a write past it fails with EFBIG as on a full disk). Exit 0 only with every file whole
+# (run.json done, each CSV ending in a newline); else exit 3 `cannot write`, never "wrote", and run.json,
+# when it could be written, not "done". A snapshot is written whole or not at all (atomically).
+limited() { (trap '' XFSZ; ulimit -f "$1"; shift; exec "$mpm" "$@"); }
+truncated_cases=0
+for scene in "${scenes[@]}"; do
+  for kib in 2 8 32 128; do
+    out=$work/limited
+    rm -rf "$out"
+    if [[ $scene == *dyka* ]]; then short=(--set solver.end_time=1e-5); else short=(--set solver.end_time=0.1); fi
+    for arguments in "run $scene --out $out ${short[*]} --set output.snapshots=[0.0]" "plot $out"; do
+      truncated_cases=$((truncated_cases + 1))
+      # shellcheck disable=SC2086
+      timeout -s KILL 30 bash -c "$(declare -f limited); mpm=$mpm; limited $kib $arguments" >"$work/stdout" 2>"$work/err"
+      code=$?
+      codes[$code]=$((${codes[$code]:-0} + 1))
+      scene_copy=""
+      case $code in
+        0) [[ $arguments == run* ]] || continue
+           grep -q '"status": "done"' "$out/run.json" || report "limit $kib K" "exit 0, run.json not done" $arguments
+           for csv in "$out"/*.csv; do
+             [[ -s $csv && $(tail -c 1 "$csv" | od -An -c | tr -d ' ') == '\n' ]] || report "limit $kib K" "exit 0 with $csv cut short" $arguments
+           done ;;
+        2) [[ $arguments == plot* ]] || report "limit $kib K" "exit 2" $arguments ;;  # plot of a run that wrote no CSV
+        3) grep -q wrote "$work/stdout" && report "limit $kib K" "exit 3 but said wrote" $arguments
+           grep -q "cannot write" "$work/err" || report "limit $kib K" "exit 3 without cannot write" $arguments
+           grep -q '"status": "done"' "$out/run.json" 2>/dev/null && [[ $arguments == run* ]] && report "limit $kib K" "run.json says done" $arguments
+           for snapshot in "$out"/snapshot_*.csv; do
+             [[ ! -e $snapshot || $(tail -c 1 "$snapshot" | od -An -c | tr -d ' ') == '\n' ]] || report "limit $kib K" "$snapshot cut short" $arguments
+           done ;;
+        *) report "limit $kib K" "exit $code" $arguments ;;
+      esac
+    done
+  done
+done
+cases=$((cases + truncated_cases))
 summary=""
 for code in "${!codes[@]}"; do summary+=" exit $code: ${codes[$code]};"; done
 echo "fuzz_cli: $cases cases (seed $seed) in $((SECONDS - start)) s:$summary $failures failed"

@@ -22,12 +22,15 @@ namespace mpm::io {
 
 /// True if `name` is a file `mpm run` or `mpm plot` writes: observers.csv, energy.csv, exact.csv, run.json,
 /// snapshots.pvd, snapshot_NNNN.csv / .vtp (and the .vtk of earlier versions), plot.gp, plot.log, observers.png,
-/// energy.png, and the hidden temporaries of the atomic writes (".run.json.partial").
+/// energy.png, and the hidden temporaries of the atomic writes (".run.json.partial", ".snapshot_0001.csv.partial").
 inline bool run_output_name(const std::string& name) {
+  const std::string partial = ".partial";
+  if (name.size() > partial.size() + 1 && name[0] == '.' && name.compare(name.size() - partial.size(), partial.size(), partial) == 0)
+    return run_output_name(name.substr(1, name.size() - partial.size() - 1));  // an atomic write's temporary
   static const std::vector<std::string> fixed{"observers.csv", "energy.csv", "exact.csv", "run.json", "snapshots.pvd",
                                               "plot.gp", "plot.log", "observers.png", "energy.png"};
   for (const std::string& file : fixed)
-    if (name == file || name == "." + file + ".partial") return true;
+    if (name == file) return true;
   const std::string prefix = "snapshot_";
   const auto dot = name.rfind('.');
   if (name.rfind(prefix, 0) != 0 || dot == std::string::npos || dot < prefix.size() + 4) return false;
@@ -75,6 +78,9 @@ TEST_CASE("run folder: an earlier run's files removed, other files kept, a link 
   CHECK(run_output_name("snapshot_0001.csv"));
   CHECK(run_output_name("snapshot_12345.vtk"));
   CHECK(run_output_name(".run.json.partial"));
+  CHECK(run_output_name(".snapshot_0003.vtp.partial"));
+  CHECK(!run_output_name(".notes.partial"));
+  CHECK(!run_output_name(".partial"));
   CHECK(!run_output_name("snapshot_001.csv"));
   CHECK(!run_output_name("snapshot_00a1.csv"));
   CHECK(!run_output_name("snapshot_0001.txt"));

@@ -101,7 +101,7 @@ class RunWriter : public Monitor<Dim> {
 
  private:
   void write_csv(const std::string& path, const Particles<Dim>& particles) const {
-    OutputFile out(path);
+    OutputFile out(path, OutputFile::Mode::atomic);  // whole or absent, even when the disk fills
     out << "id";
     for (int axis = 0; axis < Dim; ++axis) out << "," << axis_name(axis);
     for (int axis = 0; axis < Dim; ++axis) out << ",v_" << axis_name(axis);

@@ -20,7 +20,7 @@ namespace mpm::io {
 /// (3x3, plane strain sigma_zz included), density and id. \throws OutputFailure if it cannot be written.
 template <int Dim>
 void write_vtp(const std::string& path, const Particles<Dim>& particles) {
-  OutputFile out(path);
+  OutputFile out(path, OutputFile::Mode::atomic);  // whole or absent, even when the disk fills
   const int count = particles.size();
   out << std::setprecision(12) << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n"
