@@ -140,7 +140,8 @@ limited 8 run "$scene" --out "$work/limit8" >"$work/out" 2>"$work/err"
   { echo "FAIL: a CSV cut short by a size limit: $(cat "$work/err")"; failures=$((failures + 1)); }
 # Standard output that cannot be written: exit 3, whatever the command.
 if [[ -w /dev/full ]]; then
-  for arguments in "--help" "--version" "run $scene --print-scene" "stability" "shape --dim 1 --kind linear --at 0.5"; do
+  for arguments in "--help" "--version" "run $scene --print-scene" "stability" "shape --dim 1 --kind linear --at 0.5" \
+    "exact $scene --at 0.001 --times 0:1e-5:1e-4" "run --help"; do
     # shellcheck disable=SC2086
     "$mpm" $arguments >/dev/full 2>"$work/err"
     code=$?
