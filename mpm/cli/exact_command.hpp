@@ -122,7 +122,7 @@ inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, st
   io::SceneFile file = io::parse_scene_file(options.scene_path);
   for (size_t k = 0; k < options.overrides.size(); ++k) io::apply_override(file, options.overrides[k], static_cast<int>(k) + 1);
   io::Scene scene = io::read_scene(file);
-  if (scene.exact == "none") {
+  if (scene.exact == io::ExactKind::none) {
     err << "error: " << options.scene_path << ": exact: the scene names no exact solution (exact = \"none\"); give one of "
         << "dyka_bar, soil_column, vibrating_bar, manufactured_small, manufactured_large (mpm exact --help)\n";
     return std::nullopt;
@@ -132,7 +132,7 @@ inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, st
     return std::nullopt;
   }
   if (options.strain == "finite" && !io::has_finite_strain_reference(scene.exact)) {
-    err << "error: --strain: '" << scene.exact << "' has no finite-strain reference (soil_column and vibrating_bar have one)\n";
+    err << "error: --strain: '" << io::name_of(scene.exact) << "' has no finite-strain reference (soil_column and vibrating_bar have one)\n";
     return std::nullopt;
   }
   if (options.points.empty()) {
@@ -165,7 +165,7 @@ inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, st
 /// 4000 times and SceneExactSolution::most_finite_strain_steps steps. False, with a line on `err`, beyond.
 inline bool finite_strain_times_fit(const io::Scene& scene, const std::string& strain, const std::vector<double>& times,
                                     const std::string& option, std::ostream& err) {
-  if (strain != "finite" || scene.exact != "vibrating_bar") return true;
+  if (strain != "finite" || scene.exact != io::ExactKind::vibrating_bar) return true;
   if (times.size() > 4000) {
     err << "error: " << option << ": at most 4000 times for the finite-strain vibrating bar (it keeps the bar's state at each)\n";
     return false;
