@@ -19,19 +19,6 @@ namespace mpm::io {
 
 namespace detail {
 
-/// Calls `read` with a reader for every table of the array of tables `key` ([[key]] in TOML).
-template <class Read>
-void each_table(const SceneFile& file, SceneReader& root, const std::string& key, Read read) {
-  if (!root.has(key)) return;
-  const toml::array* array = file.table[key].as_array();
-  if (!array || !array->is_array_of_tables()) root.fail(key, "must be an array of tables: write [[" + key + "]]");
-  for (size_t k = 0; k < array->size(); ++k) {
-    SceneReader reader(file, *(*array)[k].as_table(), key + "[" + std::to_string(k) + "]");
-    read(reader, k);
-    reader.reject_unknown_keys();
-  }
-}
-
 /// The table `key`, or an empty one when the scene has none (its required keys are then refused by name).
 inline const toml::table& table_or_empty(const SceneFile& file, SceneReader& root, const std::string& key) {
   static const toml::table empty;
@@ -56,14 +43,20 @@ inline void read_table(const SceneFile& file, SceneReader& root, const std::stri
   reader.reject_unknown_keys();
 }
 
-/// Reads every table of the array `section`: `add` appends the entry it fills, `check(k)` checks entry k.
+/// Reads every table of the array of tables `section` ([[body]]): `add` appends the entry each fills, `check(k)`
+/// checks entry k.
 template <class Add, class Check>
 void read_tables(const SceneFile& file, SceneReader& root, const std::string& section, Scene& scene, Add add, Check check) {
-  each_table(file, root, section, [&](SceneReader& reader, size_t k) {
+  if (!root.has(section)) return;
+  const toml::array* array = file.table[section].as_array();
+  if (!array || !array->is_array_of_tables()) root.fail(section, "must be an array of tables: write [[" + section + "]]");
+  for (size_t k = 0; k < array->size(); ++k) {
+    SceneReader reader(file, *(*array)[k].as_table(), section + "[" + std::to_string(k) + "]");
     add();
     read_keys(reader, section, scene, k);
     check(k);
-  });
+    reader.reject_unknown_keys();
+  }
 }
 
 /// True if `value` lies on a grid line of the axis (within 1e-6 of a cell).
