@@ -43,8 +43,7 @@ inline LmeOptions lme_options(const io::Scene& scene) {
   options.support_tolerance = scene.lme_tol;
   options.newton_tolerance = scene.lme_newton_tol;
   options.max_iterations = scene.lme_max_iterations;
-  options.beta_rule = scene.lme_beta == "grid_spacing" ? LmeOptions::BetaRule::grid_spacing
-                                                       : LmeOptions::BetaRule::mean_neighbour_distance;
+  options.beta_rule = scene.lme_beta;
   return options;
 }
 
@@ -52,19 +51,15 @@ inline LmeOptions lme_options(const io::Scene& scene) {
 inline NewmarkPredictorCorrector npc_integrator(const io::Scene& scene) {
   NewmarkPredictorCorrector integrator;
   integrator.newmark_gamma = scene.newmark_gamma;
-  integrator.position_velocity = scene.npc_position_velocity == "corrected"   ? NewmarkPositionVelocity::corrected
-                                 : scene.npc_position_velocity == "predicted" ? NewmarkPositionVelocity::predicted
-                                                                              : NewmarkPositionVelocity::projected;
-  integrator.particle_velocity =
-      scene.npc_velocity == "average" ? NewmarkParticleVelocity::average : NewmarkParticleVelocity::eq32;
+  integrator.position_velocity = scene.npc_position_velocity;
+  integrator.particle_velocity = scene.npc_velocity;
   return integrator;
 }
 
 /// The scene's forward Euler, with its options.
 inline ForwardEuler fe_integrator(const io::Scene& scene) {
   ForwardEuler integrator;
-  integrator.position_velocity =
-      scene.fe_position_velocity == "updated" ? EulerPositionVelocity::updated : EulerPositionVelocity::start;
+  integrator.position_velocity = scene.fe_position_velocity;
   integrator.flip_fraction = scene.flip_fraction;
   return integrator;
 }
@@ -73,7 +68,7 @@ inline ForwardEuler fe_integrator(const io::Scene& scene) {
 inline UpdateStressLast stress_last_integrator(const io::Scene& scene) {
   UpdateStressLast integrator;
   integrator.stress_velocity =
-      scene.stress_update == "musl" ? StressLastVelocity::reprojected_particles : StressLastVelocity::updated_nodal;
+      scene.stress_update == io::StressUpdate::musl ? StressLastVelocity::reprojected_particles : StressLastVelocity::updated_nodal;
   integrator.position_velocity = fe_integrator(scene).position_velocity;
   integrator.flip_fraction = scene.flip_fraction;
   return integrator;
@@ -84,14 +79,16 @@ inline UpdateStressLast stress_last_integrator(const io::Scene& scene) {
 template <int Dim, class Visitor>
 auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit) {
   auto with_shape = [&](auto integrator) {
-    if (scene.shape == "ugimp") return visit(UgimpShape<Dim>(grid), integrator);
-    if (scene.shape == "bspline2") return visit(BsplineShape<Dim, 2>(grid), integrator);
-    if (scene.shape == "bspline3") return visit(BsplineShape<Dim, 3>(grid), integrator);
-    if (scene.shape == "lme") return visit(LmeShape<Dim>(grid, lme_options(scene)), integrator);
-    return visit(LinearShape<Dim>(grid), integrator);
+    switch (scene.shape) {
+      case io::ShapeKind::ugimp: return visit(UgimpShape<Dim>(grid), integrator);
+      case io::ShapeKind::bspline2: return visit(BsplineShape<Dim, 2>(grid), integrator);
+      case io::ShapeKind::bspline3: return visit(BsplineShape<Dim, 3>(grid), integrator);
+      case io::ShapeKind::lme: return visit(LmeShape<Dim>(grid, lme_options(scene)), integrator);
+      default: return visit(LinearShape<Dim>(grid), integrator);
+    }
   };
-  if (scene.integrator == "npc") return with_shape(npc_integrator(scene));
-  if (scene.stress_update != "usf") return with_shape(stress_last_integrator(scene));
+  if (scene.integrator == io::IntegratorKind::npc) return with_shape(npc_integrator(scene));
+  if (scene.stress_update != io::StressUpdate::usf) return with_shape(stress_last_integrator(scene));
   return with_shape(fe_integrator(scene));
 }
 
@@ -127,7 +124,7 @@ inline io::Scene load_scene(const std::string& path, const std::vector<std::stri
   io::SceneFile file = io::parse_scene_file(path);
   for (size_t k = 0; k < overrides.size(); ++k) io::apply_override(file, overrides[k], static_cast<int>(k) + 1);
   io::Scene scene = io::read_scene(file);
-  if (budget) io::check_budget(file, scene, *budget);
+  if (budget) io::check_budget(scene, *budget);
   return scene;
 }
 

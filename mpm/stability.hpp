@@ -110,17 +110,18 @@ StabilityLimits stability_limits(const io::Scene& scene, double relative_toleran
   limits.unknowns = limits.particles * linearised_states_per_particle<Dim>();
   // The highest mode, from forward Euler's energy-keeping step at CFL 0.1 with the scene's shape function.
   io::Scene plain = scene;
-  plain.integrator = "fe";
+  plain.integrator = io::IntegratorKind::fe;
   plain.flip_fraction = 1.0;
-  plain.stress_update = "usf";
+  plain.stress_update = io::StressUpdate::usf;
   const double probe_cfl = 0.1;
   limits.highest_mode = with_method<Dim>(plain, setup.model.grid, [&](auto shape, auto integrator) {
     return highest_mode_omega_dt(linearised_step_matrix(setup.model, setup.particles, shape, integrator, stability_time_step(setup, probe_cfl)));
   }) / probe_cfl;
-  const bool analysed = scene.integrator == "npc" || (scene.flip_fraction == 1.0 && scene.stress_update == "usf");
-  const ModeScheme scheme = scene.integrator == "fe"            ? ModeScheme::forward_euler
-                            : scene.npc_velocity == "average" ? ModeScheme::npc_average
-                                                              : ModeScheme::npc_eq32;
+  const bool fe = scene.integrator == io::IntegratorKind::fe;
+  const bool analysed = !fe || (scene.flip_fraction == 1.0 && scene.stress_update == io::StressUpdate::usf);
+  const ModeScheme scheme = fe                                                     ? ModeScheme::forward_euler
+                            : scene.npc_velocity == NewmarkParticleVelocity::average ? ModeScheme::npc_average
+                                                                                     : ModeScheme::npc_eq32;
   limits.cfl_limit_from_modes = analysed ? mode_stability_limit(scheme, scene.newmark_gamma) / limits.highest_mode
                                          : std::numeric_limits<double>::quiet_NaN();
   // Bisection on the spectral radius, in a bracket around the prediction when it holds one.

@@ -51,8 +51,25 @@ bad "^error: .*body\[0\].vertices: missing; a polygon needs its vertices" run "$
 bad "^error: .*body\[0\].vertices: only a body of shape = \"polygon\" has vertices" run "$disks" --out "$work/never" \
   --set 'body[0].vertices=[[0.05, 0.05], [0.45, 0.05], [0.05, 0.45]]'
 bad "^error: --set\(1\):1: body\[0\].shape: a 1D body is a box" run "$scenes/dyka_bar.toml" --out "$work/never" --set 'body[0].shape="ellipse"'
-bad "^error: .*body\[0\].vertices: the polygon holds no particle" run "$disks" --out "$work/never" --set 'body[0].shape="polygon"' \
+bad "^error: --set\(2\):1: body\[0\].vertices: the polygon holds no particle" run "$disks" --out "$work/never" --set 'body[0].shape="polygon"' \
   --set 'body[0].vertices=[[0.05, 0.05], [0.45, 0.05], [0.45, 0.051]]'
+# a polygon must be simple: the bow tie crosses itself
+bad "^error: --set\(2\):1: body\[0\].vertices: edges 0 and 2 meet .*: a polygon must be simple" run "$disks" --out "$work/never" \
+  --set 'body[0].shape="polygon"' --set 'body[0].vertices=[[0.05, 0.05], [0.45, 0.45], [0.45, 0.05], [0.05, 0.45]]'
+# the budget counts the polygon's vertices times its seeds: 10^4 vertices over 2.56e6 seeds are refused at once
+{ printf 'dimension = 2\n[grid]\nlength = [1.0, 1.0]\ncells = [20, 20]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n'
+  printf '[[body]]\nmin = [0.05, 0.05]\nmax = [0.45, 0.45]\nshape = "polygon"\nparticles_per_cell = [200, 200]\nvertices = '
+  awk 'BEGIN { printf "["; for (v = 0; v < 10000; v++) printf "%s[%.9f, %.9f]", (v ? ", " : ""), 0.25 + 0.19 * cos(v * 6.283185307179586 / 10000), 0.25 + 0.19 * sin(v * 6.283185307179586 / 10000); printf "]\n" }'
+  printf '[solver]\nend_time = 1.0\n'; } >"$work/polygon.toml"
+start=$(date +%s)
+bad "^error: $work/polygon.toml:13: body\[0\].vertices: 10000 vertices over 2\.56e\+06 seeds take 2\.56e\+10 point-in-polygon tests" \
+  run "$work/polygon.toml" --print-scene
+[[ $(($(date +%s) - start)) -le 10 ]] || fail "refusing a costly polygon took $(($(date +%s) - start)) s"
+# the soil column's height is its bodies' top: a grid reaching above it changes nothing in the exact solution
+"$mpm" exact "$scenes/soil_block.toml" --at 4.5,9.5 --times 0:5:20 >"$work/column.csv" 2>"$work/err" || fail "soil column: $(cat "$work/err")"
+"$mpm" exact "$scenes/soil_block.toml" --set 'grid.length=[10.0, 12.0]' --set 'grid.cells=[5, 6]' --at 4.5,9.5 --times 0:5:20 \
+  >"$work/taller.csv" 2>"$work/err" || fail "soil column under a taller grid: $(cat "$work/err")"
+cmp -s "$work/column.csv" "$work/taller.csv" || fail "the soil column's exact solution changed with the grid's height"
 # boxes: the Dyka bar split in two touching boxes is fine, overlapping ones are not
 "$mpm" run "$scenes/dyka_bar.toml" --out "$work/two" --set 'exact="none"' \
   --set 'body=[{min = [0.0], max = [0.033325]}, {min = [0.033325], max = [0.1333]}]' --set solver.end_time=1e-6 --set 'output.snapshots=[]' >/dev/null 2>"$work/err" ||

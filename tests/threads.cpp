@@ -38,7 +38,7 @@ void check_threads_agree(const mpm::io::Scene& base) {
   REQUIRE(mpm::chunks_of(setup.particles.size()) == mpm::max_chunks);
   REQUIRE((long(setup.particles.size()) << Dim) >= mpm::parallel_work);  // even the linear transfers (2^Dim nodes)
   mpm::io::Scene scene = base;
-  INFO(scene.shape, " + ", scene.integrator, ", stress update ", scene.stress_update, ", in ", Dim, "D");
+  INFO(mpm::io::name_of(scene.shape), " + ", mpm::io::name_of(scene.integrator), ", stress update ", mpm::io::name_of(scene.stress_update), ", in ", Dim, "D");
   FinalState<Dim> one;
   scene.control.threads = 1;
   mpm::run_setup<Dim>(scene, setup, one);

@@ -98,7 +98,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   // Forward Euler's velocity of the row at t_n is v(t_n + dt_n / 2), dt_n the step that starts there (the
   // last row takes the step before it); the recorder samples every step.
   std::vector<double> exact_own_time = result.exact;
-  if (scene.integrator == "fe")
+  if (scene.integrator == mpm::io::IntegratorKind::fe)
     for (size_t n = 0; n < result.time.size(); ++n) {
       const double step = n + 1 < result.time.size() ? result.time[n + 1] - result.time[n] : n > 0 ? result.time[n] - result.time[n - 1] : 0.0;
       exact_own_time[n] = bar.velocity(reference_position, result.time[n] + 0.5 * step);

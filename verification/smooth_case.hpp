@@ -73,7 +73,7 @@ struct ErrorMonitor : mpm::Monitor<Dim> {
 template <int Dim, class Exact>
 SmoothResult run_and_measure(const mpm::io::Scene& scene, const mpm::Setup<Dim>& setup, ErrorMonitor<Dim, Exact>& monitor,
                              double velocity_scale, double stress_scale) {
-  monitor.staggered = scene.integrator == "fe";
+  monitor.staggered = scene.integrator == mpm::io::IntegratorKind::fe;
   monitor.young_modulus = scene.young_modulus;
   monitor.cell_size = setup.model.grid.spacing();
   monitor.cfl = scene.control.cfl;

@@ -97,12 +97,12 @@ inline void write_summary(const std::vector<SoilOutcome>& outcomes, const std::s
   for (const auto& o : outcomes) {
     const auto& r = o.result;
     const auto& s = o.settlement;
-    out << r.name << "," << r.scene.shape << "," << r.scene.lme_gamma << "," << r.scene.integrator << "," << r.scene.spacing << ","
+    out << r.name << "," << mpm::io::name_of(r.scene.shape) << "," << r.scene.lme_gamma << "," << mpm::io::name_of(r.scene.integrator) << "," << r.scene.spacing << ","
         << r.scene.poisson_ratio << "," << r.reference_x << "," << r.reference_height << "," << r.steps << "," << r.wall_seconds << ","
         << r.solver_seconds << "," << s.final_displacement << "," << s.exact_final << "," << s.final_error << "," << s.rms_error << ","
         << s.mean_settlement << "," << s.swing << "," << s.static_small_strain << "," << s.static_log_strain << "," << s.energy_drift
         << "," << r.largest_mass_mismatch << "," << (r.failed ? "failed" : "ok") << "," << r.newton_mean << "," << r.newton_max << ","
-        << r.neighbours_mean << "," << r.scene.stress_update << "\n";
+        << r.neighbours_mean << "," << mpm::io::name_of(r.scene.stress_update) << "\n";
   }
 }
 

@@ -113,7 +113,7 @@ inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, st
   io::SceneFile file = io::parse_scene_file(options.scene_path);
   for (size_t k = 0; k < options.overrides.size(); ++k) io::apply_override(file, options.overrides[k], static_cast<int>(k) + 1);
   io::Scene scene = io::read_scene(file);
-  if (scene.exact == "none") {
+  if (scene.exact == io::ExactKind::none) {
     err << "error: " << options.scene_path << ": exact: the scene names no exact solution (exact = \"none\"); give one of "
         << "dyka_bar, soil_column, vibrating_bar, manufactured_small, manufactured_large (mpm exact --help)\n";
     return std::nullopt;
@@ -123,7 +123,7 @@ inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, st
     return std::nullopt;
   }
   if (options.strain == "finite" && !io::has_finite_strain_reference(scene.exact)) {
-    err << "error: --strain: '" << scene.exact << "' has no finite-strain reference (soil_column and vibrating_bar have one)\n";
+    err << "error: --strain: '" << io::name_of(scene.exact) << "' has no finite-strain reference (soil_column and vibrating_bar have one)\n";
     return std::nullopt;
   }
   if (options.points.empty()) {
@@ -156,7 +156,7 @@ inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, st
 /// 4000 times and SceneExactSolution::most_finite_strain_steps steps. False, with a line on `err`, beyond.
 inline bool finite_strain_times_fit(const io::Scene& scene, const std::string& strain, const std::vector<double>& times,
                                     const std::string& option, std::ostream& err) {
-  if (strain != "finite" || scene.exact != "vibrating_bar") return true;
+  if (strain != "finite" || scene.exact != io::ExactKind::vibrating_bar) return true;
   if (times.size() > 4000) {
     err << "error: " << option << ": at most 4000 times for the finite-strain vibrating bar (it keeps the bar's state at each)\n";
     return false;
@@ -204,8 +204,9 @@ inline const char* exact_solutions =
     "                        piecewise-constant initial velocity (m/s) from body.velocity, [initial_field] velocity and\n"
     "                        [[initial_velocity]] boxes (later boxes win), initial stress (Pa) from [initial_field] stress\n"
     "                        (default 0); every jump located to 1e-14 L\n"
-    "    soil_column         2D column on a roller base under gravity (paper/07_exact_column.md): H = grid.length[1] (m),\n"
-    "                        M = E(1 - nu)/((1 + nu)(1 - 2 nu)) (Pa), rho, g = -gravity.acceleration[1] (m/s^2), the\n"
+    "    soil_column         2D column on a roller base under gravity (paper/07_exact_column.md): H = the top of its\n"
+    "                        bodies above grid.origin (m; the grid may reach higher), M = E(1 - nu)/((1 + nu)(1 - 2 nu))\n"
+    "                        (Pa), rho, g = -gravity.acceleration[1] (m/s^2), the\n"
     "                        ramp of Eq. (44) with T = gravity.ramp_period (s; 0: none); 200 modes; sigma_xx =\n"
     "                        nu/(1 - nu) sigma_yy. --strain finite: the static settlement at finite (logarithmic)\n"
     "                        strain under full gravity, at every t (v = 0)\n"

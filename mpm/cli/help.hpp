@@ -20,6 +20,9 @@
 #include "mpm/cli/stability_command.hpp"
 #include "mpm/io/scene_keys.hpp"
 
+#include <cstdlib>
+#include <fstream>
+
 namespace mpm::cli {
 
 inline const char* exit_codes =
@@ -30,18 +33,21 @@ inline const char* exit_codes =
     "     could not be written (`cannot write`): one line on stderr; what was written so far is kept\n"
     "  130, 143  SIGINT or SIGTERM stopped the run (run.json says \"interrupted\")\n";
 
+/// A key's default as the help and README show it: `0.5`, `0.0 per axis`, `required`, `none` (optional).
+inline std::string default_text(const io::SceneKey& key) {
+  if (!key.fallback) return "required";
+  if (key.is_optional()) return "none";
+  return std::string(key.fallback) + (key.per_axis ? " per axis" : "");
+}
+
 /// Every scene key with its default, unit and meaning, one line each.
 inline std::string scene_keys_help() {
   std::ostringstream out;
   out << "Scene keys (TOML; body[].min is `min` of every [[body]]; \"per axis\": the default on every axis;\n"
          "`required`: no default; `none`: optional, absent unless given):\n";
-  auto default_text = [](const io::SceneKey& key) {
-    if (!key.fallback) return std::string(key.optional ? "none" : "required");
-    return std::string(key.fallback) + (key.per_axis ? " per axis" : "");
-  };
   size_t key_width = 0, default_width = 0, unit_width = 0;
   for (const auto& key : io::scene_keys()) {
-    key_width = std::max(key_width, std::string(key.key).size());
+    key_width = std::max(key_width, key.key.size());
     default_width = std::max(default_width, default_text(key).size());
     unit_width = std::max(unit_width, std::string(key.unit).size());
   }
@@ -51,6 +57,20 @@ inline std::string scene_keys_help() {
     out << "  " << padded(key.key, key_width) << padded(default_text(key), default_width) << padded(key.unit, unit_width)
         << key.meaning << "\n";
   return out.str();
+}
+
+/// README's table of scene keys, one row per key (README.md, between the lines `<!-- scene keys -->` and
+/// `<!-- /scene keys -->`; the doctest below holds README to it).
+inline std::string scene_keys_markdown() {
+  std::string table = "| key | default | unit | meaning |\n|---|---|---|---|\n";
+  for (const auto& key : io::scene_keys()) {
+    std::string meaning;
+    for (char character : std::string(key.meaning)) meaning += character == '|' ? std::string("\\|") : std::string(1, character);
+    std::string fallback = default_text(key);
+    if (key.fallback && *key.fallback) fallback = "`" + std::string(key.fallback) + "`" + (key.per_axis ? " per axis" : "");
+    table += "| `" + key.key + "` | " + fallback + " | " + key.unit + " | " + meaning + " |\n";
+  }
+  return table;
 }
 
 /// `mpm --help`
@@ -84,7 +104,8 @@ TEST_CASE("mpm help: every scene key with its default and unit, and the exit cod
     const auto line_start = help.find("\n  " + std::string(key.key) + " ");
     REQUIRE(line_start != std::string::npos);
     const std::string line = help.substr(line_start + 1, help.find('\n', line_start + 1) - line_start - 1);
-    CHECK(line.find(key.fallback ? key.fallback : key.optional ? "none" : "required") != std::string::npos);
+    CHECK(line.find(default_text(key)) != std::string::npos);
+    for (const std::string& choice : key.choices) CHECK(line.find(choice) != std::string::npos);  // every word a choice takes
     CHECK(line.find(std::string("  ") + key.unit + "  ") != std::string::npos);
   }
   for (const std::string command : {"run", "shape", "plot", "exact", "stability", ""})
@@ -98,5 +119,30 @@ TEST_CASE("mpm help: every scene key with its default and unit, and the exit cod
   CHECK(asks_for_help({"--dim", "1", "-h"}));
   CHECK(!asks_for_help({"--dim", "1"}));
 }
+
+#ifdef MPM_SOURCE_DIR
+TEST_CASE("README's table of scene keys is the table of mpm/io/scene_keys.hpp (MPM_UPDATE_README=1 rewrites it)") {
+  const std::string path = std::string(MPM_SOURCE_DIR) + "/README.md";
+  std::ifstream in(path);
+  std::stringstream read;
+  read << in.rdbuf();
+  std::string readme = read.str();
+  const std::string begin = "<!-- scene keys -->\n", end = "<!-- /scene keys -->";
+  const auto from = readme.find(begin), to = readme.find(end);
+  REQUIRE_MESSAGE((from != std::string::npos && to != std::string::npos && from < to), "README.md lacks the markers " << begin << end);
+  const std::string given = readme.substr(from + begin.size(), to - from - begin.size()), wanted = scene_keys_markdown();
+  if (given != wanted && std::getenv("MPM_UPDATE_README")) {
+    std::ofstream(path) << readme.replace(from + begin.size(), to - from - begin.size(), wanted);
+    return;
+  }
+  std::istringstream given_rows(given), wanted_rows(wanted);
+  for (std::string a, b; std::getline(wanted_rows, b);) {
+    if (!std::getline(given_rows, a)) a = "(no row)";
+    CHECK_MESSAGE(a == b, "README.md's row differs from the key's declaration; want:\n" << b);
+    if (a != b) break;  // one row named: the key that differs
+  }
+  CHECK(given.size() == wanted.size());
+}
+#endif
 
 }  // namespace mpm::cli

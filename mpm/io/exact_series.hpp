@@ -54,10 +54,10 @@ template <int Dim>
 class ExactWriter : public Monitor<Dim> {
  public:
   ExactWriter(const std::string& folder, const Scene& scene, const Particles<Dim>& initial, Monitor<Dim>& next) : next_(next) {
-    if (scene.exact == "none") return;
+    if (scene.exact == ExactKind::none) return;
     for (const auto& observer : scene.observers) reference_.push_back(observer.position);  // the material point named
     std::optional<std::vector<exact::BarPiece>> pieces;
-    if (scene.exact == "dyka_bar") pieces = bar_pieces(scene, initial);
+    if (scene.exact == ExactKind::dyka_bar) pieces = bar_pieces(scene, initial);
     solution_ = std::make_unique<SceneExactSolution>(scene, StrainMeasure::small, std::vector<double>{}, pieces);
     columns_ = exact_columns(scene.exact);
     out_ = std::make_unique<OutputFile>(folder + "/exact.csv");
@@ -69,9 +69,9 @@ class ExactWriter : public Monitor<Dim> {
 
   /// The columns per observer: dyka_bar and vibrating_bar v_x, sigma_xx; soil_column u_y (the settlement,
   /// beside observers.csv's NAME.u_y), sigma_yy; the manufactured solutions v and sigma.
-  static std::vector<std::string> exact_columns(const std::string& exact) {
-    if (exact == "soil_column") return {"u_y", "sigma_yy"};
-    if (exact == "dyka_bar" || exact == "vibrating_bar") return {"v_x", "sigma_xx"};
+  static std::vector<std::string> exact_columns(ExactKind exact) {
+    if (exact == ExactKind::soil_column) return {"u_y", "sigma_yy"};
+    if (exact == ExactKind::dyka_bar || exact == ExactKind::vibrating_bar) return {"v_x", "sigma_xx"};
     return {"v_x", "v_y", "sigma_xx", "sigma_yy", "sigma_xy"};
   }
 

@@ -74,7 +74,7 @@ inline std::string quantity_unit(const std::string& quantity) {
 }
 
 /// True if the scene's exact solution has a finite-strain reference (StrainMeasure::finite).
-inline bool has_finite_strain_reference(const std::string& exact) { return exact == "soil_column" || exact == "vibrating_bar"; }
+inline bool has_finite_strain_reference(ExactKind exact) { return exact == ExactKind::soil_column || exact == ExactKind::vibrating_bar; }
 
 namespace detail {
 
@@ -153,14 +153,14 @@ class SceneExactSolution {
   SceneExactSolution(const Scene& scene, StrainMeasure strain, const std::vector<double>& times = {},
                      std::optional<std::vector<exact::BarPiece>> pieces = std::nullopt)
       : scene_(scene), strain_(strain) {
-    const std::string& name = scene.exact;
-    if (name == "none")
-      throw SceneError(scene.file, 0, "exact", "the scene names no exact solution (exact = \"none\"); give one of dyka_bar, "
+    const ExactKind name = scene.exact;
+    if (name == ExactKind::none)
+      throw scene_error(scene, "exact", "the scene names no exact solution (exact = \"none\"); give one of dyka_bar, "
                                                "soil_column, vibrating_bar, manufactured_small, manufactured_large");
     if (strain == StrainMeasure::finite && !has_finite_strain_reference(name))
-      throw std::invalid_argument("'" + name + "' has no separate finite-strain reference (only soil_column and vibrating_bar)");
+      throw std::invalid_argument("'" + name_of(name) + "' has no separate finite-strain reference (only soil_column and vibrating_bar)");
     const double E = scene.young_modulus, rho = scene.density, nu = scene.poisson_ratio;
-    if (name == "dyka_bar") {
+    if (name == ExactKind::dyka_bar) {
       const std::vector<exact::BarPiece> data = pieces ? *pieces : detail::scene_bar_pieces(scene);
       bar_ = std::make_unique<exact::ElasticBar>(scene.length[0], E, rho, data);
       double velocity = 0.0;
@@ -170,15 +170,15 @@ class SceneExactSolution {
       scale_stress_ = bar_->impedance() * velocity;
       scale_displacement_ = velocity * scene.length[0] / bar_->wave_speed();
       period_ = 4.0 * scene.length[0] / bar_->wave_speed();
-    } else if (name == "soil_column") {
-      const double M = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)), g = -scene.gravity[1], H = scene.length[1];
+    } else if (name == ExactKind::soil_column) {
+      const double M = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)), g = -scene.gravity[1], H = column_height(scene);
       column_ = std::make_unique<exact::SoilColumn>(H, M, rho, g, scene.ramp_period);
       column_finite_ = std::make_unique<exact::SoilColumnLogStrain>(H, M, rho, g);
       scale_stress_ = rho * g * H;
       scale_displacement_ = rho * g * H * H / (2.0 * M);
       scale_velocity_ = g * H / column_->wave_speed();
       period_ = 4.0 * H / column_->wave_speed();
-    } else if (name == "vibrating_bar") {
+    } else if (name == ExactKind::vibrating_bar) {
       const double V = *scene.exact_velocity_amplitude;
       vibrating_ = std::make_unique<exact::VibratingBar>(scene.length[0], E, rho, V, scene.exact_mode);
       if (strain == StrainMeasure::finite) {
@@ -189,7 +189,7 @@ class SceneExactSolution {
           vibrating_finite_ = std::make_unique<exact::FiniteStrainBar>(scene.length[0], E, rho, V, finite_strain_cells, times_,
                                                                        scene.exact_mode);
         } catch (const std::runtime_error& failure) {
-          throw SceneError(scene.file, 0, "exact_parameters.velocity_amplitude", failure.what());
+          throw scene_error(scene, "exact_parameters.velocity_amplitude", failure.what());
         }
       }
       scale_velocity_ = std::abs(V);
@@ -200,7 +200,7 @@ class SceneExactSolution {
       const exact::ManufacturedMaterial material{scene.length[0], E, nu, rho};
       const std::vector<double>& a = scene.exact_displacement_amplitude;
       period_ = 2.0 * exact::ManufacturedMaterial::pi / material.angular_frequency();
-      if (name == "manufactured_small") {
+      if (name == ExactKind::manufactured_small) {
         small_ = std::make_unique<exact::ManufacturedSmall>(material, a[0]);
         scale_velocity_ = small_->velocity_scale();
         scale_stress_ = small_->stress_scale();

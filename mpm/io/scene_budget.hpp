@@ -21,6 +21,7 @@
 #include <sstream>
 #include <string>
 
+#include "mpm/core/parallel.hpp"
 #include "mpm/io/scene.hpp"
 
 namespace mpm::io {
@@ -84,12 +85,16 @@ struct SceneCost {
   double particle_bytes = 0.0, node_bytes = 0.0;
   double time_step = 0.0, steps = 0.0;  ///< Eq. (42) at t = 0, and end_time over it
   int largest_body = 0;                 ///< the body with most particles
+  double shape_tests = 0.0;             ///< seeds times vertices of the polygon with most (seeding tests each seed)
+  int costliest_polygon = -1;           ///< that polygon's body; -1: none
   double bytes() const { return particle_bytes + node_bytes; }
 };
 
 /// The estimate. Memory counts every per-particle array of Particles three times (seeding grows
 /// the vectors by doubling, and the simulation holds its own copy), the stencils (node, N, grad N
-/// per stencil entry), the shape's per-particle state and the nodal fields of GridFields.
+/// per stencil entry), the shape's per-particle state, the nodal fields of GridFields and their copies,
+/// one per chunk of the particle-to-grid scatter beyond the first (mpm/core/parallel.hpp): in 1D, where
+/// a grid of many cells may hold few particles, the copies are most of the memory.
 /// The stencil capacity is 2^d (linear), 3^d (uGIMP, l_p <= h/2), (2R/h + 2)^d (LME, a bound).
 inline SceneCost estimate_cost(const Scene& scene) {
   const int d = scene.dimension;
@@ -100,21 +105,24 @@ inline SceneCost estimate_cost(const Scene& scene) {
     double count = 1.0;
     for (int axis = 0; axis < d; ++axis)
       count *= std::round((body.max[axis] - body.min[axis]) / scene.spacing) * body.particles_per_cell[axis];
-    if (body.shape == "file") count = static_cast<double>(body.particles.size());
+    if (body.shape == BodyShape::Kind::file) count = static_cast<double>(body.particles.size());
     cost.particles += count;
     if (count > per_cell_most) per_cell_most = count, cost.largest_body = static_cast<int>(k);
+    if (count * static_cast<double>(body.vertices.size()) > cost.shape_tests)
+      cost.shape_tests = count * static_cast<double>(body.vertices.size()), cost.costliest_polygon = static_cast<int>(k);
   }
   cost.nodes = 1.0;
   for (int axis = 0; axis < d; ++axis)
     cost.nodes *= static_cast<double>(scene.cells[axis]) + scene.margin_min[axis] + scene.margin_max[axis] + 1.0;
-  if (scene.shape == "linear") cost.nodes_per_particle = std::pow(2.0, d);
-  else if (scene.shape == "ugimp" || scene.shape == "bspline2") cost.nodes_per_particle = std::pow(3.0, d);
-  else if (scene.shape == "bspline3") cost.nodes_per_particle = std::pow(4.0, d);
+  if (scene.shape == ShapeKind::linear) cost.nodes_per_particle = std::pow(2.0, d);
+  else if (scene.shape == ShapeKind::ugimp || scene.shape == ShapeKind::bspline2) cost.nodes_per_particle = std::pow(3.0, d);
+  else if (scene.shape == ShapeKind::bspline3) cost.nodes_per_particle = std::pow(4.0, d);
   else cost.nodes_per_particle = std::pow(2.0 * std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 2.0, d);
   const double particle_arrays = 4 + 8 + 8 + 5 * 8.0 * d + 2 * 8.0 * d * d + 8 + 4;  // Particles<Dim>
   const double stencil = 4 + cost.nodes_per_particle * (4 + 8 + 8.0 * d);         // Stencils<Dim>
   cost.particle_bytes = cost.particles * (3 * particle_arrays + stencil + 8.0 * d);
-  cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d);  // GridFields<Dim>: m_I and seven vector fields
+  const double copies = std::clamp(std::floor(cost.particles / items_per_chunk), 1.0, double(max_chunks)) - 1.0;
+  cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d + copies * (8 + 3 * 8.0 * d));  // GridFields<Dim>: m_I, seven vector fields, copies
   auto norm = [](const std::vector<double>& v) { return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0)); };
   double fastest = 0.0;  // the fastest particle at t = 0
   for (const auto& body : scene.bodies) {
@@ -143,11 +151,15 @@ inline std::string bytes_text(double bytes) {
 
 }  // namespace detail
 
-/// Refuses a scene whose estimated size exceeds the budget or the code's 32-bit indices.
+/// The most point-in-polygon tests (a seed against an edge, about 1 ns each) that seeding one body may take.
+inline constexpr double most_seeding_tests = 1e10;
+
+/// Refuses a scene whose estimated size exceeds the budget or the code's 32-bit indices, or whose polygon takes
+/// more than most_seeding_tests to seed.
 /// \throws SceneError naming the key that makes the run large: the largest grid entry when the
 /// nodes dominate, lme_gamma for a very wide LME support, else particles_per_cell or grid.cells of
-/// the body with most particles; solver.end_time for too many time steps.
-inline void check_budget(const SceneFile& file, const Scene& scene, const Budget& budget) {
+/// the body with most particles; the polygon's vertices; solver.end_time for too many time steps.
+inline void check_budget(const Scene& scene, const Budget& budget) {
   const SceneCost cost = estimate_cost(scene);
   const double max_bytes = budget.max_bytes > 0.0 ? budget.max_bytes : default_max_memory();
   const double most_index = std::numeric_limits<int>::max();
@@ -162,34 +174,35 @@ inline void check_budget(const SceneFile& file, const Scene& scene, const Budget
            << (budget.max_bytes > 0.0 ? " (--max-memory)" : " (half this machine's memory; --max-memory BYTES|<n>G to change it)");
     else
       what << "; the code indexes nodes and stencil entries with 32-bit integers, at most 2^31 - 1 of each";
-    SceneReader grid(file, *file.table["grid"].as_table(), "grid");
     if (cost.node_bytes >= cost.particle_bytes || cost.nodes > most_index) {
       std::string key = "cells";
       int largest = 0;
       for (const auto& [name, values] : {std::pair{"cells", &scene.cells}, {"margin_min", &scene.margin_min}, {"margin_max", &scene.margin_max}})
         for (int value : *values)
           if (value > largest) largest = value, key = name;
-      grid.fail(key, what.str());
+      throw scene_error(scene, std::string("grid.") + key, what.str());
     }
-    if (scene.shape == "lme" && cost.nodes_per_particle > 256) {
-      SceneReader solver(file, *file.table["solver"].as_table(), "solver");
-      solver.fail("lme_gamma", what.str() + "; a larger lme_gamma narrows the support");
-    }
+    if (scene.shape == ShapeKind::lme && cost.nodes_per_particle > 256)
+      throw scene_error(scene, "solver.lme_gamma", what.str() + "; a larger lme_gamma narrows the support");
     const int k = cost.largest_body;
     const BodySettings& body = scene.bodies[k];
     double per_cell = 1.0, cells = 1.0;
     for (int axis = 0; axis < scene.dimension; ++axis)
       per_cell *= body.particles_per_cell[axis], cells *= std::round((body.max[axis] - body.min[axis]) / scene.spacing);
-    if (per_cell > cells) {
-      SceneReader reader(file, *(*file.table["body"].as_array())[k].as_table(), "body[" + std::to_string(k) + "]");
-      reader.fail("particles_per_cell", what.str());
-    }
-    grid.fail("cells", what.str());
+    if (per_cell > cells) throw scene_error(scene, "body[" + std::to_string(k) + "].particles_per_cell", what.str());
+    throw scene_error(scene, "grid.cells", what.str());
+  }
+  if (cost.shape_tests > most_seeding_tests) {  // seeding tests every seed of a polygon's box against its every edge
+    const BodySettings& body = scene.bodies[cost.costliest_polygon];
+    std::ostringstream what;
+    what << std::setprecision(3) << body.vertices.size() << " vertices over " << cost.shape_tests / body.vertices.size()
+         << " seeds take " << cost.shape_tests << " point-in-polygon tests to seed, more than " << most_seeding_tests
+         << " (about 10 s); give fewer vertices, or fewer particles_per_cell";
+    throw scene_error(scene, "body[" + std::to_string(cost.costliest_polygon) + "].vertices", what.str());
   }
   // Beyond 2^50 steps t + dt == t may hold in double precision and time would stop: never run.
   const bool endless = !(cost.steps <= std::pow(2.0, 50));
   if (endless || (cost.steps > budget.max_steps && !budget.force)) {
-    SceneReader solver(file, *file.table["solver"].as_table(), "solver");
     std::ostringstream what;
     what << std::setprecision(3) << "end_time / dt = " << scene.control.end_time << " s / " << cost.time_step << " s = " << cost.steps
          << " time steps (dt of Eq. (42) at t = 0: cfl h / wave or particle speed)";
@@ -198,7 +211,7 @@ inline void check_budget(const SceneFile& file, const Scene& scene, const Budget
     else
       what << ", more than the limit of " << budget.max_steps
            << "; shorten end_time or coarsen the grid, or raise the limit (--max-steps N) or lift it (--force)";
-    solver.fail("end_time", what.str());
+    throw scene_error(scene, "solver.end_time", what.str());
   }
 }
 
@@ -231,7 +244,7 @@ TEST_CASE("Scene budget: sizes are estimated without overflow and the key that m
     try {
       SceneFile scene = parse_scene_text(text, "b.toml");
       for (std::size_t k = 0; k < overrides.size(); ++k) apply_override(scene, overrides[k], static_cast<int>(k) + 1);
-      check_budget(scene, read_scene(scene), budget);
+      check_budget(read_scene(scene), budget);
     } catch (const SceneError& error) {
       return error.message();
     }
@@ -250,6 +263,24 @@ TEST_CASE("Scene budget: sizes are estimated without overflow and the key that m
   Budget few_steps;
   few_steps.max_steps = 100;
   CHECK(message_of(bar, {}, few_steps).rfind("error: b.toml:14: solver.end_time: end_time / dt = 1 s / 0.005 s = 200 time steps", 0) == 0);
+  // 1D: 10^6 cells under 2048 particles, 16 chunks of the scatter clamped to 8, 7 copies of m_I, p_I, v_I, f_I per node
+  const SceneCost long_bar = estimate_cost(read_scene(parse_scene_text(
+      "[grid]\nlength = [1.0]\ncells = [1000000]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
+      "[[body]]\nmin = [0.0]\nmax = [0.002048]\n[solver]\nend_time = 1e-9\n", "l.toml")));
+  CHECK(long_bar.particles == 2048.0);
+  CHECK(long_bar.node_bytes == 1000001.0 * (8 + 7 * 8 + 7 * (8 + 3 * 8)));
+  // a polygon of 3000 vertices over 10^8 seeds: 3e11 tests to seed, named at its vertices
+  std::string circle = "[";
+  for (int v = 0; v < 3000; ++v)
+    circle += (v ? ", [" : "[") + std::to_string(0.5 + 0.4 * std::cos(v * 2.0 * M_PI / 3000)) + ", " +
+              std::to_string(0.5 + 0.4 * std::sin(v * 2.0 * M_PI / 3000)) + "]";
+  const std::string disk = "dimension = 2\n[grid]\nlength = [1.0, 1.0]\ncells = [100, 100]\n[material]\nyoung_modulus = 1.0\n"
+                           "density = 1.0\n[[body]]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\nshape = \"polygon\"\nvertices = " + circle +
+                           "]\nparticles_per_cell = [100, 100]\n[solver]\nend_time = 1e-9\n";
+  Budget plenty;
+  plenty.max_bytes = 1e15;
+  CHECK(message_of(disk, {}, plenty).rfind("error: b.toml:12: body[0].vertices: 3000 vertices over 1e+08 seeds take 3e+11", 0) == 0);
+  CHECK(message_of(disk, {"body[0].particles_per_cell=[10, 10]"}, plenty) == "no error");  // 3e9 tests
   few_steps.force = true;
   CHECK(message_of(bar, {}, few_steps) == "no error");
   CHECK(message_of(bar, {"solver.end_time=1e20"}, few_steps).find("no run can take that many steps") != std::string::npos);

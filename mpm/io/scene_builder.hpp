@@ -47,11 +47,11 @@ struct ManufacturedMotion {
 
 /// The scene's manufactured motion; nullopt for any other exact solution.
 inline std::optional<ManufacturedMotion> manufactured_motion(const Scene& scene) {
-  if (scene.exact != "manufactured_small" && scene.exact != "manufactured_large") return std::nullopt;
+  if (scene.exact != ExactKind::manufactured_small && scene.exact != ExactKind::manufactured_large) return std::nullopt;
   const exact::ManufacturedMaterial material{scene.length[0], scene.young_modulus, scene.poisson_ratio, scene.density};
   const std::vector<double>& a = scene.exact_displacement_amplitude;
   ManufacturedMotion motion;
-  if (scene.exact == "manufactured_small") motion.small = std::make_shared<exact::ManufacturedSmall>(material, a[0]);
+  if (scene.exact == ExactKind::manufactured_small) motion.small = std::make_shared<exact::ManufacturedSmall>(material, a[0]);
   else motion.large = std::make_shared<exact::ManufacturedLarge>(material, a[0], a[1]);
   return motion;
 }
@@ -85,8 +85,8 @@ Model<Dim> build_model(const Scene& scene) {
     // A fixed face is a rigid wall at the face of the scene's box [origin, origin + length]: its
     // nodes and the margin nodes beyond it are held, so a support that reaches past the wall
     // (uGIMP, LME) meets rigid nodes, as ghost nodes behind a wall are in GIMP practice.
-    const int axis = fixed.axis, face = scene.margin_min[axis] + (fixed.upper ? scene.cells[axis] : 0);
-    const int first = fixed.upper ? face : 0, last = fixed.upper ? model.grid.cells(axis) : face;
+    const int axis = fixed.axis(), face = scene.margin_min[axis] + (fixed.upper() ? scene.cells[axis] : 0);
+    const int first = fixed.upper() ? face : 0, last = fixed.upper() ? model.grid.cells(axis) : face;
     for (int layer = first; layer <= last; ++layer) {
       const auto dofs = fixed_dofs_on_face(model.grid, Face{axis, layer}, fixed.components);
       model.fixed.insert(model.fixed.end(), dofs.begin(), dofs.end());
@@ -111,7 +111,7 @@ Model<Dim> build_model(const Scene& scene) {
 /// always fit, a file's may not. \throws SceneError located at the particle's row of the file.
 inline void check_file_particle_for_ugimp(const Scene& scene, const BodySettings& body, const FileParticle& particle,
                                           double half_length) {
-  if (scene.shape != "ugimp" || half_length / scene.spacing <= 1.0) return;  // as UgimpShape::set_half_length tests it
+  if (scene.shape != ShapeKind::ugimp || half_length / scene.spacing <= 1.0) return;  // as UgimpShape::set_half_length tests it
   namespace fs = std::filesystem;
   const fs::path path = fs::path(body.file).is_absolute() ? fs::path(body.file) : fs::path(scene.file).parent_path() / body.file;
   std::ostringstream message;
@@ -128,7 +128,7 @@ Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
     const BodySettings& body = scene.bodies[k];
     const int material = body_material(scene, k);
     const double density = body.material.density;
-    if (body.shape == "file") {  // its particles as read (mpm/io/particle_file.hpp); l_p = V^(1/Dim) / 2 per axis
+    if (body.shape == BodyShape::Kind::file) {  // its particles as read (mpm/io/particle_file.hpp); l_p = V^(1/Dim) / 2 per axis
       for (const FileParticle& particle : body.particles) {
         const double position[2] = {particle.x, particle.y}, velocity[2] = {particle.v_x, particle.v_y};
         Vector<Dim> x, v;
@@ -143,11 +143,11 @@ Particles<Dim> build_particles(const Scene& scene, const Grid<Dim>& grid) {
     for (int axis = 0; axis < Dim; ++axis) per_cell[axis] = body.particles_per_cell[axis];
     const int before = particles.size();
     const int added = fill_box(grid, to_vector<Dim>(body.min), to_vector<Dim>(body.max), per_cell, density, to_vector<Dim>(body.velocity),
-                               body.placement == "gauss" ? Placement::gauss : Placement::uniform, particles, body_shape(body));
+                               body.placement, particles, body_shape(body));
     std::fill(particles.material.begin() + before, particles.material.end(), material);
     if (added == 0)  // a polygon thinner than the particle spacing: its box holds seeds, none inside it
-      throw SceneError(scene.file, 0, "body[" + std::to_string(k) + "].vertices",
-                       "the polygon holds no particle: make it wider than the particle spacing, or raise particles_per_cell");
+      throw scene_error(scene, "body[" + std::to_string(k) + "].vertices",
+                        "the polygon holds no particle: make it wider than the particle spacing, or raise particles_per_cell");
   }
   apply_scene_formulas<Dim>(scene.formulas, materials_of(scene),
                             scene.control.end_time, particles);  // [initial_field], before the boxes

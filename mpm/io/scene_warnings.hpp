@@ -22,29 +22,12 @@
 
 namespace mpm::io {
 
-/// `FILE:LINE` of a key given by its full path ("solver.cfl", "observer[0].position"): `--set(n):1` if
-/// an override set it, the line of its table if the scene leaves it to its default.
-inline std::string location_of(const SceneFile& file, const std::string& full_key) {
-  if (auto override = file.overridden.find(full_key); override != file.overridden.end()) return override->second + ":1";
-  const toml::node* node = &file.table;
-  int line = 0;
-  for (const auto& part : split_key_path(full_key)) {
-    const toml::node* next = nullptr;
-    if (part[0] == '[' && node->is_array()) next = node->as_array()->get(std::stoul(part.substr(1)));
-    else if (node->is_table()) next = node->as_table()->get(part);
-    if (!next) break;
-    node = next;
-    line = line_of(*node);
-  }
-  return file.path + ":" + std::to_string(line);
-}
-
 /// The warnings of a validated scene, one line each; cfl_limit is the method's largest stable CFL (NaN: not known).
-inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scene& scene,
-                                               double cfl_limit = std::numeric_limits<double>::quiet_NaN()) {
+/// Each is located where the scene gives its key (its table's line when it leaves the key to its default).
+inline std::vector<std::string> scene_warnings(const Scene& scene, double cfl_limit = std::numeric_limits<double>::quiet_NaN()) {
   std::vector<std::string> warnings;
   auto warn = [&](const std::string& key, const std::string& what) {
-    warnings.push_back("warning: " + location_of(file, key) + ": " + key + ": " + what);
+    warnings.push_back("warning:" + scene_error(scene, key, what).message().substr(std::string("error:").size()));
   };
   const int dim = scene.dimension;
   const double tolerance = 1e-9 * scene.spacing;
@@ -64,13 +47,13 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
   for (size_t k = 0; k < scene.initial_velocities.size(); ++k) {  // a box that holds no particle sets nothing
     const VelocityBox& box = scene.initial_velocities[k];
     bool touched = false;
-    double seeds = 0.0;
+    double seeds = 0.0, shape_tests = 0.0;
     for (const auto& body : scene.bodies) {
       double count = 1.0;
       for (int axis = 0; axis < dim; ++axis) count *= (body.max[axis] - body.min[axis]) / scene.spacing * body.particles_per_cell[axis];
-      seeds += count;
+      seeds += count, shape_tests += count * static_cast<double>(body.vertices.size());
     }
-    if (seeds > 1e7) continue;  // too many particles to look at here: no warning
+    if (seeds > 1e7 || shape_tests > detail::most_shape_tests) continue;  // too many particles to look at here: no warning
     for (const auto& body : scene.bodies) {
       for (const auto& particle : body.particles) {  // a body read from a file: its own particles
         const double x[2] = {particle.x, particle.y};
@@ -78,12 +61,11 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
         for (int axis = 0; axis < dim; ++axis) inside = inside && x[axis] >= box.min[axis] && x[axis] <= box.max[axis];
         touched = touched || inside;
       }
-      if (body.shape == "file") {
+      if (body.shape == BodyShape::Kind::file) {
         if (touched) break;
         continue;
       }
       const BodyShape shape = body_shape(body);
-      const Placement placement = body.placement == "gauss" ? Placement::gauss : Placement::uniform;
       auto visit = [&](const auto& x) {
         bool inside = shape.holds(x[0], x[dim - 1]);
         for (int axis = 0; axis < dim; ++axis) inside = inside && x[axis] >= box.min[axis] && x[axis] <= box.max[axis];
@@ -92,30 +74,29 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
       };
       if (dim == 1)
         for_each_seed<1>(Vector<1>(scene.origin[0]), scene.spacing, Vector<1>(body.min[0]), Vector<1>(body.max[0]),
-                         {body.particles_per_cell[0]}, placement, visit);
+                         {body.particles_per_cell[0]}, body.placement, visit);
       else
         for_each_seed<2>(Vector<2>(scene.origin[0], scene.origin[1]), scene.spacing, Vector<2>(body.min[0], body.min[1]),
-                         Vector<2>(body.max[0], body.max[1]), {body.particles_per_cell[0], body.particles_per_cell[1]}, placement, visit);
+                         Vector<2>(body.max[0], body.max[1]), {body.particles_per_cell[0], body.particles_per_cell[1]}, body.placement, visit);
       if (touched) break;
     }
     if (!touched) warn("initial_velocity[" + std::to_string(k) + "].min", "the box holds no particle: it sets no velocity");
   }
   if (scene.control.cfl > cfl_limit) {  // false when the limit is NaN
+    const bool npc = scene.integrator == IntegratorKind::npc;
     char what[400];
     std::snprintf(what, sizeof what,
                   "%g is above the stability limit %.3f of %s shapes with %s%s, from the method's own linearised step "
                   "(`mpm stability`, paper/10_integrator_analysis.md); expect the run to stop with energy growth (exit 3)",
-                  scene.control.cfl, cfl_limit, scene.shape.c_str(),
-                  scene.integrator == "npc" ? "the predictor-corrector" : "forward Euler",
-                  scene.integrator == "npc" && scene.npc_velocity == "average" ? " (Newmark average)" : "");
+                  scene.control.cfl, cfl_limit, name_of(scene.shape).c_str(), npc ? "the predictor-corrector" : "forward Euler",
+                  npc && scene.npc_velocity == NewmarkParticleVelocity::average ? " (Newmark average)" : "");
     warn("solver.cfl", what);
   }
-  const char* faces[2][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}};
   for (const auto& fixed : scene.fixed) {
-    const int margin = (fixed.upper ? scene.margin_max : scene.margin_min)[fixed.axis];
-    const std::string margin_key = std::string("grid.") + (fixed.upper ? "margin_max" : "margin_min");
-    const std::string face = faces[fixed.axis][fixed.upper ? 1 : 0];
-    if (scene.shape == "lme" && margin > 0)
+    const int margin = (fixed.upper() ? scene.margin_max : scene.margin_min)[fixed.axis()];
+    const std::string margin_key = std::string("grid.") + (fixed.upper() ? "margin_max" : "margin_min");
+    const std::string& face = name_of(fixed.face);
+    if (scene.shape == ShapeKind::lme && margin > 0)
       warn(margin_key, "LME next to rigid margin nodes behind the fixed face " + face +
                            " gives way there (its wide support drags the particles along the held nodes; the soil "
                            "block at gamma 0.8 settles 0.78 m instead of 0.57 m); with no margin at a fixed face LME "
@@ -124,12 +105,9 @@ inline std::vector<std::string> scene_warnings(const SceneFile& file, const Scen
   return warnings;
 }
 
-/// The warnings of a scene read from `path` with `overrides` (already validated into `scene`).
-inline std::vector<std::string> scene_warnings(const std::string& path, const std::vector<std::string>& overrides,
-                                               const Scene& scene, double cfl_limit) {
-  SceneFile file = parse_scene_file(path);
-  for (size_t k = 0; k < overrides.size(); ++k) apply_override(file, overrides[k], static_cast<int>(k) + 1);
-  return scene_warnings(file, scene, cfl_limit);
+/// The warnings of a scene read from `path` with `overrides` (already validated into `scene`, which knows where its keys lie).
+inline std::vector<std::string> scene_warnings(const std::string&, const std::vector<std::string>&, const Scene& scene, double cfl_limit) {
+  return scene_warnings(scene, cfl_limit);
 }
 
 TEST_CASE("Scene warnings: the CFL above the method's limit, and each warning at its key and line") {
@@ -141,7 +119,7 @@ TEST_CASE("Scene warnings: the CFL above the method's limit, and each warning at
                         double cfl_limit = std::numeric_limits<double>::quiet_NaN()) {
     SceneFile file = parse_scene_text(text, "w.toml");
     for (size_t k = 0; k < overrides.size(); ++k) apply_override(file, overrides[k], static_cast<int>(k) + 1);
-    return scene_warnings(file, read_scene(file), cfl_limit);
+    return scene_warnings(read_scene(file), cfl_limit);
   };
   CHECK(warnings_of(base).empty());
   auto cfl = warnings_of(base + "cfl = 2.1\n", {}, 2.0);

@@ -18,7 +18,7 @@
 namespace mpm {
 
 struct BodyShape {
-  enum class Kind { box, ellipse, polygon };
+  enum class Kind { box, ellipse, polygon, file };  ///< file: a body's particles read from a file, all kept
   Kind kind = Kind::box;
   std::array<double, 2> min{}, max{};                  ///< the box; its second entries unused in 1D
   std::vector<std::array<double, 2>> vertices;         ///< polygon only, in order around it
@@ -27,6 +27,7 @@ struct BodyShape {
   bool holds(double x, double y) const {
     switch (kind) {
       case Kind::box:
+      case Kind::file:
         return true;  // the seeds lie in the box by construction
       case Kind::ellipse: {
         const double u = (2.0 * x - min[0] - max[0]) / (max[0] - min[0]), w = (2.0 * y - min[1] - max[1]) / (max[1] - min[1]);

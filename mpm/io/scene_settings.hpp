@@ -1,0 +1,183 @@
+/// \file
+/// What a scene says, typed: the settings of a run, each choice an enum. The keys that fill them, with
+/// their defaults, units and ranges, are declared once, in mpm/io/scene_keys.hpp; read_scene
+/// (mpm/io/scene.hpp) reads and validates them.
+#pragma once
+#include <doctest/doctest.h>
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mpm/core/errors.hpp"
+#include "mpm/io/particle_file.hpp"
+#include "mpm/io/scene_formulas.hpp"
+#include "mpm/particles/body_shape.hpp"
+#include "mpm/particles/seeding.hpp"
+#include "mpm/shape/lme.hpp"
+#include "mpm/simulation.hpp"
+#include "mpm/transfer/grid_to_particle.hpp"
+
+namespace mpm::io {
+
+enum class ShapeKind { linear, ugimp, lme, bspline2, bspline3 };
+enum class IntegratorKind { fe, npc };
+enum class StressUpdate { usf, usl, musl };
+enum class ExactKind { none, dyka_bar, soil_column, vibrating_bar, manufactured_small, manufactured_large };
+enum class WallFace { xmin, xmax, ymin, ymax };
+
+/// The names of a choice, in the order of its enum's values: the words a scene writes.
+using Names = std::vector<std::string>;
+inline const Names& choice_names(ShapeKind) { static const Names names{"linear", "ugimp", "lme", "bspline2", "bspline3"}; return names; }
+inline const Names& choice_names(IntegratorKind) { static const Names names{"fe", "npc"}; return names; }
+inline const Names& choice_names(StressUpdate) { static const Names names{"usf", "usl", "musl"}; return names; }
+inline const Names& choice_names(ExactKind) {
+  static const Names names{"none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"};
+  return names;
+}
+inline const Names& choice_names(WallFace) { static const Names names{"xmin", "xmax", "ymin", "ymax"}; return names; }
+inline const Names& choice_names(BodyShape::Kind) { static const Names names{"box", "ellipse", "polygon", "file"}; return names; }
+inline const Names& choice_names(Placement) { static const Names names{"uniform", "gauss"}; return names; }
+inline const Names& choice_names(BodyForceTime) { static const Names names{"step_end", "step_start"}; return names; }
+inline const Names& choice_names(CourantSpeed) { static const Names names{"max", "sum"}; return names; }
+inline const Names& choice_names(LmeOptions::BetaRule) { static const Names names{"grid_spacing", "mean_neighbour_distance"}; return names; }
+inline const Names& choice_names(EulerPositionVelocity) { static const Names names{"updated", "start"}; return names; }
+inline const Names& choice_names(NewmarkPositionVelocity) { static const Names names{"projected", "corrected", "predicted"}; return names; }
+inline const Names& choice_names(NewmarkParticleVelocity) { static const Names names{"eq32", "average"}; return names; }
+
+/// The word a scene writes for a choice ("lme" for ShapeKind::lme).
+template <class Choice>
+const std::string& name_of(Choice choice) {
+  return choice_names(choice).at(static_cast<std::size_t>(choice));
+}
+
+/// A linear elastic material, Eq. (3): the scene's [material], or a body's own (its keys young_modulus,
+/// poisson_ratio and density, each defaulting to [material]'s).
+struct MaterialSettings {
+  double young_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;  ///< E (Pa), nu, rho_0 (kg/m^3)
+  bool operator==(const MaterialSettings& other) const {
+    return young_modulus == other.young_modulus && poisson_ratio == other.poisson_ratio && density == other.density;
+  }
+};
+
+struct BodySettings {
+  std::vector<double> min, max, velocity;
+  MaterialSettings material;  ///< the body's young_modulus, poisson_ratio, density: by default [material]'s
+  std::vector<int> particles_per_cell;
+  Placement placement{};
+  BodyShape::Kind shape{};                      ///< box | ellipse | polygon (mpm/particles/body_shape.hpp) | file
+  std::vector<std::array<double, 2>> vertices;  ///< polygon only, m
+  std::string file;                             ///< file only: the CSV as given (mpm/io/particle_file.hpp)
+  std::vector<FileParticle> particles;          ///< file only: its particles, read and checked with the scene
+};
+
+/// The body's shape, for seeding (mpm/particles/body_shape.hpp).
+inline BodyShape body_shape(const BodySettings& body) {
+  BodyShape shape;
+  shape.kind = body.shape;
+  for (size_t axis = 0; axis < body.min.size(); ++axis) shape.min[axis] = body.min[axis], shape.max[axis] = body.max[axis];
+  shape.vertices = body.vertices;
+  return shape;
+}
+
+struct VelocityBox {
+  std::vector<double> min, max, velocity;
+};
+
+struct FixedSettings {
+  WallFace face{};
+  std::vector<int> components;  ///< 0: x, 1: y
+  int axis() const { return static_cast<int>(face) / 2; }
+  bool upper() const { return static_cast<int>(face) % 2 == 1; }
+};
+
+/// An observer names a material point by its reference position: the particle nearest it at t = 0 is
+/// observed (observers.csv), and the scene's exact solution is evaluated at the point itself (exact.csv).
+struct ObserverSettings {
+  std::string name;
+  std::vector<double> position;
+};
+
+struct Scene {
+  std::string file, title;
+  int dimension = 1;
+  // [grid]
+  std::vector<double> origin, length;
+  std::vector<int> cells, margin_min, margin_max;
+  double spacing = 0.0;  ///< length[0] / cells[0]
+  // [material]
+  double young_modulus = 0.0, poisson_ratio = 0.0, density = 0.0;
+  // [[body]], [[initial_velocity]], [[fixed]], [gravity]
+  std::vector<BodySettings> bodies;
+  std::vector<VelocityBox> initial_velocities;
+  std::vector<FixedSettings> fixed;
+  std::vector<double> gravity;
+  double ramp_period = 0.0;
+  // [solver]
+  ShapeKind shape{};
+  IntegratorKind integrator{};
+  double lme_gamma = 0.0, lme_tol = 0.0, lme_newton_tol = 0.0;
+  int lme_max_iterations = 0;
+  LmeOptions::BetaRule lme_beta{};
+  double newmark_gamma = 0.0;
+  EulerPositionVelocity fe_position_velocity{};
+  NewmarkPositionVelocity npc_position_velocity{};
+  NewmarkParticleVelocity npc_velocity{};  ///< eq32 (the paper's Eq. 32) | average (Eq. 23, the Newmark average)
+  double flip_fraction = 1.0;              ///< forward Euler's PIC/FLIP blend: 1 = FLIP (the paper's)
+  StressUpdate stress_update{};            ///< forward Euler's stress update: usf (the paper's) | usl | musl
+  RunControl control;
+  // [[observer]], [output]
+  std::vector<ObserverSettings> observers;
+  // [constants], [initial_field], [body_force] (io/scene_formulas.hpp)
+  SceneFormulas formulas;
+  /// the exact solution written beside the observers (exact.csv) and evaluated by `mpm exact` and `mpm compare`
+  ExactKind exact{};
+  // [exact_parameters]
+  int exact_mode = 1;                                ///< vibrating_bar: mode n
+  std::optional<double> exact_velocity_amplitude;    ///< vibrating_bar: V, m/s
+  std::vector<double> exact_displacement_amplitude;  ///< manufactured_small: [A]; manufactured_large: [a_x, a_y], m
+  /// where each key read lies, by its full name ("body[0].vertices"): the file and line, or `--set(n)` and 1,
+  /// for the errors found after the read (scene_error)
+  std::map<std::string, std::pair<std::string, int>> locations;
+
+  MaterialSettings material() const { return {young_modulus, poisson_ratio, density}; }
+};
+
+/// An error at a key of a read scene, located where the scene gives it (its table's line when it is left to
+/// its default). \returns the SceneError to throw.
+inline SceneError scene_error(const Scene& scene, const std::string& key, const std::string& what) {
+  const auto found = scene.locations.find(key);
+  if (found == scene.locations.end()) return SceneError(scene.file, 1, key, what);
+  return SceneError(found->second.first, found->second.second, key, what);
+}
+
+/// The top of the soil column, H above the grid's origin: the highest of its bodies (the grid may reach
+/// beyond it, room for nothing but the column's own margin).
+inline double column_height(const Scene& scene) {
+  double top = scene.origin.at(1);
+  for (const BodySettings& body : scene.bodies) top = std::max(top, body.max.at(1));
+  return top - scene.origin[1];
+}
+
+TEST_CASE("Scene settings: choice names follow their enums, and errors after the read are located") {
+  CHECK(name_of(ShapeKind::bspline3) == "bspline3");
+  CHECK(name_of(NewmarkPositionVelocity::predicted) == "predicted");
+  CHECK(name_of(LmeOptions::BetaRule::mean_neighbour_distance) == "mean_neighbour_distance");
+  CHECK(name_of(BodyShape::Kind::file) == "file");
+  CHECK(FixedSettings{WallFace::ymax, {}}.axis() == 1);
+  CHECK(FixedSettings{WallFace::ymax, {}}.upper());
+  CHECK(!FixedSettings{WallFace::xmin, {}}.upper());
+  Scene scene;
+  scene.file = "s.toml";
+  scene.locations["body[0].vertices"] = {"--set(2)", 1};
+  CHECK(scene_error(scene, "body[0].vertices", "bad").message() == "error: --set(2):1: body[0].vertices: bad");
+  CHECK(scene_error(scene, "title", "bad").message() == "error: s.toml:1: title: bad");
+  scene.origin = {0.0, 1.0};
+  scene.bodies = {BodySettings{{0.0, 1.0}, {1.0, 3.0}, {}, {}, {}, {}, {}, {}, {}, {}}};
+  CHECK(column_height(scene) == 2.0);
+}
+
+}  // namespace mpm::io
