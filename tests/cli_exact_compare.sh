@@ -156,7 +156,7 @@ bad "^error: $work/missing.csv: cannot be read" compare "$work/missing.csv" "$ba
 bad "^error: $work: is a folder" compare "$work" "$bar" --at 0 --column v=v_x
 bad "^error: .*exact: the scene names no exact solution" compare "$work/other.csv" "$bar" --set 'exact="none"' --at 0 --time-column time --column vel=v_x
 bad "^error: --tolerance: must be a number in \[0, .*got '-1'" compare "$work/other.csv" "$bar" --at 0 --time-column time --column vel=v_x --tolerance -1
-bad "^error: --plot $work/no/never.png: give a .png file in an existing folder" compare "$work/other.csv" "$bar" --at 0 \
+bad "^error: --plot: $work/no/never.png: give a .png file" compare "$work/other.csv" "$bar" --at 0 \
   --time-column time --column vel=v_x --plot "$work/no/never.png"
 bad "^error: SCENE.toml: required" compare "$work/other.csv" --at 0 --column vel=v_x
 printf 't,v\n0,1\n1,2,3\n' >"$work/ragged.csv"

@@ -89,5 +89,49 @@ for signal in TERM INT; do
   tail -c 1 "$long/observers.csv" | od -c | grep -q '\\n' || fail "SIG$signal: observers.csv ends in the middle of a line"
 done
 
+# --out that is not a folder: a file, a device, a link to nothing: exit 2, nothing written.
+touch "$work/afile"
+ln -s "$work/nothing" "$work/dangling"
+for bad_out in "$work/afile" /dev/null "$work/dangling"; do
+  "$mpm" run "$scene" --out "$bad_out" >"$work/stdout" 2>"$work/err"
+  code=$?
+  [[ $code -eq 2 ]] && grep -q "^error: $bad_out: is " "$work/err" || fail "--out $bad_out: exit $code, $(cat "$work/err")"
+done
+[[ -s "$work/afile" || -e "$work/nothing" ]] && fail "a refused --out was written"
+
+# Two runs into one folder: the second is refused while the first goes on (the folder would mix their files).
+busy=$work/busy
+"$mpm" run "$scene" --out "$busy" --set grid.cells=[4000] --set solver.end_time=1.0 --max-steps 1e9 --force >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 100); do [[ $(status_of "$busy") == running ]] && break; sleep 0.1; done
+"$mpm" run "$root/scenes/vibrating_bar.toml" --out "$busy" >"$work/stdout" 2>"$work/err"
+code=$?
+[[ $code -eq 2 ]] && grep -q "another mpm run or plot is writing into this folder" "$work/err" ||
+  fail "a second run into a busy folder: exit $code, $(cat "$work/err")"
+"$mpm" plot "$busy" >"$work/stdout" 2>"$work/err"
+[[ $? -eq 2 ]] || fail "a plot of a busy folder: $(cat "$work/err")"
+kill -TERM $pid
+wait $pid
+grep -q '"A.x"\|A.x' "$busy/observers.csv" && [[ $(status_of "$busy") == interrupted ]] || fail "the first run's folder was changed"
+
+# A full disk at run.json leaves no hidden temporary; at plot.gp, no empty picture.
+(trap '' XFSZ; ulimit -f 4; exec "$mpm" run "$scene" --out "$work/tiny") >/dev/null 2>&1
+ls -a "$work/tiny" | grep -q partial && fail "a temporary of run.json was left"
+"$mpm" run "$scene" --out "$work/plotted" >/dev/null 2>&1
+(trap '' XFSZ; ulimit -f 0; exec "$mpm" plot "$work/plotted") >/dev/null 2>&1
+ls "$work/plotted" | grep -q png && fail "a plot that could not write plot.gp left pictures"
+
+# A closed pipe on standard output: exit 3 and a message, not a silent SIGPIPE.
+code=$(python3 -c "
+import subprocess, os
+r, w = os.pipe(); os.close(r)
+p = subprocess.run(['$mpm', 'stability'], stdout=w, stderr=subprocess.PIPE); print(p.returncode)")
+[[ $code -eq 3 ]] || fail "a closed pipe: exit $code"
+
+# run.json stays valid JSON whatever bytes the command line holds.
+"$mpm" run "$scene" --out "$work/$(printf 'odd\xff')" >/dev/null 2>&1
+python3 -c "import json, sys; json.load(open(sys.argv[1], encoding='utf-8'))" "$work/$(printf 'odd\xff')/run.json" ||
+  fail "run.json of a folder named with a byte that is not UTF-8 is not JSON"
+
 echo "cli_run_folder: $failures failed"
 [[ $failures -eq 0 ]]

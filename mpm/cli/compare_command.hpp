@@ -55,6 +55,10 @@ inline CsvColumns read_csv_columns(const std::string& path, const std::vector<st
   std::vector<std::size_t> index;
   for (const auto& name : wanted) {
     const auto found = std::find(csv.header.begin(), csv.header.end(), name);
+    if (std::count(csv.header.begin(), csv.header.end(), name) > 1) {
+      error = file.where() + "column '" + name + "' appears more than once in the header: which one is meant?";
+      return {};
+    }
     if (found == csv.header.end()) {
       std::string names;
       for (const auto& column : csv.header) names += (names.empty() ? "" : ", ") + column;
@@ -246,8 +250,9 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
     if (!plot_path.empty()) {
       const std::filesystem::path folder = std::filesystem::path(plot_path).parent_path();
       std::error_code code;
-      if (std::filesystem::path(plot_path).extension() != ".png" || (!folder.empty() && !std::filesystem::is_directory(folder, code))) {
-        err << "error: --plot " << plot_path << ": give a .png file in an existing folder\n";
+      if (std::filesystem::path(plot_path).extension() != ".png" || (!folder.empty() && !std::filesystem::is_directory(folder, code)) ||
+          std::filesystem::is_directory(plot_path, code)) {
+        err << "error: --plot: " << plot_path << ": give a .png file (not a folder) in an existing folder\n";
         return 2;
       }
     }

@@ -15,6 +15,7 @@
 ///   Dyka bar: 2428 steps to t = 0.0002 s, 160 particles, 0.0219 s wall, 1.77e+07 particle-steps/s
 ///   wrote runs/dyka_bar
 #include <cerrno>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -70,6 +71,7 @@ int dispatch(const std::vector<std::string>& arguments, const mpm::io::RunIdenti
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::signal(SIGPIPE, SIG_IGN);  // a closed pipe on standard output: a failed write (exit 3), not a silent death
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   if (arguments.empty()) {
     std::cerr << usage;

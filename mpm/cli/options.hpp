@@ -18,9 +18,11 @@
 
 namespace mpm::cli {
 
-/// The whole text as a finite number; nullopt for anything else ("1e-3" yes, "1e-3s", "", "nan" no).
+/// The whole text as a finite decimal number; nullopt for anything else ("1e-3" yes, "1e-3s", "", "nan", " 1",
+/// "0x10" no).
 inline std::optional<double> parse_number(const std::string& text) {
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return std::nullopt;
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) || text.find_first_of("xX") != std::string::npos)
+    return std::nullopt;
   std::size_t end = 0;
   double value = 0.0;
   try {
@@ -100,7 +102,7 @@ inline std::string error_message(const CLI::ParseError& error, const std::string
   const std::string what = error.what();
   const auto mismatch = what.find(": ");
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) && mismatch != std::string::npos)
-    return what.substr(0, mismatch) + ": needs a value";
+    return what.substr(0, mismatch) + (what.find("At Most") != std::string::npos ? ": given more than once" : ": needs a value");
   const auto equals = what.find(" = ");
   if (dynamic_cast<const CLI::ConversionError*>(&error) && mismatch != std::string::npos && equals != std::string::npos)
     return what.substr(mismatch + 2, equals - mismatch - 2) + ": '" + what.substr(equals + 3) + "' cannot be read";
@@ -139,7 +141,7 @@ inline std::optional<int> parse_arguments(CLI::App& app, std::vector<std::string
 }
 
 TEST_CASE("options: numbers, ranges and choices as the commands read them, CLI11's errors as the command's own") {
-  for (const char* text : {"", " 1", "1e-3s", "nan", "inf", "1e400", "0x"}) CHECK(!parse_number(text));
+  for (const char* text : {"", " 1", "1e-3s", "nan", "inf", "1e400", "0x", "0x10"}) CHECK(!parse_number(text));
   CHECK(number_in(0.0, 1.0)("0.5").empty());
   CHECK(number_in(0.0, 0.5, true)("0.5") == "must be a number in [0, 0.5), got '0.5'");
   CHECK(!number_in(0.0, 1.0)("nan").empty());
@@ -159,6 +161,7 @@ TEST_CASE("options: numbers, ranges and choices as the commands read them, CLI11
   const std::vector<std::pair<std::vector<std::string>, std::string>> wrong{
       {{"--ppc", "0"}, "error: --ppc: must be a whole number from 1 to 4, got '0'\n"},
       {{"--ppc"}, "error: --ppc: needs a value\n"},
+      {{"--ppc", "1", "--ppc", "2"}, "error: --ppc: given more than once\n"},
       {{"--bogus", "1"}, "error: --bogus: unknown option (mpm try --help lists the options)\n"},
       {{"stray"}, "error: stray: unexpected argument (mpm try --help lists the options)\n"}};
   for (const auto& [arguments, message] : wrong) {

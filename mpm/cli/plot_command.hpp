@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
@@ -26,12 +27,14 @@
 #include "mpm/cli/gnuplot.hpp"
 #include "mpm/cli/options.hpp"
 #include "mpm/io/csv_file.hpp"
+#include "mpm/io/run_folder.hpp"
 
 namespace mpm::cli {
 
 /// The column names of the header of `path` (io::CsvFile), empty when there is no such file; false with
-/// `error` set (`FILE:LINE: ...`) when it cannot be read or a name holds a control character (a name is
-/// written into the gnuplot script).
+/// `error` set (`FILE:LINE: ...`) when it cannot be read, a name holds a control character (a name is
+/// written into the gnuplot script), or it has no data row or a field that is not a number (nan and inf
+/// are numbers here: a failed run writes them).
 inline bool plot_header(const std::string& path, std::vector<std::string>& names, std::string& error) {
   io::CsvFile file(path);
   names.clear();
@@ -45,8 +48,20 @@ inline bool plot_header(const std::string& path, std::vector<std::string>& names
       error = file.where() + "column " + std::to_string(k + 1) + ": its name holds a control character";
       return false;
     }
+  int rows = 0;
+  for (std::vector<std::string> fields; file.next_row(fields); ++rows)
+    for (size_t k = 0; k < fields.size(); ++k) {
+      char* end = nullptr;
+      std::strtod(fields[k].c_str(), &end);
+      if (fields[k].empty() || *end != '\0') {
+        error = file.where() + file.header()[k] + ": '" + fields[k].substr(0, 40) + "' is not a number";
+        return false;
+      }
+    }
+  error = file.error();
+  if (error.empty() && rows == 0) error = path + ": has a header but no data row";
   names = file.header();
-  return true;
+  return error.empty();
 }
 
 /// "A.v_x" -> "v_x"; "t" -> "".
@@ -61,6 +76,27 @@ inline std::string quantity_label(const std::string& quantity) {
   return "position " + quantity + " (m)";
 }
 
+/// The quantities of observers.csv's columns NAME.QUANTITY, in order of first appearance: one panel each.
+inline std::vector<std::string> observed_quantities(const std::vector<std::string>& observers) {
+  std::vector<std::string> quantities;
+  for (const auto& column : observers) {
+    const std::string quantity = quantity_of(column);
+    if (!quantity.empty() && std::find(quantities.begin(), quantities.end(), quantity) == quantities.end())
+      quantities.push_back(quantity);
+  }
+  return quantities;
+}
+
+/// True if energy.csv's header has a column energy.png draws (kinetic, strain, total, momentum_*).
+inline bool has_energy_column(const std::vector<std::string>& energy) {
+  return std::any_of(energy.begin(), energy.end(), [](const std::string& name) {
+    return name == "kinetic" || name == "strain" || name == "total" || name.rfind("momentum", 0) == 0;
+  });
+}
+
+/// The most panels observers.png holds (one per quantity); a picture much taller fails in cairo.
+inline constexpr std::size_t most_panels = 16;
+
 /// The gnuplot script drawing observers.png (if any observer) and energy.png from the headers of
 /// observers.csv, exact.csv (empty: none) and energy.csv; columns are addressed by number.
 inline std::string plot_script(const std::vector<std::string>& observers, const std::vector<std::string>& exact,
@@ -69,12 +105,7 @@ inline std::string plot_script(const std::vector<std::string>& observers, const 
   gp << "# written by `mpm plot`; run again with: gnuplot plot.gp (in this folder)\n"
         "set datafile separator ','\nset datafile missing 'nan'\nset grid lc rgb '#dddddd'\n"
         "set key outside right top\nset lmargin 14\nset xlabel 't (s)'\n";
-  std::vector<std::string> quantities;  // in order of first appearance
-  for (const auto& column : observers) {
-    const std::string quantity = quantity_of(column);
-    if (!quantity.empty() && std::find(quantities.begin(), quantities.end(), quantity) == quantities.end())
-      quantities.push_back(quantity);
-  }
+  const std::vector<std::string> quantities = observed_quantities(observers);
   if (!quantities.empty()) {
     gp << "set terminal pngcairo noenhanced size 1000," << 260 * quantities.size() << " font ',10'\n"
        << "set output 'observers.png'\nset multiplot layout " << quantities.size() << ",1\n";
@@ -93,7 +124,7 @@ inline std::string plot_script(const std::vector<std::string>& observers, const 
     }
     gp << "unset multiplot\nunset output\n";
   }
-  if (energy.empty()) return gp.str();  // no energy.csv: observers.png only
+  if (!has_energy_column(energy)) return gp.str();  // no energy.csv: observers.png only
   gp << "set terminal pngcairo noenhanced size 1000,520 font ',10'\nset output 'energy.png'\nset multiplot layout 2,1\n"
         "set ylabel 'energy (J; 1D per m^2, 2D per m)'\nplot ";
   std::string separator;
@@ -169,32 +200,48 @@ inline int plot_command(const std::vector<std::string>& arguments, std::ostream&
   }
   std::vector<std::string> observers, energy, exact;
   if (!plot_headers(folder, observers, energy, exact, err)) return 2;
+  const std::size_t panels = observed_quantities(observers).size();
+  if (panels > most_panels || (panels == 0 && !has_energy_column(energy))) {
+    err << "error: " << folder << "/observers.csv: " << panels << " quantities (columns NAME.QUANTITY) to draw; "
+        << (panels == 0 ? "none, and energy.csv has no energy or momentum column" : "at most 16") << "\n";
+    return 2;
+  }
   std::vector<std::string> pictures;
-  if (observers.size() > 1) pictures.push_back("observers.png");
-  if (!energy.empty()) pictures.push_back("energy.png");
+  if (panels > 0) pictures.push_back("observers.png");
+  if (has_energy_column(energy)) pictures.push_back("energy.png");
   std::string reason;
-  for (const auto& picture : pictures) {  // each made afresh, so that gnuplot writes no symbolic link's target
-    const int descriptor = create_fresh(folder + "/" + picture, reason);
-    if (descriptor < 0) {
-      err << "error: " << folder << "/" << picture << ": cannot write: " << reason << "\n";
-      return 3;
-    }
-    ::close(descriptor);
+  auto remove_pictures = [&] {  // made here, and not whole: no picture is left to be taken for a finished one
+    for (const auto& picture : pictures) ::unlink((folder + "/" + picture).c_str());
+  };
+  std::unique_ptr<io::FolderLock> lock;  // no run or other plot writes here meanwhile
+  try {
+    lock = std::make_unique<io::FolderLock>(folder);
+  } catch (const InputError& busy) {
+    err << busy.message() << "\n";
+    return 2;
+  } catch (const OutputFailure& failure) {
+    err << failure.message() << "\n";
+    return 3;
   }
   if (!write_fresh(folder + "/plot.gp", plot_script(observers, exact, energy), reason)) {
     err << "error: " << folder << "/plot.gp: cannot write: " << reason << "\n";
     return 3;
   }
+  for (const auto& picture : pictures) {  // each made afresh, so that gnuplot writes no symbolic link's target
+    const int descriptor = create_fresh(folder + "/" + picture, reason);
+    if (descriptor < 0) {
+      err << "error: " << folder << "/" << picture << ": cannot write: " << reason << "\n";
+      return remove_pictures(), 3;
+    }
+    ::close(descriptor);
+  }
   const int log = create_fresh(folder + "/plot.log", reason);
   if (log < 0) {
     err << "error: " << folder << "/plot.log: cannot write: " << reason << "\n";
-    return 3;
+    return remove_pictures(), 3;
   }
   const int status = run_gnuplot(folder, "plot.gp", -1, log);
   ::close(log);
-  auto remove_pictures = [&] {  // made here, and not whole: no picture is left to be taken for a finished one
-    for (const auto& picture : pictures) ::unlink((folder + "/" + picture).c_str());
-  };
   if (status != 0) {
     err << "failure: gnuplot failed (status " << status << "; is gnuplot installed? make deps): see " << folder
         << "/plot.log and " << folder << "/plot.gp\n";

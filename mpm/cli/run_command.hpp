@@ -138,8 +138,10 @@ int run_scene(io::Scene scene, RunRequest request) {
     request.identity.observed.push_back({scene.observers[k].name, setup.particles.id[p], std::vector<double>(X.data(), X.data() + Dim)});
   }
   io::check_run_folder(request.folder);
+  std::unique_ptr<io::FolderLock> lock;  // held until the run has ended
   try {
     std::filesystem::create_directories(request.folder);
+    lock = std::make_unique<io::FolderLock>(request.folder);
     io::clear_run_folder(request.folder);
   } catch (const std::filesystem::filesystem_error& error) {
     std::cerr << OutputFailure(request.folder, error.code().message()).message() << "\n";

@@ -14,10 +14,29 @@
 
 namespace mpm::io {
 
-/// `text` as a JSON string, quoted and escaped.
+/// The length of the valid UTF-8 sequence at text[at] (1 to 4), or 0 if none starts there.
+inline std::size_t utf8_length(const std::string& text, std::size_t at) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(at);
+  const std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 && lead >= 0xc2 ? 2 : (lead >> 4) == 0xe ? 3 : lead >= 0xf0 && lead <= 0xf4 ? 4 : 0;
+  if (length == 0 || at + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k)
+    if ((byte(at + k) >> 6) != 0x2) return 0;
+  return length;
+}
+
+/// `text` as a JSON string, quoted and escaped; a byte that is not UTF-8 (a path's 0xff) as U+FFFD, so the
+/// document stays valid JSON.
 inline std::string json_string(const std::string& text) {
   std::string json = "\"";
-  for (unsigned char character : text) {
+  for (std::size_t at = 0; at < text.size(); ++at) {
+    const std::size_t length = utf8_length(text, at);
+    if (length != 1) {
+      json += length == 0 ? std::string("\\ufffd") : text.substr(at, length);
+      at += length == 0 ? 0 : length - 1;
+      continue;
+    }
+    const unsigned char character = static_cast<unsigned char>(text[at]);
     if (character == '"' || character == '\\') json += std::string("\\") + static_cast<char>(character);
     else if (character == '\n') json += "\\n";
     else if (character < 0x20 || character == 0x7f) {
@@ -108,6 +127,8 @@ class JsonWriter {
 TEST_CASE("JsonWriter: nesting, separators, escapes and numbers JSON cannot hold") {
   CHECK(json_string("failed: \"x\"\n\\") == "\"failed: \\\"x\\\"\\n\\\\\"");
   CHECK(json_string(std::string("a\tb")) == "\"a\\u0009b\"");
+  CHECK(json_string("jl\xff") == "\"jl\\ufffd\"");                     // not UTF-8
+  CHECK(json_string("\xc3\xa9t\xc3") == "\"\xc3\xa9t\\ufffd\"");  // kept, and a sequence cut short
   std::ostringstream out;
   JsonWriter json(out);
   json.begin_object().key("status").value("done").key("steps").value(12L).key("dt").value(1.0 / 0.0);

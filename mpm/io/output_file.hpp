@@ -11,10 +11,12 @@
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -83,7 +85,7 @@ class OutputFile : public std::ostream {
   OutputFile& operator=(const OutputFile&) = delete;
   /// An unfinished file (an exception on the way): what it holds is written out (a failed run keeps its
   /// history up to the failure), an atomic file's temporary removed.
-  ~OutputFile() override {
+  ~OutputFile() override {  // a failed close() leaves closed_ false: the temporary is removed here
     if (!closed_ && written_path_ == path_) flush();
     if (descriptor_ >= 0) ::close(descriptor_);
     if (written_path_ != path_ && !closed_) ::unlink(written_path_.c_str());
@@ -99,12 +101,16 @@ class OutputFile : public std::ostream {
   /// Flushes, closes and (atomic) renames into place. \throws OutputFailure if any of it failed.
   void close() {
     if (closed_) return;
-    closed_ = true;
     flush();
     check();
+    closed_ = true;
     const int descriptor = descriptor_;
     descriptor_ = -1;
-    if (::close(descriptor) != 0) throw OutputFailure(path_, std::strerror(errno));
+    if (::close(descriptor) != 0) {
+      const int error = errno;
+      if (written_path_ != path_) ::unlink(written_path_.c_str());
+      throw OutputFailure(path_, std::strerror(error));
+    }
     if (written_path_ != path_ && std::rename(written_path_.c_str(), path_.c_str()) != 0) {
       const int error = errno;
       ::unlink(written_path_.c_str());
@@ -168,6 +174,22 @@ TEST_CASE("OutputFile: a write error, a link and an atomic replacement") {
     full << std::string(100, 'x');
     CHECK_THROWS_WITH_AS(full.close(), doctest::Contains("No space left"), OutputFailure);
   }
+  struct rlimit limit {}, small {};  // a file size limit: the atomic file fails at close(), its temporary removed
+  ::getrlimit(RLIMIT_FSIZE, &limit);
+  small = limit;
+  small.rlim_cur = 1000;
+  void (*previous)(int) = std::signal(SIGXFSZ, SIG_IGN);
+  if (::setrlimit(RLIMIT_FSIZE, &small) == 0) {
+    {
+      OutputFile big((folder / "big.json").string(), OutputFile::Mode::atomic);
+      big << std::string(5000, 'x');
+      CHECK_THROWS_WITH_AS(big.close(), doctest::Contains("too large"), OutputFailure);
+    }
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    CHECK(!fs::exists(folder / "big.json"));
+    CHECK(!fs::exists(OutputFile::temporary_path((folder / "big.json").string())));
+  }
+  std::signal(SIGXFSZ, previous);
   fs::remove_all(folder);
 }
 
