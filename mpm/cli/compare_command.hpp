@@ -181,13 +181,15 @@ inline std::unique_ptr<CommandParser> compare_parser(ExactOptions& options, Comp
   app->add_option("--column", request.column_specs,
                   "COL=QUANTITY: the CSV's column COL holds QUANTITY: u_x, v_x, sigma_xx (2D also u_y, v_y, sigma_yy,\n"
                   "sigma_xy), SI units; repeat for more columns")
+      ->type_name("COL=QUANTITY")
       ->required()
       ->allow_extra_args(false);
   app->add_option("--time-column", request.time_column, "the column of the sample times, s")
       ->check(CLI::Validator([](const std::string& text) { return text.empty() ? "empty" : ""; }, ""));
   app->add_option("--tolerance", request.tolerance, "exit 1 when an rms_normalised exceeds TOL (none: no check, exit 0)")
       ->check(number_in(0.0, 1e300));
-  app->add_option("--plot", request.plot_path, "draws each column and the exact solution against t into FILE.png (gnuplot)");
+  app->add_option("--plot", request.plot_path, "draws each column and the exact solution against t into FILE.png (gnuplot)")
+      ->type_name("FILE.png");
   app->footer("Exit codes: 0 within the tolerance, 1 above it, 2 a bad input (nothing written), 3 gnuplot failed or\n"
               "an output could not be written (cannot write).");
   return app;

@@ -186,8 +186,10 @@ inline bool times_within_precision(const io::SceneExactSolution& solution, const
 /// Declares the options `mpm exact` and `mpm compare` share: --set, --at, --strain.
 inline void declare_exact_options(CLI::App& app, ExactOptions& options) {
   app.add_option("--set", options.overrides, "overrides a scene key with a TOML value, as for mpm run; repeat for more")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->type_name("KEY=VALUE");
   app.add_option("--at", options.points, "a material point of the body, by its reference position X[,Y] (m)")
+      ->type_name("X[,Y]")
       ->required()
       ->allow_extra_args(false);
   app.add_option("--strain", options.strain,

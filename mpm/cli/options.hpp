@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -81,11 +82,28 @@ inline CLI::Validator one_of(std::vector<std::string> choices) {
       list);
 }
 
+/// The help's left column: an option's values as its validator names them, and its default
+/// (`--ppc INTEGER in [1, 4] (default 1)`), not CLI11's `INT:INTEGER in [1, 4]=1`.
+class HelpFormatter : public CLI::Formatter {
+ public:
+  std::string make_option_opts(const CLI::Option* option) const override {
+    if (option->get_type_size() == 0) return "";
+    const std::string type = option->get_type_name();
+    const auto colon = type.find(':');
+    std::string text = " " + (colon == std::string::npos ? type : type.substr(colon + 1));
+    const std::string fallback = option->get_default_str();
+    if (!fallback.empty() && fallback != "[]" && !option->get_required()) text += " (default " + fallback + ")";
+    if (option->get_expected_max() > 1) text += " ...";
+    return text;
+  }
+};
+
 /// A command's parser, `mpm NAME` with its description; its options show their defaults in its help.
 class CommandParser : public CLI::App {
  public:
   CommandParser(const std::string& name, const std::string& description) : CLI::App(description, "mpm " + name) {
-    get_formatter()->column_width(26);
+    formatter(std::make_shared<HelpFormatter>());
+    get_formatter()->column_width(30);
     option_defaults()->always_capture_default();
     allow_extras();  // left over, in order: parse_arguments names the first
   }

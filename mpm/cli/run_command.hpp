@@ -167,12 +167,13 @@ inline std::unique_ptr<CommandParser> run_parser(RunRequest& request) {
       "\"running\", then \"done\", \"failed\" or \"interrupted\". Files of an earlier run there are removed first.\n"
       "Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.");
   app->add_option("SCENE.toml", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
-  app->add_option("--out", request.folder, "output folder (default runs/<scene file name>)")
+  app->add_option("--out", request.folder, "output folder (default runs/<scene file name>)")->type_name("DIR")
       ->check(CLI::Validator([](const std::string& text) { return text.empty() ? "must not be empty" : ""; }, "DIR"));
   app->add_option("--set", request.overrides,
                   "overrides a scene key with a TOML value: --set solver.cfl=0.2, --set 'solver.shape=\"lme\"',\n"
                   "--set grid.cells=[160], --set 'body[0].max=[1.0]'; repeat for more")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->type_name("KEY=VALUE");
   app->add_option("--threads", request.threads, "cores to run on (0: all; the results are the same bits on any number)")
       ->check(whole_in(0, 4096));
   app->add_flag("--print-scene", request.print_scene, "prints the resolved scene (every key, defaults filled in) and exits");

@@ -112,7 +112,7 @@ inline std::unique_ptr<CommandParser> shape_parser(ShapeRequest& request, std::v
       "CSV, one row per node of each point's stencil: point,node_x[,node_y],N,dN_dx[,dN_dy]; point counts the --at from 0.");
   app->add_option("--dim", request.dimension, "dimension")->check(whole_in(1, 2));
   app->add_option("--kind", request.kind, "shape function")->required()->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
-  app->add_option("--at", points, "a point X (1D) or X,Y (2D); repeat for more")->required()->allow_extra_args(false);
+  app->add_option("--at", points, "a point X (1D) or X,Y (2D); repeat for more")->type_name("X[,Y]")->required()->allow_extra_args(false);
   app->add_option("--gamma", request.gamma, "LME locality gamma, <= -ln(tol)/dim")->check(positive());
   app->add_option("--cell-size", request.cell_size, "cell size h")->check(positive());
   app->add_option("--particle-size", request.particle_size, "uGIMP particle length 2 l_p, <= h (-1: h/2)")
