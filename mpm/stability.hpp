@@ -5,6 +5,7 @@
 /// `mpm stability` prints it; `mpm run` warns with it.
 #pragma once
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -43,6 +44,7 @@ inline io::Scene stability_scene(const StabilityBody& body) {
   const bool two = body.dimension == 2;
   auto axes = [&](const std::string& value) { return "[" + value + (two ? ", " + value : "") + "]"; };
   std::ostringstream text;
+  text << std::setprecision(17);  // the Poisson ratio as it is: 0.4999999 must not print as 0.5, outside [0, 0.5)
   text << "title = \"stability\"\ndimension = " << body.dimension << "\n"
        << "[grid]\norigin = " << axes("0.0") << "\nlength = " << axes(std::to_string(cells) + ".0")
        << "\ncells = " << axes(std::to_string(cells)) << "\n"
@@ -186,9 +188,8 @@ extern template bool stable_at<2>(const io::Scene&, double);
 inline io::Scene warning_body(const io::Scene& scene) {
   StabilityBody body;
   body.dimension = scene.dimension;
-  for (const auto& settings : scene.bodies)
-    for (int ppc : settings.particles_per_cell) body.ppc = std::max(body.ppc, std::min(ppc, 4));
-  body.cells = scene.dimension == 1 ? 16 : body.ppc == 1 ? 6 : body.ppc == 2 ? 4 : 2;
+  body.ppc = io::warning_body_ppc(scene);  // as the memory estimate counts it (mpm/io/scene_budget.hpp)
+  body.cells = io::warning_body_cells(scene.dimension, body.ppc);
   for (const auto& settings : scene.bodies)  // the largest Poisson ratio: the fastest P-wave for its E, the lowest limit
     body.poisson_ratio = std::max(body.poisson_ratio, settings.material.poisson_ratio);
   io::Scene uniform = stability_scene(body);

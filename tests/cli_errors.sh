@@ -26,7 +26,7 @@ expect 2 "^error: --set\(1\):1: grid.cells: has 2 entries; the scene's dimension
 sed 's/^cfl = 0.5/cfl = 0.0/' "$scene" >"$work/zero_cfl.toml"
 line=$(grep -n '^cfl = 0.0' "$work/zero_cfl.toml" | cut -d: -f1)
 expect 2 "^error: $work/zero_cfl.toml:$line: solver.cfl: must be > 0" -- run "$work/zero_cfl.toml" --out "$work/a"
-expect 2 "^error: $work/missing.toml:0: \(file\)" -- run "$work/missing.toml"
+expect 2 "^error: $work/missing.toml: cannot be read: no such file" -- run "$work/missing.toml"
 printf '[grid\n' >"$work/broken.toml"
 expect 2 "^error: $work/broken.toml:1: \(syntax\)" -- run "$work/broken.toml"
 expect 2 "^error: --frobnicate: unknown option" -- run "$scene" --frobnicate
@@ -86,9 +86,9 @@ bad "^error: --set\(1\):1: output\.snapshots: times must lie in \[0, solver\.end
 # A required table the scene lacks is refused at the key that needs it, at a line of the file (never 0).
 printf '[grid]\nlength = [1.0]\ncells = [10]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n[[body]]\nmin = [0.0]\nmax = [1.0]\n' >"$work/no_solver.toml"
 bad "^error: $work/no_solver.toml:1: solver\.end_time: missing; a number is required" run "$work/no_solver.toml" --out "$work/a"
-# The 1D grid's memory: 10^7 cells under 2048 particles hold 7 nodal copies of the scatter (2.7 GiB, not 0.6)
+# The 1D grid's memory: 10^7 cells under 2048 particles hold 7 nodal copies of the scatter (2.7 GiB with the process, not 0.6)
 printf '[grid]\nlength = [1.0]\ncells = [10000000]\n[material]\nyoung_modulus = 1.0\ndensity = 1.0\n[[body]]\nmin = [0.0]\nmax = [0.0002048]\n[solver]\nend_time = 1e-9\n' >"$work/long_grid.toml"
-bad "^error: $work/long_grid.toml:3: grid\.cells: the scene needs 2\.05e\+03 particles, 1e\+07 nodes .* about 2\.68 GiB; the limit is 2 GiB" \
+bad "^error: $work/long_grid.toml:3: grid\.cells: the scene needs 2\.05e\+03 particles, 1e\+07 nodes .* about 2\.7 GiB; the limit is 2 GiB" \
   run "$work/long_grid.toml" --out "$work/a" --max-memory 2G
 # The finite-strain bar's failure is located at the key of its amplitude
 bad "^error: $(dirname "$scene")/vibrating_bar.toml:[1-9][0-9]*: exact_parameters\.velocity_amplitude: FiniteStrainBar: stretch fell below" \
@@ -113,7 +113,40 @@ bad "^error: .*dyka_bar.toml:[0-9]+: grid\.cells: the scene needs 40 particles.*
 bad "^error: --max-memory: 'lots' is not a size" run "$scene" --out "$work/a" --max-memory lots
 bad "^error: --max-steps: must be a number in \[1, .*got 'nan'" run "$scene" --out "$work/a" --max-steps nan
 bad "^error: --out: must not be empty" run "$scene" --out ""
-bad "^error: $work:0: \(file\): is a directory" run "$work" --out "$work/a"
+bad "^error: $work: is a folder, not a regular file" run "$work" --out "$work/a"
+# A scene that is not a regular file is refused at once (a FIFO never waited on), for each command reading one.
+mkfifo "$work/fifo.toml"
+printf 't,v\n0,1\n' >"$work/c.csv"
+printf '#!/bin/sh\nexec timeout -s KILL 10 "%s" "$@"\n' "$mpm" >"$work/mpm_in_10s"  # a hang fails (exit 137), never blocks
+chmod +x "$work/mpm_in_10s"
+untimed=$mpm
+mpm=$work/mpm_in_10s
+for command in "run $work/fifo.toml --out $work/a" "run $work/fifo.toml --print-scene" "exact $work/fifo.toml --at 0 --times 0:1e-5:1e-4" \
+               "compare $work/c.csv $work/fifo.toml --at 0 --column v=v_x"; do
+  # shellcheck disable=SC2086
+  bad "^error: $work/fifo.toml: not a regular file \(a FIFO\)" $command
+done
+mpm=$untimed
+bad "^error: /dev/null: not a regular file \(a device\)" run /dev/null --print-scene
+# LME's estimate counts its copy of the stencils: 40 particles x 2.35e6 nodes at gamma 1e-11 need 2.8 GiB (2.9 GB measured)
+bad "^error: --set\(2\):1: solver\.lme_gamma: the scene needs 40 particles, .* about 2\.82 GiB; the limit is 2 GiB" \
+  run "$scene" --out "$work/a" --set 'solver.shape="lme"' --set solver.lme_gamma=1e-11 --max-memory 2G
+# mpm stability refuses, as mpm shape does, an LME support reaching beyond 100 cells (out of memory, then Newton's failure)
+for gamma in 1e-12 1e-18; do
+  bad "^error: --lme-gamma: too small for the support tolerance 1e-06: the support would reach beyond 100 cells" \
+    stability --shape lme --lme-gamma $gamma
+done
+# A Poisson ratio just below 0.5 is valid: the CFL check's body takes it as it is (it read 0.5 at 6 digits)
+succeeds() {  # succeeds ARGS...: exit 0
+  "$mpm" "$@" >"$work/out" 2>"$work/err" || { echo "FAIL: mpm $* -> exit $?, stderr: $(cat "$work/err")"; failures=$((failures + 1)); }
+}
+succeeds stability --poisson-ratio 0.4999999 --dim 2
+succeeds run "$(dirname "$scene")/colliding_disks.toml" --out "$work/nearly_incompressible" --set material.poisson_ratio=0.4999999 \
+  --set solver.end_time=1e-4 --set output.snapshots=[]
+# A number too small for a double is said to be that, not "not finite"
+printf 'x,volume\n0.01,1e-320\n' >"$work/tiny.csv"
+bad "^error: --set\(2\):1: body\[0\]\.file: $work/tiny.csv:2: volume: '1e-320' is too small" \
+  run "$scene" --out "$work/a" --set 'body[0].shape="file"' --set "body[0].file=\"$work/tiny.csv\""
 bad "^error: --at: coordinates must lie within" shape --dim 1 --kind linear --at 1e300
 bad "^error: --at: 'nan' is not" shape --dim 1 --kind linear --at nan
 bad "^error: --dim: must be a whole number from 1 to 2, got '2x'" shape --dim 2x --kind linear --at 0.5,0.5

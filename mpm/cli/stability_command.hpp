@@ -8,6 +8,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <memory>
@@ -64,6 +65,23 @@ inline std::string stability_usage() {
   return stability_parser(request)->help();
 }
 
+/// The option of `mpm stability` that sets a scene key of its body (`solver.lme_gamma`: `--lme-gamma`); the key itself
+/// for one no option sets.
+inline std::string option_of_key(const std::string& key) {
+  if (key == "material.poisson_ratio") return "--poisson-ratio";
+  if (key.rfind("solver.", 0) != 0) return key;
+  std::string option = "--" + key.substr(7);
+  std::replace(option.begin(), option.end(), '_', '-');
+  return option;
+}
+
+TEST_CASE("mpm stability: a scene key of its body is named by the option that sets it") {
+  CHECK(option_of_key("solver.lme_gamma") == "--lme-gamma");
+  CHECK(option_of_key("solver.newmark_gamma") == "--newmark-gamma");
+  CHECK(option_of_key("material.poisson_ratio") == "--poisson-ratio");
+  CHECK(option_of_key("grid.cells") == "grid.cells");
+}
+
 /// Parses the options and prints the CSV; returns the exit code (2 with a message naming the option on bad input).
 inline int stability_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   StabilityRequest request;
@@ -99,10 +117,18 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
   try {
     scene = stability_scene(body);
   } catch (const SceneError& error) {  // e.g. an LME gamma too large for its support tolerance: name the option, not the key
-    const std::string message = error.message(), key = "solver.lme_gamma: ";
-    const auto at = message.find(key);
-    err << "error: " << (at != std::string::npos ? "--lme-gamma: " + message.substr(at + key.size()) : message) << "\n";
-    return 2;
+    return fail(option_of_key(error.key), error.what());
+  }
+  // As `mpm shape`: the support may reach no further than 100 cells. A wider one covers the whole body (at most 256
+  // cells) and changes nothing but the cost: its stencils hold (2R/h)^dim entries per particle (gigabytes below
+  // gamma = 1e-5 in 2D), and below 1e-16 the Newton iteration of the weights fails.
+  const double reach = std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 3.0;  // cells, as `mpm shape`
+  if (scene.shape == io::ShapeKind::lme && reach > 103.0) {
+    std::ostringstream least;
+    const double smallest = -std::log(scene.lme_tol) / (100.0 * 100.0), digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
+    least << std::setprecision(3) << std::ceil(smallest / digit) * digit;  // rounded up: the value printed is accepted
+    return fail("--lme-gamma", "too small for the support tolerance " + io::SceneReader::describe(scene.lme_tol) +
+                                   ": the support would reach beyond 100 cells; give at least " + least.str());
   }
   const StabilityLimits limits = request.dimension == 1 ? stability_limits<1>(scene) : stability_limits<2>(scene);
   out << "dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,"
@@ -141,6 +167,22 @@ TEST_CASE("mpm stability: linear shapes at 1 ppc, 2 for forward Euler and 2/sqrt
   CHECK(stability_command({"--lme-gamma", "50", "--shape", "lme"}, out, err) == 2);
   CHECK(stability_command({"--dim", "2", "--cells", "12"}, out, err) == 2);  // 1008 unknowns
   CHECK(out.str().empty());
+  for (const char* gamma : {"1e-3", "1e-12", "1e-18"}) {  // beyond 100 cells: refused at once, never out of memory or Newton
+    std::ostringstream wide;
+    CHECK(stability_command({"--shape", "lme", "--lme-gamma", gamma}, out, wide) == 2);
+    CHECK(wide.str() == "error: --lme-gamma: too small for the support tolerance 1e-06: the support would reach beyond 100 cells; "
+                        "give at least 0.00139\n");
+  }
+  CHECK(out.str().empty());
+  std::ostringstream large;
+  CHECK(stability_command({"--lme-gamma", "1e-18"}, out, large) == 0);  // no LME: gamma unused
+  CHECK(stability_command({"--shape", "lme", "--lme-gamma", "0.00139"}, out, large) == 0);  // the least it names
+  // a Poisson ratio just below 0.5 reaches the body's scene as it is (at 6 digits it read 0.5, out of range)
+  StabilityBody nearly_incompressible;
+  nearly_incompressible.poisson_ratio = 0.4999999;
+  CHECK(stability_scene(nearly_incompressible).bodies[0].material.poisson_ratio == 0.4999999);
+  std::ostringstream fine;
+  CHECK(stability_command({"--poisson-ratio", "0.4999999", "--dim", "2"}, fine, err) == 0);
 }
 
 TEST_CASE("scene_cfl_limit: mpm run's warning limit for a scene, 1D and 2D, looked for only above a stable CFL") {

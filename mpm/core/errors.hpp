@@ -19,12 +19,15 @@ struct SceneError : std::runtime_error {
   SceneError(std::string file_, int line_, std::string key_, const std::string& what_is_wrong)
       : std::runtime_error(what_is_wrong), file(std::move(file_)), line(line_), key(std::move(key_)) {}
   std::string file;
-  int line;  ///< 0 when the key is absent from the file
+  int line;  ///< 0 for the file as a whole (missing, not a regular file, too large): then key is ""
   std::string key;
 
+  /// `error: FILE:LINE: KEY: what`, or `error: FILE: what` for the file as a whole (line 0, no key).
   std::string message() const {
     std::ostringstream out;
-    out << "error: " << file << ":" << line << ": " << key << ": " << what();
+    out << "error: " << file << ":";
+    if (line > 0 || !key.empty()) out << line << ": " << key << ":";
+    out << " " << what();
     return out.str();
   }
 };

@@ -14,7 +14,10 @@
 #include <sys/vfs.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -41,6 +44,68 @@ inline std::vector<std::string> csv_fields(const std::string& line) {
     if (comma == std::string::npos) return fields;
     begin = comma + 1;
   }
+}
+
+/// Reads the whole of `text` as a finite number into `value`. Returns "" or what is wrong, after the quoted text:
+/// "is not a finite number" (a word, a unit after it, inf, nan), "is too large (beyond 1.8e308)" or "is too small
+/// (below 2.2e-308 in magnitude, where doubles lose precision)" (strtod's ERANGE).
+inline std::string read_finite_number(const std::string& text, double& value) {
+  const std::string quoted = "'" + text + "' ";
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return quoted + "is not a finite number";
+  char* end = nullptr;
+  errno = 0;
+  const double read = std::strtod(text.c_str(), &end);
+  const bool out_of_range = errno == ERANGE;
+  if (end != text.c_str() + text.size() || (!std::isfinite(read) && !out_of_range)) return quoted + "is not a finite number";
+  if (out_of_range && std::abs(read) > 1.0) return quoted + "is too large (beyond 1.8e308)";
+  if (out_of_range) return quoted + "is too small (below 2.2e-308 in magnitude, where doubles lose precision)";
+  value = read;
+  return "";
+}
+
+/// Why the file of `status` (open as `descriptor`, or -1 when only the path was examined) is not a regular
+/// file; "" if it is one.
+inline std::string kind_refused(const struct stat& status, int descriptor) {
+  if (S_ISDIR(status.st_mode)) return "is a folder, not a regular file; give a file";
+  if (S_ISFIFO(status.st_mode)) return "not a regular file (a FIFO)";
+  if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode)) return "not a regular file (a device)";
+  if (!S_ISREG(status.st_mode)) return "not a regular file";
+  struct statfs system {};
+  if (descriptor >= 0 && ::fstatfs(descriptor, &system) == 0 && (system.f_type == 0x9fa0 || system.f_type == 0x62656572))
+    return "not a regular file (a file of /proc or /sys)";
+  return "";
+}
+
+/// Opens `path` for reading if it is a regular file, examined before it is opened (a FIFO is never opened,
+/// so never waited on) and again once open. Returns the descriptor, or -1 with `error` set to
+/// `PATH: why` and `missing` true when the path names nothing.
+inline int open_regular_file(const std::string& path, std::string& error, bool& missing) {
+  struct stat before {}, after {};
+  if (::stat(path.c_str(), &before) != 0) {
+    missing = errno == ENOENT;
+    error = path + (errno == ENOENT || errno == EACCES || errno == ENOTDIR ? ": cannot be read: no such file, or no permission"
+                                                                         : ": cannot be read: " + std::string(std::strerror(errno)));
+    return -1;
+  }
+  if (std::string refused = kind_refused(before, -1); !refused.empty()) {
+    error = path + ": " + refused;
+    return -1;
+  }
+  // O_NONBLOCK: should the path have become a FIFO since, opening it does not wait for a writer.
+  const int descriptor = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (descriptor < 0) {
+    error = path + ": cannot be read: " + std::strerror(errno);
+    return -1;
+  }
+  std::string refused;
+  if (::fstat(descriptor, &after) != 0 || after.st_ino != before.st_ino || after.st_dev != before.st_dev)
+    refused = "changed while it was opened";
+  else
+    refused = kind_refused(after, descriptor);
+  if (refused.empty()) return descriptor;
+  ::close(descriptor);
+  error = path + ": " + refused;
+  return -1;
 }
 
 /// A text file read line by line, as the file's comment says. Every reading call returns false at the end of
@@ -94,41 +159,8 @@ class CsvFile {
   }
 
  private:
-  /// Why the open file `descriptor` (or, at -1, the path) is not a regular file; "" if it is one.
-  static std::string kind_refused(const struct stat& status, int descriptor) {
-    if (S_ISDIR(status.st_mode)) return "is a folder, not a regular file; give a file";
-    if (S_ISFIFO(status.st_mode)) return "not a regular file (a FIFO)";
-    if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode)) return "not a regular file (a device)";
-    if (!S_ISREG(status.st_mode)) return "not a regular file";
-    struct statfs system {};
-    if (descriptor >= 0 && ::fstatfs(descriptor, &system) == 0 && (system.f_type == 0x9fa0 || system.f_type == 0x62656572))
-      return "not a regular file (a file of /proc or /sys)";
-    return "";
-  }
-
   void open() {
-    struct stat before {}, after {};
-    if (::stat(path_.c_str(), &before) != 0) {  // examined before it is opened: a FIFO is never opened
-      missing_ = errno == ENOENT;
-      error_ = path_ + (errno == ENOENT || errno == EACCES || errno == ENOTDIR ? ": cannot be read: no such file, or no permission"
-                                                                              : ": cannot be read: " + std::string(std::strerror(errno)));
-      return;
-    }
-    if (std::string refused = kind_refused(before, -1); !refused.empty()) {
-      error_ = path_ + ": " + refused;
-      return;
-    }
-    // O_NONBLOCK: should the path have become a FIFO since, opening it does not wait for a writer.
-    descriptor_ = ::open(path_.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (descriptor_ < 0) {
-      error_ = path_ + ": cannot be read: " + std::strerror(errno);
-      return;
-    }
-    if (::fstat(descriptor_, &after) != 0 || after.st_ino != before.st_ino || after.st_dev != before.st_dev) {
-      error_ = path_ + ": changed while it was opened";
-      return;
-    }
-    if (std::string refused = kind_refused(after, descriptor_); !refused.empty()) error_ = path_ + ": " + refused;
+    descriptor_ = open_regular_file(path_, error_, missing_);
   }
 
   /// The next byte, or -1 at the end of the file or on a read error (error_ set).
@@ -234,6 +266,24 @@ TEST_CASE("CsvFile: a folder, a FIFO, a device and a file of /proc are refused a
   CHECK(CsvFile("/dev/zero").error() == "/dev/zero: not a regular file (a device)");
   CHECK(CsvFile("/proc/self/mem").error() == "/proc/self/mem: not a regular file (a file of /proc or /sys)");
   CHECK(!CsvFile("/proc/self/mem").missing());
+}
+
+TEST_CASE("read_finite_number: the whole text, finite, and what is wrong said as it is") {
+  double value = -1.0;
+  CHECK(read_finite_number("1e-3", value).empty());
+  CHECK(value == 1e-3);
+  CHECK(read_finite_number("-2.5E+2", value).empty());
+  CHECK(value == -250.0);
+  CHECK(read_finite_number("0", value).empty());
+  CHECK(value == 0.0);
+  CHECK(read_finite_number("2.3e-308", value).empty());  // the smallest normal doubles are kept
+  for (const char* word : {"", " 1", "1 ", "1e-3s", "heavy", "inf", "-inf", "nan", "1,5"})
+    CHECK_MESSAGE(read_finite_number(word, value) == "'" + std::string(word) + "' is not a finite number", word);
+  CHECK(read_finite_number("1e-320", value).rfind("'1e-320' is too small (below 2.2e-308", 0) == 0);  // subnormal, finite
+  CHECK(read_finite_number("-1e-400", value).rfind("'-1e-400' is too small", 0) == 0);
+  CHECK(read_finite_number("1e400", value) == "'1e400' is too large (beyond 1.8e308)");
+  CHECK(read_finite_number("-1e400", value) == "'-1e400' is too large (beyond 1.8e308)");
+  CHECK(value == 2.3e-308);  // never changed by a refused text
 }
 
 }  // namespace mpm::io

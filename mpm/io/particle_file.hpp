@@ -61,17 +61,9 @@ inline std::vector<FileParticle> read_particle_file(const std::string& path, int
     const std::string where = file.where();
     auto number_at = [&](int column, double& value) {
       if (column < 0) return true;
-      std::size_t end = 0;
-      try {
-        value = std::stod(fields[column], &end);
-      } catch (const std::exception&) {
-        end = 0;
-      }
-      if (fields[column].empty() || end != fields[column].size() || !std::isfinite(value)) {
-        error = where + header[column] + ": '" + fields[column] + "' is not a finite number";
-        return false;
-      }
-      return true;
+      const std::string wrong = read_finite_number(fields[column], value);
+      if (!wrong.empty()) error = where + header[column] + ": " + wrong;
+      return wrong.empty();
     };
     FileParticle particle;
     particle.line = file.line();
@@ -126,6 +118,9 @@ TEST_CASE("Particle file: columns by name, mass from volume, velocity optional, 
   error.clear();
   read("x,mass\n0.1,heavy\n", 1, error);
   CHECK(error == path + ":2: mass: 'heavy' is not a finite number");
+  error.clear();
+  read("x,volume\n0.1,1e-320\n", 1, error);  // finite but subnormal: too small, not "not a finite number"
+  CHECK(error.rfind(path + ":2: volume: '1e-320' is too small (below 2.2e-308", 0) == 0);
   error.clear();
   read("x,volume,mass\n0.1,1,1\n", 1, error);
   CHECK(error == path + ":1: the header needs one of the columns volume or mass");

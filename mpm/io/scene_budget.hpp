@@ -83,16 +83,58 @@ struct SceneCost {
   double nodes = 0.0;               ///< prod over axes of (cells + margins + 1)
   double nodes_per_particle = 0.0;  ///< the stencil capacity of the shape function
   double particle_bytes = 0.0, node_bytes = 0.0;
+  double stencil_bytes = 0.0;  ///< the stencils, with the shape's copy of them (LME), of the run or its CFL check's body
   double time_step = 0.0, steps = 0.0;  ///< Eq. (42) at t = 0, and end_time over it
   int largest_body = 0;                 ///< the body with most particles
   double shape_tests = 0.0;             ///< seeds times vertices of the polygon with most (seeding tests each seed)
   int costliest_polygon = -1;           ///< that polygon's body; -1: none
-  double bytes() const { return particle_bytes + node_bytes; }
+  /// The process itself (code, libraries, the threads' stacks, the allocator): about 6 MB measured, 16 MiB counted.
+  static constexpr double process_bytes = 16.0 * (1 << 20);
+  double bytes() const { return process_bytes + particle_bytes + stencil_bytes + node_bytes; }
 };
 
-/// The estimate. Memory counts every per-particle array of Particles three times (seeding grows
-/// the vectors by doubling, and the simulation holds its own copy), the stencils (node, N, grad N
-/// per stencil entry), the shape's per-particle state, the nodal fields of GridFields and their copies,
+/// The particles per cell and axis of the uniform body on which `mpm run` checks a scene's CFL (warning_body() of
+/// mpm/stability.hpp): the scene's largest, at most 4.
+inline int warning_body_ppc(const Scene& scene) {
+  int ppc = 1;
+  for (const auto& body : scene.bodies)
+    for (int per_axis : body.particles_per_cell) ppc = std::max(ppc, std::min(per_axis, 4));
+  return ppc;
+}
+
+/// That body's cells per axis: 16 in 1D; in 2D 6 at 1 particle per cell and axis, 4 at 2 and 2 from 3 (at most 448 unknowns).
+inline int warning_body_cells(int dimension, int ppc) { return dimension == 1 ? 16 : ppc == 1 ? 6 : ppc == 2 ? 4 : 2; }
+
+/// That body's particles, whose stencils are as wide as the run's: the run's peak is the larger of the two.
+inline double warning_body_particles(const Scene& scene) {
+  const int ppc = warning_body_ppc(scene);
+  return std::pow(static_cast<double>(warning_body_cells(scene.dimension, ppc) * ppc), scene.dimension);
+}
+
+TEST_CASE("Scene budget: the CFL check's body has 16 x ppc particles in 1D, at most 8 x 8 in 2D") {
+  Scene scene;
+  scene.dimension = 1;
+  scene.bodies.resize(2);
+  scene.bodies[0].particles_per_cell = {2};
+  scene.bodies[1].particles_per_cell = {3};
+  CHECK(warning_body_ppc(scene) == 3);
+  CHECK(warning_body_particles(scene) == 48.0);
+  scene.bodies[1].particles_per_cell = {100};
+  CHECK(warning_body_particles(scene) == 64.0);  // at most 4 per cell
+  scene.dimension = 2;
+  scene.bodies[0].particles_per_cell = {1, 1};
+  scene.bodies[1].particles_per_cell = {1, 1};
+  CHECK(warning_body_particles(scene) == 36.0);
+  scene.bodies[1].particles_per_cell = {2, 1};
+  CHECK(warning_body_particles(scene) == 64.0);
+  scene.bodies[1].particles_per_cell = {3, 3};
+  CHECK(warning_body_particles(scene) == 36.0);
+}
+
+/// The estimate, an upper bound of the peak resident memory. It counts every per-particle array of Particles three
+/// times (seeding grows the vectors by doubling, and the simulation holds its own copy), the stencils (node, N, grad N
+/// per stencil entry; LME keeps each particle's last nodes and N beside them: 12 bytes more per entry), of the run or
+/// of its CFL check's body if that has more particles, the shape's per-particle state, the nodal fields of GridFields and their copies,
 /// one per chunk of the particle-to-grid scatter beyond the first (mpm/core/parallel.hpp): in 1D, where
 /// a grid of many cells may hold few particles, the copies are most of the memory.
 /// The stencil capacity is 2^d (linear), 3^d (uGIMP, l_p <= h/2), (2R/h + 2)^d (LME, a bound).
@@ -119,8 +161,9 @@ inline SceneCost estimate_cost(const Scene& scene) {
   else if (scene.shape == ShapeKind::bspline3) cost.nodes_per_particle = std::pow(4.0, d);
   else cost.nodes_per_particle = std::pow(2.0 * std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 2.0, d);
   const double particle_arrays = 4 + 8 + 8 + 5 * 8.0 * d + 2 * 8.0 * d * d + 8 + 4;  // Particles<Dim>
-  const double stencil = 4 + cost.nodes_per_particle * (4 + 8 + 8.0 * d);         // Stencils<Dim>
-  cost.particle_bytes = cost.particles * (3 * particle_arrays + stencil + 8.0 * d);
+  const double entry = 4 + 8 + 8.0 * d + (scene.shape == ShapeKind::lme ? 4 + 8 : 0);  // Stencils<Dim>, LmeShape's last_nodes_, last_values_
+  cost.particle_bytes = cost.particles * (3 * particle_arrays + 8.0 * d);
+  cost.stencil_bytes = std::max(cost.particles, warning_body_particles(scene)) * (4 + cost.nodes_per_particle * entry);
   const double copies = std::clamp(std::floor(cost.particles / items_per_chunk), 1.0, double(max_chunks)) - 1.0;
   cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d + copies * (8 + 3 * 8.0 * d));  // GridFields<Dim>: m_I, seven vector fields, copies
   auto norm = [](const std::vector<double>& v) { return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0)); };
@@ -174,7 +217,7 @@ inline void check_budget(const Scene& scene, const Budget& budget) {
            << (budget.max_bytes > 0.0 ? " (--max-memory)" : " (half this machine's memory; --max-memory BYTES|<n>G to change it)");
     else
       what << "; the code indexes nodes and stencil entries with 32-bit integers, at most 2^31 - 1 of each";
-    if (cost.node_bytes >= cost.particle_bytes || cost.nodes > most_index) {
+    if (cost.node_bytes >= cost.particle_bytes + cost.stencil_bytes || cost.nodes > most_index) {
       std::string key = "cells";
       int largest = 0;
       for (const auto& [name, values] : {std::pair{"cells", &scene.cells}, {"margin_min", &scene.margin_min}, {"margin_max", &scene.margin_max}})
@@ -251,7 +294,7 @@ TEST_CASE("Scene budget: sizes are estimated without overflow and the key that m
     return "no error";
   };
   Budget small;
-  small.max_bytes = 1e6;
+  small.max_bytes = 20e6;  // the process itself counts 16 MiB
   CHECK(message_of(bar, {}, small) == "no error");
   CHECK(message_of(bar, {"grid.cells=[100000]"}, small).rfind("error: --set(1):1: grid.cells: the scene needs 2e+05 particles", 0) == 0);
   CHECK(message_of(bar, {"grid.margin_max=[100000]"}, small).rfind("error: --set(1):1: grid.margin_max: the scene needs", 0) == 0);

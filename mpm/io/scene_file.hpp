@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -27,6 +29,7 @@
 #include <toml++/toml.h>
 
 #include "mpm/core/errors.hpp"
+#include "mpm/io/csv_file.hpp"
 
 namespace mpm::io {
 
@@ -128,19 +131,35 @@ inline void check_table_headers(std::string_view text, const std::string& name) 
   }
 }
 
-/// Parses the scene file. \throws SceneError if it cannot be read (missing, a directory, larger
-/// than max_scene_bytes) or on a syntax error, with its line.
-inline SceneFile parse_scene_file(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw SceneError(path, 0, "(file)", "is a directory; give a scene file (.toml)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path, 0, "(file)", "cannot be read: no such file, or no permission");
+/// The text of the scene file `path`, read with read(2) once it is known to be a regular file (a FIFO,
+/// a device, a folder or a file of /proc is refused at once, never waited on or read). \throws SceneError
+/// for the file as a whole (`error: FILE: why`) if it cannot be read or is larger than max_scene_bytes.
+inline std::string read_scene_text(const std::string& path) {
+  std::string why;
+  bool missing = false;
+  const int descriptor = open_regular_file(path, why, missing);
+  if (descriptor < 0) throw SceneError(path, 0, "", why.substr(path.size() + 2));
   std::string text(max_scene_bytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  if (in.bad()) throw SceneError(path, 0, "(file)", "cannot be read");
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  if (text.size() > max_scene_bytes)
-    throw SceneError(path, 0, "(file)", "is larger than " + std::to_string(max_scene_bytes) + " bytes; a scene is a few kB");
+  std::size_t size = 0;
+  while (size < text.size()) {
+    const ssize_t count = ::read(descriptor, &text[size], text.size() - size);
+    if (count < 0 && errno == EINTR) continue;
+    if (count < 0) why = std::strerror(errno);
+    if (count <= 0) break;
+    size += static_cast<std::size_t>(count);
+  }
+  ::close(descriptor);
+  if (!why.empty()) throw SceneError(path, 0, "", "cannot be read: " + why);
+  if (size > max_scene_bytes)
+    throw SceneError(path, 0, "", "is larger than " + std::to_string(max_scene_bytes) + " bytes; a scene is a few kB");
+  text.resize(size);
+  return text;
+}
+
+/// Parses the scene file. \throws SceneError if it cannot be read (see read_scene_text) or on a syntax
+/// error, with its line.
+inline SceneFile parse_scene_file(const std::string& path) {
+  const std::string text = read_scene_text(path);
   check_nesting(text, path);
   check_table_headers(text, path);
   try {
@@ -387,6 +406,33 @@ TEST_CASE("Scene file: hostile input is refused with its key: nesting, key paths
   SceneReader made(scene, *scene.table["made"].as_table(), "made");
   CHECK(message_of([&] { made.fail("other", "missing"); }) == "error: --set(3):1: made.other: missing");
   CHECK(message_of([&] { made.reject_unknown_keys(); }).rfind("error: --set(3):1: made.deeper: unknown key", 0) == 0);
+}
+
+TEST_CASE("Scene file: a scene that is not a regular file is refused at once, as `error: FILE: why`") {
+  namespace fs = std::filesystem;
+  auto message_of = [](const std::string& path) {
+    try {
+      parse_scene_file(path);
+    } catch (const SceneError& error) {
+      return error.message();
+    }
+    return std::string("accepted");
+  };
+  const std::string fifo = (fs::temp_directory_path() / "mpm_scene_file_fifo.toml").string();
+  fs::remove(fifo);
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK(message_of(fifo) == "error: " + fifo + ": not a regular file (a FIFO)");  // no writer waited for
+  fs::remove(fifo);
+  CHECK(message_of("/dev/zero") == "error: /dev/zero: not a regular file (a device)");
+  const std::string folder = fs::temp_directory_path().string();
+  CHECK(message_of(folder) == "error: " + folder + ": is a folder, not a regular file; give a file");
+  CHECK(message_of(fifo) == "error: " + fifo + ": cannot be read: no such file, or no permission");
+  const std::string large = (fs::temp_directory_path() / "mpm_scene_file_large.toml").string();
+  std::ofstream(large) << "# " << std::string(max_scene_bytes, 'x') << "\n";
+  CHECK(message_of(large) == "error: " + large + ": is larger than 1048576 bytes; a scene is a few kB");
+  std::ofstream(large) << "dimension = 1\n";
+  CHECK(message_of(large) == "accepted");
+  fs::remove(large);
 }
 
 }  // namespace mpm::io
