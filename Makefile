@@ -20,7 +20,7 @@ test: configure
 	@cmake --build $(BUILD_DIR) --target test_programs -j $(JOBS)
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
-# AddressSanitizer + UndefinedBehaviorSanitizer (issue 11): only the programs the tests run (the
+# AddressSanitizer + UndefinedBehaviorSanitizer: only the programs the tests run (the
 # test program, the CLI, docs_trace), at -O1 with assertions on, in their own folder; then the tests,
 # the fuzzer and every scene x shape x integrator for a few steps (tests/sanitize_scenes.sh, a ctest
 # of that folder); the docs check in Chromium (docs_browser) is left to make test.

@@ -3,7 +3,7 @@
 # ratios are comparable (the machine may be shared and noisy: compare ratios, not absolute numbers).
 #
 # Writes results/bench/:
-#   speed.csv     the targets of issue 9 (Dyka bar at 640 cells; soil block), particle-steps/s, one thread, best of 7 interleaved rounds,
+#   speed.csv     the speed targets (Dyka bar at 640 cells; soil block), particle-steps/s, one thread, best of 7 interleaved rounds,
 #                 and each shape's cost relative to linear with the same integrator
 #   scaling.csv   time per particle-step against particles: Dyka bar 40..20480 cells (1D) and a soil
 #                 block from 100 to 1e6 particles (2D), per shape and integrator, on 1 and on all cores;

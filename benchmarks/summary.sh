@@ -26,7 +26,7 @@ check "Dyka bar 640 cells, LME gamma 3 + NPC (particle-steps/s)" "$(value dyka_b
 for i in fe npc; do
   check "1D: LME cost / linear cost, $i" "$(value dyka_bar lme $i relative_to_linear)" 2 "<=" "%.2f"
   check "2D soil block (400 particles): LME cost / linear cost, $i" "$(value soil_block lme $i relative_to_linear)" 3 "<=" "%.2f"
-  for degree in 2 3; do  # issue 19: a B-spline step at most 1.5 x a linear one in 1D, 2 x in 2D
+  for degree in 2 3; do  # target: a B-spline step at most 1.5 x a linear one in 1D, 2 x in 2D
     check "1D: B-spline $degree cost / linear cost, $i" "$(value dyka_bar bspline$degree $i relative_to_linear)" 1.5 "<=" "%.2f"
     check "2D soil block (400 particles): B-spline $degree cost / linear cost, $i" "$(value soil_block bspline$degree $i relative_to_linear)" 2 "<=" "%.2f"
   done

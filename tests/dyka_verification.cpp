@@ -1,5 +1,5 @@
 /// \file
-/// A fast subset of the verification suite (issue 4, item 10), so that CI guards the claims and
+/// A fast subset of the verification suite, so that CI guards the claims and
 /// bounds that `make figures` reports. Each bound below is the measured value of the full suite
 /// (results/report.md) with a margin, or a bound of the theory.
 #include <doctest/doctest.h>

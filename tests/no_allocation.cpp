@@ -1,5 +1,5 @@
 /// \file
-/// Nothing is allocated inside the time step (issue 2, item 4): every array is sized before the
+/// Nothing is allocated inside the time step: every array is sized before the
 /// first step. This test replaces the global operator new with a counting one and checks that no
 /// allocation happens between the first and the last sample of a run, for every shape function
 /// and integrator, in 1D and 2D.

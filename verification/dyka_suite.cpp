@@ -1,4 +1,4 @@
-// The Dyka-bar part of `make figures` (issue 4): runs every case in parallel on the machine's
+// The Dyka-bar part of `make figures`: runs every case in parallel on the machine's
 // cores, writes the data of each figure as CSV into DATA_DIR, and the report fragment
 // REPORT (Markdown) with the paper's claims, the measured numbers and whether each holds.
 // Exit code 1 when a hard check (a bound the theory gives) fails.
@@ -19,7 +19,7 @@
 //
 // The sweep stops at 2560 cells, the first mesh where particles cross cells at 1 particle per cell
 // (crossing ratio 1.27). 5120 cells (ratio 2.5) alone cost 167 of the 228 CPU-seconds of this suite,
-// which would put make figures past its 180 s on 2 cores (issues 9 and 10); what it showed, each
+// which would put make figures past its 180 s on 2 cores; what it showed, each
 // shape's error leaving its no-crossing value, is measured more directly by the smooth suite (error
 // against amplitude / h on a fixed mesh, and Fig. 6 at 2 particles per cell). Add 5120 to
 // sweep_cells to see it; every claim below follows sweep_cells.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Smooth data (issue 10): the vibrating bar's convergence, the grid-crossing error isolated, the 2D
+# Smooth data: the vibrating bar's convergence, the grid-crossing error isolated, the 2D
 # manufactured solutions, and the Dyka bar at 2 particles per cell; data in $MPM_RESULTS/data/smooth_*.csv
 # and dyka_2ppc.csv, report fragment $MPM_RESULTS/report/40_smooth.md. Called by make_figures.sh
 # (MPM_BIN, MPM_ROOT, MPM_RESULTS set) in parallel with the other suites; Fig. 6 at 2 particles per

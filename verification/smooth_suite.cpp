@@ -1,4 +1,4 @@
-// The smooth-data part of `make figures` (issue 10): the vibrating bar's convergence per shape
+// The smooth-data part of `make figures`: the vibrating bar's convergence per shape
 // function, integrator, amplitude, particles per cell and CFL; the grid-crossing error isolated
 // (error against amplitude / h on a fixed mesh); the Dyka bar at 2 particles per cell; each with today's
 // baselines beside the paper's methods (B-splines, USL and MUSL, and LME at small gamma in the two
@@ -97,7 +97,7 @@ constexpr std::size_t least_meshes = 3;
 // The Dyka bar at 2 particles per cell: the crossing ratio of paper/08_test_cases.md (Grid-crossing bands) is u_max / (h / 2 ppc),
 // so crossing (ratio >= 1) starts at 1011 cells instead of 2021: 1280 and 2560 cells cross at 2 ppc, and
 // 2560 is the mesh where both 1 and 2 ppc cross (the last mesh of the 1-ppc sweep, see dyka_suite.cpp). 5120 at
-// 2 ppc is not run: it alone would cost 4x the 2560-cell set (section 7 of issue 10's time budget). No claim reads 320 cells.
+// 2 ppc is not run: it alone would cost 4x the 2560-cell set (make figures' time budget). No claim reads 320 cells.
 const std::vector<int> dyka_cells{40, 160, 1280, 2560};
 constexpr double dyka_speed = 5.0, dyka_largest_displacement = 3.298e-5, dyka_length = 0.1333;
 double dyka_crossing_ratio(int cells, int ppc) { return dyka_largest_displacement / (0.5 * dyka_length / cells / ppc); }
@@ -352,7 +352,7 @@ int fig6_two_particles_report(const std::string& folder, const std::string& repo
             "of paper/08_test_cases.md (grid-crossing bands) doubles: crossing (ratio >= 1) starts at 1011 cells instead of 2021, and 2560 cells cross at "
             "both. 2560 cells at 2 particles per cell are run where the 1-particle-per-cell run drifts or stops there (not uGIMP and linear with the "
             "predictor-corrector: the crossing claims are decided at 1280 cells); 5120 cells are not run: they alone would cost 4x the 2560-cell set "
-            "(the time budget of issue 10).\n\n";
+            "(make figures' time budget).\n\n";
   verification::write_claims(report, list);
   report << "Where the paper's claim holds (LME and uGIMP suffer less from grid crossing than linear shape functions, on the crossing meshes):\n\n"
          << "| shape | 1 ppc, FE | 1 ppc, NPC | 2 ppc, FE | 2 ppc, NPC |\n|---|---|---|---|---|\n";
@@ -690,7 +690,7 @@ int main(int argc, char** argv) {
                      number(finest.velocity_error, "%.2e"),
                  failed_of[s.key()] == 0 && velocity_order >= 0.5 && stress_order >= 0.5 && falls, true});
     }
-    // The measured findings of issue 10, checked.
+    // The measured findings of the smooth-data study, checked.
     int first_order = 0, count = 0;
     std::string outside;
     for (const auto& s : series)
@@ -771,7 +771,7 @@ int main(int argc, char** argv) {
         text += " " + shape + ": FE " + number(result_of(series_of("small", shape, "fe", 1, 0.5), 64).energy_ratio, "%.6f") + ", NPC " +
                 number(result_of(series_of("small", shape, "npc", 1, 0.5), 64).energy_ratio, "%.6f") + ";";
       const double npc = result_of(series_of("small", "linear", "npc", 1, 0.5), 64).energy_ratio;
-      add(list, {"The predictor-corrector dissipates energy, forward Euler conserves it (energy at T over initial, 64 cells, 1 ppc, CFL 0.5; issue 10 measured 0.962 and 1.000007)",
+      add(list, {"The predictor-corrector dissipates energy, forward Euler conserves it (energy at T over initial, 64 cells, 1 ppc, CFL 0.5)",
                  text, npc < 0.99, false});
     }
     for (const auto& s : baseline_series) {
@@ -980,7 +980,7 @@ int main(int argc, char** argv) {
   const double suite_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
   const double suite_cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   std::ofstream report(report_path);
-  report << "## Smooth data: the vibrating bar (issue 10)\n\n"
+  report << "## Smooth data: the vibrating bar\n\n"
          << "Scene `scenes/vibrating_bar.toml`: the first mode of the steel bar (L = " << bar.length << " m) free at X = 0 and fixed at X = L, "
             "started unstressed with v = V cos(πX/2L), run to one period T = 4L/c. Error: RMS over every particle at T/4, T/2, 3T/4 "
             "and T of v_p - v(X_p, t) divided by V, and of σ_p - σ(X_p, t) divided by ZV; against the exact mode "

@@ -1,4 +1,4 @@
-# Fig. 6 at 2 particles per cell (issue 10): RMS of v_A / |v_0| against the number of cells, one panel
+# Fig. 6 at 2 particles per cell: RMS of v_A / |v_0| against the number of cells, one panel
 # per shape function; dashed: 1 particle per cell (the Dyka suite's sweep), solid: 2 particles per
 # cell; FE red, NPC blue. Dotted verticals: where grid crossing starts (crossing ratio of paper/08_test_cases.md (Grid-crossing bands)
 # = 1) at 2 ppc (1011 cells) and 1 ppc (2021 cells). Crosses at the top: the run stopped. Fourth panel:

@@ -1,4 +1,4 @@
-# The vibrating bar (issue 10): RMS error of velocity (top) and stress (bottom) against the number of
+# The vibrating bar: RMS error of velocity (top) and stress (bottom) against the number of
 # cells, one column per shape function; colour: integrator (FE red, NPC blue); solid: 1 particle per
 # cell, dashed: 2; filled points: CFL 0.5, open: CFL 0.1. Grey guides: slopes 1 and 2. Runs that
 # stopped are left out (their line breaks). Fourth column: today's baselines (CFL 0.5), one colour per

@@ -1,4 +1,4 @@
-# The grid-crossing error isolated (issue 10): the vibrating bar on a fixed mesh of 32 cells, RMS
+# The grid-crossing error isolated: the vibrating bar on a fixed mesh of 32 cells, RMS
 # velocity error against the largest displacement over the cell size, U/h; one panel per integrator
 # and particles per cell, one line per shape function. Dotted: U/h = 1/(2 ppc), where the particle
 # next to the free end first reaches a cell face. Crosses at the top: the run stopped. Dashed, thin:

@@ -1,4 +1,4 @@
-# 2D manufactured solutions (issue 10): RMS errors of velocity (left) and stress (right) against the
+# 2D manufactured solutions: RMS errors of velocity (left) and stress (right) against the
 # cells per side, small amplitude (top) and large amplitude (bottom); colour: shape function; solid:
 # forward Euler, dashed: predictor-corrector; filled points: 2 x 2 particles per cell, open: 1.
 # Grey guides: slopes 1 and 2. Runs that stopped are left out. Right column: today's baselines at small
