@@ -1,12 +1,13 @@
 /// \file
-/// The help of the `mpm` command: `mpm --help`, `mpm run --help`, `mpm exact --help`, `mpm compare --help`,
-/// `mpm shape --help`, `mpm plot --help`.
-/// The scene keys come from the one table of mpm/io/scene_keys.hpp, so the help lists exactly what the
-/// parser reads, with the parser's defaults.
+/// The help of the `mpm` command and of each command, with every scene key from the one table of
+/// mpm/io/scene_keys.hpp (so the help lists exactly what the parser reads, with its defaults).
 #pragma once
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <fstream>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -20,9 +21,6 @@
 #include "mpm/cli/stability_command.hpp"
 #include "mpm/io/scene_keys.hpp"
 
-#include <cstdlib>
-#include <fstream>
-
 namespace mpm::cli {
 
 inline const char* exit_codes =
@@ -33,30 +31,27 @@ inline const char* exit_codes =
     "     could not be written (`cannot write`): one line on stderr; what was written so far is kept\n"
     "  130, 143  SIGINT or SIGTERM stopped the run (run.json says \"interrupted\")\n";
 
-/// A key's default as the help and README show it: `0.5`, `0.0 per axis`, `required`, `none` (optional).
-inline std::string default_text(const io::SceneKey& key) {
+/// A key's default as the help shows it (`0.5`, `0.0 per axis`, `required`, `none`: optional), and README (`0.5`
+/// in code) when `markdown`.
+inline std::string default_text(const io::SceneKey& key, bool markdown = false) {
   if (!key.fallback) return "required";
   if (key.is_optional()) return "none";
-  return std::string(key.fallback) + (key.per_axis ? " per axis" : "");
+  return (markdown ? "`" + std::string(key.fallback) + "`" : std::string(key.fallback)) + (key.per_axis ? " per axis" : "");
 }
 
 /// Every scene key with its default, unit and meaning, one line each.
 inline std::string scene_keys_help() {
-  std::ostringstream out;
-  out << "Scene keys (TOML; body[].min is `min` of every [[body]]; \"per axis\": the default on every axis;\n"
-         "`required`: no default; `none`: optional, absent unless given):\n";
-  size_t key_width = 0, default_width = 0, unit_width = 0;
-  for (const auto& key : io::scene_keys()) {
-    key_width = std::max(key_width, key.key.size());
-    default_width = std::max(default_width, default_text(key).size());
-    unit_width = std::max(unit_width, std::string(key.unit).size());
-  }
-  auto padded = [](std::string text, size_t width) { return text + std::string(width + 2 - text.size(), ' '); };
-  out << "  " << padded("key", key_width) << padded("default", default_width) << padded("unit", unit_width) << "meaning\n";
-  for (const auto& key : io::scene_keys())
-    out << "  " << padded(key.key, key_width) << padded(default_text(key), default_width) << padded(key.unit, unit_width)
-        << key.meaning << "\n";
-  return out.str();
+  std::vector<std::array<std::string, 4>> rows{{"key", "default", "unit", "meaning"}};
+  for (const auto& key : io::scene_keys()) rows.push_back({key.key, default_text(key), key.unit, key.meaning});
+  std::array<std::size_t, 3> width{};
+  for (const auto& row : rows)
+    for (int k = 0; k < 3; ++k) width[k] = std::max(width[k], row[k].size());
+  std::string text = "Scene keys (TOML; body[].min is `min` of every [[body]]; \"per axis\": the default on every axis;\n"
+                     "`required`: no default; `none`: optional, absent unless given):\n";
+  for (const auto& row : rows)
+    text += "  " + row[0] + std::string(width[0] + 2 - row[0].size(), ' ') + row[1] + std::string(width[1] + 2 - row[1].size(), ' ') +
+            row[2] + std::string(width[2] + 2 - row[2].size(), ' ') + row[3] + "\n";
+  return text;
 }
 
 /// README's table of scene keys, one row per key (README.md, between the lines `<!-- scene keys -->` and
@@ -64,30 +59,36 @@ inline std::string scene_keys_help() {
 inline std::string scene_keys_markdown() {
   std::string table = "| key | default | unit | meaning |\n|---|---|---|---|\n";
   for (const auto& key : io::scene_keys()) {
-    std::string meaning;
-    for (char character : std::string(key.meaning)) meaning += character == '|' ? std::string("\\|") : std::string(1, character);
-    std::string fallback = default_text(key);
-    if (key.fallback && *key.fallback) fallback = "`" + std::string(key.fallback) + "`" + (key.per_axis ? " per axis" : "");
-    table += "| `" + key.key + "` | " + fallback + " | " + key.unit + " | " + meaning + " |\n";
+    std::string meaning = key.meaning;
+    for (auto bar = meaning.find('|'); bar != std::string::npos; bar = meaning.find('|', bar + 2)) meaning.insert(bar, "\\");
+    table += "| `" + key.key + "` | " + default_text(key, true) + " | " + key.unit + " | " + meaning + " |\n";
   }
   return table;
 }
 
-/// `mpm --help`
-inline std::string main_help() {
-  return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") +
-         run_usage() + "\n" + exact_usage() + "\n" + compare_usage() + "\n" + shape_usage() + "\n" + plot_usage() + "\n" + stability_usage() + "\n" +
-         "usage: mpm --version\n  Prints the version (git describe at build time).\n\n" + scene_keys_help() + "\n" + exit_codes;
+/// The help a command's own parser prints for `--help`.
+inline std::string help_of(int (*command)(const std::vector<std::string>&, std::ostream&, std::ostream&)) {
+  std::ostringstream out, err;
+  command({"--help"}, out, err);
+  return out.str();
 }
 
-/// The help of one command ("run", "exact", "compare", "shape", "plot"); the main help for any other.
+/// `mpm --help`
+inline std::string main_help() {
+  return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") + run_usage() +
+         "\n" + exact_usage() + "\n" + help_of(compare_command) + "\n" + help_of(shape_command) + "\n" + help_of(plot_command) +
+         "\n" + help_of(stability_command) + "\nusage: mpm --version\n  Prints the version (git describe at build time).\n\n" +
+         scene_keys_help() + "\n" + exit_codes;
+}
+
+/// The help of one command ("run", "exact", "compare", "shape", "plot", "stability"); the main help for any other.
 inline std::string command_help(const std::string& command) {
   if (command == "run") return run_usage() + "\n" + scene_keys_help() + "\n" + exit_codes;
-  if (command == "shape") return shape_usage() + "\n" + exit_codes;
-  if (command == "plot") return plot_usage() + "\n" + exit_codes;
-  if (command == "stability") return stability_usage() + "\n" + exit_codes;
+  if (command == "shape") return help_of(shape_command) + "\n" + exit_codes;
+  if (command == "plot") return help_of(plot_command) + "\n" + exit_codes;
+  if (command == "stability") return help_of(stability_command) + "\n" + exit_codes;
   if (command == "exact") return exact_usage() + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
-  if (command == "compare") return compare_usage();
+  if (command == "compare") return help_of(compare_command);
   return main_help();
 }
 
