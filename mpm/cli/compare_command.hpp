@@ -26,9 +26,11 @@ namespace mpm::cli {
 
 /// The numbers of the columns `wanted` of the CSV file `path` (io::CsvFile), by name, one per data row: each row
 /// with the header's number of fields and a finite number in each column wanted. \throws Refused (`FILE:LINE: ...`).
-inline std::map<std::string, std::vector<double>> read_csv_columns(const std::string& path, const std::vector<std::string>& wanted) {
+inline std::map<std::string, std::vector<double>> read_csv_columns(const std::string& path,
+                                                                   const std::vector<std::string>& wanted) {
   io::CsvFile file(path);
-  if (!file.read_header()) throw Refused(file.error().empty() ? path + ": empty; a header line and data rows are needed" : file.error());
+  if (!file.read_header())
+    throw Refused(file.error().empty() ? path + ": empty; a header line and data rows are needed" : file.error());
   const std::vector<std::string>& header = file.header();
   std::vector<std::size_t> index;
   std::string names;
@@ -37,7 +39,8 @@ inline std::map<std::string, std::vector<double>> read_csv_columns(const std::st
     if (std::count(header.begin(), header.end(), name) > 1)
       throw Refused(file.where() + "column '" + name + "' appears more than once in the header: which one is meant?");
     index.push_back(static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin()));
-    if (index.back() == header.size()) throw Refused(file.where() + "no column '" + name + "' in the header (" + names + ")");
+    if (index.back() == header.size())
+      throw Refused(file.where() + "no column '" + name + "' in the header (" + names + ")");
   }
   std::map<std::string, std::vector<double>> values;
   for (std::vector<std::string> fields; file.next_row(fields);) {
@@ -86,14 +89,15 @@ inline std::string compare_plot_script(const std::string& picture, const std::ve
   gp << gnuplot_preamble;
   for (size_t c = 0; c < scores.size(); ++c) {
     gp << "$data" << c << " << EOD\n";
-    for (size_t n = 0; n < times.size(); ++n) gp << times[n] << "," << scores[c].computed[n] << "," << scores[c].exact[n] << "\n";
+    for (size_t n = 0; n < times.size(); ++n)
+      gp << times[n] << "," << scores[c].computed[n] << "," << scores[c].exact[n] << "\n";
     gp << "EOD\n";
   }
   gp << gnuplot_page(picture, scores.size());
   for (size_t c = 0; c < scores.size(); ++c)
-    gp << "set ylabel " << gnuplot_quoted(scores[c].quantity + " (" + io::quantity_unit(scores[c].quantity) + ")") << "\nplot $data"
-       << c << " using 1:2 with lines lw 1.5 title " << gnuplot_quoted(scores[c].column) << ", $data" << c
-       << " using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'exact'\n";
+    gp << "set ylabel " << gnuplot_quoted(scores[c].quantity + " (" + io::quantity_unit(scores[c].quantity) + ")")
+       << "\nplot $data" << c << " using 1:2 with lines lw 1.5 title " << gnuplot_quoted(scores[c].column) << ", $data"
+       << c << " using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'exact'\n";
   return gp.str() + "unset multiplot\nunset output\n";
 }
 
@@ -113,13 +117,17 @@ inline std::vector<std::pair<std::string, std::string>> checked_columns(const Co
   for (const auto& name : quantities) allowed += (allowed.empty() ? "" : " | ") + name;
   for (const auto& spec : request.column_specs) {
     const auto equals = spec.find('=');
-    const std::string column = spec.substr(0, equals), quantity = equals == std::string::npos ? "" : spec.substr(equals + 1);
-    if (has_control_character(spec)) throw Refused("--column: a column name holds a control character (a newline, a tab...)");
-    if (equals == std::string::npos || column.empty()) throw Refused("--column " + spec + ": give COL=QUANTITY, e.g. v=v_x");
+    const std::string column = spec.substr(0, equals),
+                      quantity = equals == std::string::npos ? "" : spec.substr(equals + 1);
+    if (has_control_character(spec))
+      throw Refused("--column: a column name holds a control character (a newline, a tab...)");
+    if (equals == std::string::npos || column.empty())
+      throw Refused("--column " + spec + ": give COL=QUANTITY, e.g. v=v_x");
     if (std::count(quantities.begin(), quantities.end(), quantity) == 0)
       throw Refused("--column " + spec + ": '" + quantity + "' is not a quantity of this " + std::to_string(dimension) +
                     "D solution; use one of " + allowed);
-    if (column == request.time_column || std::any_of(columns.begin(), columns.end(), [&](auto& c) { return c.first == column; }))
+    if (column == request.time_column ||
+        std::any_of(columns.begin(), columns.end(), [&](auto& c) { return c.first == column; }))
       throw Refused("--column " + spec + ": column '" + column + "' is the time column or named twice");
     columns.emplace_back(column, quantity);
   }
@@ -127,8 +135,9 @@ inline std::vector<std::pair<std::string, std::string>> checked_columns(const Co
   std::error_code code;
   if (has_control_character(request.plot_path))
     throw Refused("--plot: the path holds a control character (a newline, a tab...); give another");
-  if (!request.plot_path.empty() && (plot.extension() != ".png" || std::filesystem::is_directory(plot, code) ||
-                                     (!plot.parent_path().empty() && !std::filesystem::is_directory(plot.parent_path(), code))))
+  if (!request.plot_path.empty() &&
+      (plot.extension() != ".png" || std::filesystem::is_directory(plot, code) ||
+       (!plot.parent_path().empty() && !std::filesystem::is_directory(plot.parent_path(), code))))
     throw Refused("--plot: " + request.plot_path + ": give a .png file (not a folder) in an existing folder");
   return columns;
 }
@@ -152,11 +161,12 @@ inline int compare(const ExactOptions& options, const CompareRequest& request, s
       throw Refused(request.result_path + ": " + request.time_column + ": the sample times must be >= 0 (row " +
                     std::to_string(n + 1) + ": " + time.str() + ")");
     }
-  if (!times_within_precision(io::SceneExactSolution(*scene, io::StrainMeasure::small), times, request.result_path, err) ||
+  if (!times_within_precision(io::SceneExactSolution(*scene, io::StrainMeasure::small), times, request.result_path,
+                              err) ||
       !finite_strain_times_fit(*scene, options.strain, times, request.result_path, err))
     return 2;
-  const io::SceneExactSolution solution(*scene, options.strain == "finite" ? io::StrainMeasure::finite : io::StrainMeasure::small,
-                                        times);
+  const io::SceneExactSolution solution(
+      *scene, options.strain == "finite" ? io::StrainMeasure::finite : io::StrainMeasure::small, times);
   std::vector<ColumnScore> scores;
   for (const auto& [column, quantity] : columns) {
     if (!(solution.scale(quantity) > 0.0))
@@ -172,8 +182,8 @@ inline int compare(const ExactOptions& options, const CompareRequest& request, s
   text.precision(9);
   text << "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max\n";
   for (const auto& score : scores) {
-    text << score.column << "," << score.quantity << "," << score.samples << "," << score.rms << "," << score.rms_normalised << ","
-         << score.max_abs << "," << score.t_of_max << "\n";
+    text << score.column << "," << score.quantity << "," << score.samples << "," << score.rms << ","
+         << score.rms_normalised << "," << score.max_abs << "," << score.t_of_max << "\n";
     if (request.tolerance && !(score.rms_normalised <= *request.tolerance)) above << " " << score.column;
   }
   out << text.str() << std::flush;
@@ -199,7 +209,8 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "divided by the solution's scale of the quantity: velocity V* (the largest |v_0| or |sigma_0|/Z of the initial\n"
       "data: v0 for the Dyka bar, so the paper's RMS/v0), stress Z V*, displacement V* L/c (dyka_bar); rho g H,\n"
       "rho g H^2/(2M), g H/c (soil_column: base stress, top settlement, wave velocity); Z|V|, |V|, |V|/omega\n"
-      "(vibrating_bar); A omega, (lambda + 2G) k A, |A| (manufactured); max_abs: the largest |c_n - e_n|, at t_of_max (s).");
+      "(vibrating_bar); A omega, (lambda + 2G) k A, |A| (manufactured); max_abs: the largest |c_n - e_n|, "
+      "at t_of_max (s).");
   app.add_option("RESULT.csv", request.result_path, "the CSV to score")->required();
   app.add_option("SCENE.toml", options.scene_path, "the scene file whose exact solution scores it")->required();
   declare_exact_options(app, options);
@@ -213,10 +224,12 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       ->check(CLI::Validator([](const std::string& text) { return text.empty() ? "empty" : ""; }, ""));
   app.add_option("--tolerance", request.tolerance, "exit 1 when an rms_normalised exceeds TOL (none: no check, exit 0)")
       ->check(number_in(0.0, 1e300));
-  app.add_option("--plot", request.plot_path, "draws each column and the exact solution against t into FILE.png (gnuplot)")
+  app.add_option("--plot", request.plot_path,
+                 "draws each column and the exact solution against t into FILE.png (gnuplot)")
       ->type_name("FILE.png");
-  app.footer("Exit codes: 0 within the tolerance, 1 above it, 2 a bad input (nothing written), 3 gnuplot failed or\n"
-             "an output could not be written (cannot write).");
+  app.footer(
+      "Exit codes: 0 within the tolerance, 1 above it, 2 a bad input (nothing written), 3 gnuplot failed or\n"
+      "an output could not be written (cannot write).");
   return run_parsed(app, arguments, out, err, [&] { return compare(options, request, out, err); });
 }
 
@@ -238,7 +251,8 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   std::ofstream(path) << "t,v,w\n0,1,2\n1,1e-310,2\n";
   CHECK(read_csv_columns(path, {"t", "w"}).at("w") == std::vector<double>{2.0, 2.0});
   CHECK_THROWS_WITH_AS(read_csv_columns(path, {"t", "v"}), doctest::Contains(":3: v: '1e-310' is too small"), Refused);
-  CHECK_THROWS_WITH_AS(read_csv_columns(path, {"t", "x"}), doctest::Contains(":1: no column 'x' in the header (t, v, w)"), Refused);
+  CHECK_THROWS_WITH_AS(read_csv_columns(path, {"t", "x"}),
+                       doctest::Contains(":1: no column 'x' in the header (t, v, w)"), Refused);
   std::filesystem::remove(path);
 }
 

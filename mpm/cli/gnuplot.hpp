@@ -30,19 +30,22 @@ inline std::string gnuplot_quoted(const std::string& text) {
 
 /// True if `text` holds a control character (a newline, a tab, a NUL, DEL...).
 inline bool has_control_character(const std::string& text) {
-  return std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+  return std::any_of(text.begin(), text.end(),
+                     [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
 /// The settings every picture starts with: CSV data, a grid, the key outside, t on the x axis.
 inline const char* gnuplot_preamble =
-    "set datafile separator ','\nset grid lc rgb '#dddddd'\nset key outside right top\nset lmargin 14\nset xlabel 't (s)'\n";
+    "set datafile separator ','\nset grid lc rgb '#dddddd'\n"
+    "set key outside right top\nset lmargin 14\nset xlabel 't (s)'\n";
 
 /// The lines starting a PNG `picture` of `panels` panels stacked, 260 pixels high each; a relative path is
 /// written ./PATH, so that it never starts with '|' (gnuplot would run it as a command).
 inline std::string gnuplot_page(const std::string& picture, std::size_t panels) {
   std::ostringstream page;
   page << "set terminal pngcairo noenhanced size 1000," << 260 * panels << " font ',10'\nset output "
-       << gnuplot_quoted(picture.rfind('/', 0) == 0 ? picture : "./" + picture) << "\nset multiplot layout " << panels << ",1\n";
+       << gnuplot_quoted(picture.rfind('/', 0) == 0 ? picture : "./" + picture) << "\nset multiplot layout " << panels
+       << ",1\n";
   return page.str();
 }
 
@@ -73,17 +76,18 @@ inline int run_gnuplot(const std::string& folder, const std::string& script, std
   std::FILE* input = std::tmpfile();
   std::FILE* output = std::tmpfile();
   int status = 127 << 8;
-  if (input && output && std::fwrite(script.data(), 1, script.size(), input) == script.size() && std::fflush(input) == 0 &&
-      ::lseek(fileno(input), 0, SEEK_SET) == 0) {
+  if (input && output && std::fwrite(script.data(), 1, script.size(), input) == script.size() &&
+      std::fflush(input) == 0 && ::lseek(fileno(input), 0, SEEK_SET) == 0) {
     const pid_t child = ::fork();
     if (child == 0) {  // only system calls here, then exec
-      if ((!folder.empty() && ::chdir(folder.c_str()) != 0) || ::dup2(fileno(input), 0) < 0 || ::dup2(fileno(output), 1) < 0 ||
-          ::dup2(fileno(output), 2) < 0)
+      if ((!folder.empty() && ::chdir(folder.c_str()) != 0) || ::dup2(fileno(input), 0) < 0 ||
+          ::dup2(fileno(output), 1) < 0 || ::dup2(fileno(output), 2) < 0)
         ::_exit(127);
       ::execlp("gnuplot", "gnuplot", static_cast<char*>(nullptr));
       ::_exit(127);
     }
-    while (child > 0 && ::waitpid(child, &status, 0) < 0 && errno == EINTR) {}
+    while (child > 0 && ::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
     log.assign(1 << 16, '\0');
     const ssize_t count = ::pread(fileno(output), &log[0], log.size(), 0);
     log.resize(count > 0 ? static_cast<std::size_t>(count) : 0);
@@ -96,8 +100,8 @@ inline int run_gnuplot(const std::string& folder, const std::string& script, std
 /// Draws `pictures` (paths from here) with gnuplot running `script` in `folder`, each picture made afresh first;
 /// gnuplot's messages go into `log_path` (or, when it is "", their first line into the error).
 /// \throws OutputFailure naming the first picture not drawn whole; the pictures are then removed.
-inline void draw_with_gnuplot(const std::string& folder, const std::string& script, const std::vector<std::string>& pictures,
-                              const std::string& log_path = "") {
+inline void draw_with_gnuplot(const std::string& folder, const std::string& script,
+                              const std::vector<std::string>& pictures, const std::string& log_path = "") {
   std::string log, reason, picture = pictures.front();
   try {
     for (const auto& fresh : pictures) write_fresh(fresh, "");
@@ -119,7 +123,8 @@ inline void draw_with_gnuplot(const std::string& folder, const std::string& scri
   throw OutputFailure(picture, reason + (!log_path.empty() ? ": see " + log_path : log.empty() ? "" : ": " + log));
 }
 
-TEST_CASE("gnuplot: strings quoted, control characters found, files made afresh, PNGs complete only to their end chunk") {
+TEST_CASE(
+    "gnuplot: strings quoted, control characters found, files made afresh, PNGs complete only to their end chunk") {
   CHECK(gnuplot_quoted("A.x' . system('touch F') . '") == "'A.x'' . system(''touch F'') . '''");
   CHECK(has_control_character("a\nb"));
   CHECK(has_control_character(std::string("a\0b", 3)));
@@ -136,7 +141,7 @@ TEST_CASE("gnuplot: strings quoted, control characters found, files made afresh,
   write_fresh(path, whole);  // the link removed, a file made in its place
   CHECK(!fs::is_symlink(path));
   CHECK(png_file_complete(path));
-  CHECK(fs::file_size(target) == 8);  // the link's target untouched
+  CHECK(fs::file_size(target) == 8);                     // the link's target untouched
   write_fresh(path, whole.substr(0, whole.size() - 1));  // the last byte of the CRC missing
   CHECK(!png_file_complete(path));
   write_fresh(path, "GIF89a.." + whole.substr(8));
@@ -149,8 +154,8 @@ TEST_CASE("gnuplot: strings quoted, control characters found, files made afresh,
   fs::remove(target);
   std::string log;
   CHECK(run_gnuplot("/nonexistent/folder", "", log) == 127);  // no such folder: gnuplot never started
-  CHECK_THROWS_WITH_AS(draw_with_gnuplot("/nonexistent/folder", "", {path}), doctest::Contains("gnuplot failed (status 127"),
-                       OutputFailure);
+  CHECK_THROWS_WITH_AS(draw_with_gnuplot("/nonexistent/folder", "", {path}),
+                       doctest::Contains("gnuplot failed (status 127"), OutputFailure);
   CHECK(!fs::exists(path));  // made, then removed: not whole
 }
 

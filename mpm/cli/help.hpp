@@ -23,6 +23,7 @@
 
 namespace mpm::cli {
 
+/// The exit codes the help of `mpm` and of its commands ends with.
 inline const char* exit_codes =
     "Exit codes:\n"
     "  0  done\n"
@@ -36,7 +37,8 @@ inline const char* exit_codes =
 inline std::string default_text(const io::SceneKey& key, bool markdown = false) {
   if (!key.fallback) return "required";
   if (key.is_optional()) return "none";
-  return (markdown ? "`" + std::string(key.fallback) + "`" : std::string(key.fallback)) + (key.per_axis ? " per axis" : "");
+  return (markdown ? "`" + std::string(key.fallback) + "`" : std::string(key.fallback)) +
+         (key.per_axis ? " per axis" : "");
 }
 
 /// Every scene key with its default, unit and meaning, one line each.
@@ -46,11 +48,11 @@ inline std::string scene_keys_help() {
   std::array<std::size_t, 3> width{};
   for (const auto& row : rows)
     for (int k = 0; k < 3; ++k) width[k] = std::max(width[k], row[k].size());
-  std::string text = "Scene keys (TOML; body[].min is `min` of every [[body]]; \"per axis\": the default on every axis;\n"
-                     "`required`: no default; `none`: optional, absent unless given):\n";
-  for (const auto& row : rows)
-    text += "  " + row[0] + std::string(width[0] + 2 - row[0].size(), ' ') + row[1] + std::string(width[1] + 2 - row[1].size(), ' ') +
-            row[2] + std::string(width[2] + 2 - row[2].size(), ' ') + row[3] + "\n";
+  std::string text =
+      "Scene keys (TOML; body[].min is `min` of every [[body]]; \"per axis\": the default on every axis;\n"
+      "`required`: no default; `none`: optional, absent unless given):\n";
+  auto cell = [&](const std::string& text, int k) { return text + std::string(width[k] + 2 - text.size(), ' '); };
+  for (const auto& row : rows) text += "  " + cell(row[0], 0) + cell(row[1], 1) + cell(row[2], 2) + row[3] + "\n";
   return text;
 }
 
@@ -60,7 +62,8 @@ inline std::string scene_keys_markdown() {
   std::string table = "| key | default | unit | meaning |\n|---|---|---|---|\n";
   for (const auto& key : io::scene_keys()) {
     std::string meaning = key.meaning;
-    for (auto bar = meaning.find('|'); bar != std::string::npos; bar = meaning.find('|', bar + 2)) meaning.insert(bar, "\\");
+    for (auto bar = meaning.find('|'); bar != std::string::npos; bar = meaning.find('|', bar + 2))
+      meaning.insert(bar, "\\");
     table += "| `" + key.key + "` | " + default_text(key, true) + " | " + key.unit + " | " + meaning + " |\n";
   }
   return table;
@@ -75,10 +78,11 @@ inline std::string help_of(int (*command)(const std::vector<std::string>&, std::
 
 /// `mpm --help`
 inline std::string main_help() {
-  return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") + run_usage() +
-         "\n" + exact_usage() + "\n" + help_of(compare_command) + "\n" + help_of(shape_command) + "\n" + help_of(plot_command) +
-         "\n" + help_of(stability_command) + "\nusage: mpm --version\n  Prints the version (git describe at build time).\n\n" +
-         scene_keys_help() + "\n" + exit_codes;
+  return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") +
+         run_usage() + "\n" + exact_usage() + "\n" + help_of(compare_command) + "\n" + help_of(shape_command) + "\n" +
+         help_of(plot_command) + "\n" + help_of(stability_command) +
+         "\nusage: mpm --version\n  Prints the version (git describe at build time).\n\n" + scene_keys_help() + "\n" +
+         exit_codes;
 }
 
 /// The help of one command ("run", "exact", "compare", "shape", "plot", "stability"); the main help for any other.
@@ -87,14 +91,16 @@ inline std::string command_help(const std::string& command) {
   if (command == "shape") return help_of(shape_command) + "\n" + exit_codes;
   if (command == "plot") return help_of(plot_command) + "\n" + exit_codes;
   if (command == "stability") return help_of(stability_command) + "\n" + exit_codes;
-  if (command == "exact") return exact_usage() + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
+  if (command == "exact")
+    return exact_usage() + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
   if (command == "compare") return help_of(compare_command);
   return main_help();
 }
 
 /// True if the arguments ask for help (`--help` or `-h` anywhere).
 inline bool asks_for_help(const std::vector<std::string>& arguments) {
-  return std::any_of(arguments.begin(), arguments.end(), [](const std::string& a) { return a == "--help" || a == "-h"; });
+  return std::any_of(arguments.begin(), arguments.end(),
+                     [](const std::string& a) { return a == "--help" || a == "-h"; });
 }
 
 TEST_CASE("mpm help: every scene key with its default and unit, and the exit codes") {
@@ -106,14 +112,18 @@ TEST_CASE("mpm help: every scene key with its default and unit, and the exit cod
     REQUIRE(line_start != std::string::npos);
     const std::string line = help.substr(line_start + 1, help.find('\n', line_start + 1) - line_start - 1);
     CHECK(line.find(default_text(key)) != std::string::npos);
-    for (const std::string& choice : key.choices) CHECK(line.find(choice) != std::string::npos);  // every word a choice takes
+    for (const std::string& choice : key.choices)
+      CHECK(line.find(choice) != std::string::npos);  // every word a choice takes
     CHECK(line.find(std::string("  ") + key.unit + "  ") != std::string::npos);
   }
   for (const std::string command : {"run", "shape", "plot", "exact", "stability", ""})
     CHECK(command_help(command).find("  3  the method failed") != std::string::npos);
-  for (const std::string name : {"dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"})
-    CHECK(command_help("exact").find("\n    " + name + " ") != std::string::npos);  // every value of the scene key `exact`
-  CHECK(command_help("compare").find("Exit codes: 0 within the tolerance, 1 above it, 2 a bad input") != std::string::npos);
+  for (const std::string name :
+       {"dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"})
+    CHECK(command_help("exact").find("\n    " + name + " ") !=
+          std::string::npos);  // every value of the scene key `exact`
+  CHECK(command_help("compare").find("Exit codes: 0 within the tolerance, 1 above it, 2 a bad input") !=
+        std::string::npos);
   CHECK(main_help().find("Usage: mpm compare [OPTIONS] RESULT.csv SCENE.toml") != std::string::npos);
   CHECK(command_help("shape").find("--tol") != std::string::npos);
   CHECK(command_help("shape").find("LME support tolerance") != std::string::npos);
@@ -130,8 +140,10 @@ TEST_CASE("README's table of scene keys is the table of mpm/io/scene_keys.hpp (M
   std::string readme = read.str();
   const std::string begin = "<!-- scene keys -->\n", end = "<!-- /scene keys -->";
   const auto from = readme.find(begin), to = readme.find(end);
-  REQUIRE_MESSAGE((from != std::string::npos && to != std::string::npos && from < to), "README.md lacks the markers " << begin << end);
-  const std::string given = readme.substr(from + begin.size(), to - from - begin.size()), wanted = scene_keys_markdown();
+  REQUIRE_MESSAGE((from != std::string::npos && to != std::string::npos && from < to),
+                  "README.md lacks the markers " << begin << end);
+  const std::string given = readme.substr(from + begin.size(), to - from - begin.size()),
+                    wanted = scene_keys_markdown();
   if (given != wanted && std::getenv("MPM_UPDATE_README")) {
     std::ofstream(path) << readme.replace(from + begin.size(), to - from - begin.size(), wanted);
     return;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "mpm/cli/help.hpp"  // and through it every command
-#include "mpm/version.hpp"  // generated at build time (mpm/cli/version.cmake): MPM_VERSION
+#include "mpm/version.hpp"   // generated at build time (mpm/cli/version.cmake): MPM_VERSION
 
 namespace {
 

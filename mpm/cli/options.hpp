@@ -57,7 +57,9 @@ inline CLI::Validator number_in(double low, double high, bool open_high = false)
 }
 
 /// A finite number > 0.
-inline CLI::Validator positive() { return number_where("number > 0", [](double x) { return x > 0.0; }); }
+inline CLI::Validator positive() {
+  return number_where("number > 0", [](double x) { return x > 0.0; });
+}
 
 /// A whole number in [low, high], written as digits (no sign, point or exponent), whatever its length.
 inline CLI::Validator whole_in(long low, long high) {
@@ -116,7 +118,8 @@ inline std::string error_message(const CLI::ParseError* error, const std::string
   const std::string what = error->what(), first = what.substr(0, what.find(' '));
   const auto colon = what.find(": "), excludes = what.find(" excludes ");
   if (dynamic_cast<const CLI::ArgumentMismatch*>(error) && colon != std::string::npos)
-    return what.substr(0, colon) + (what.find("At Most") != std::string::npos ? ": given more than once" : ": needs a value");
+    return what.substr(0, colon) +
+           (what.find("At Most") != std::string::npos ? ": given more than once" : ": needs a value");
   if (dynamic_cast<const CLI::ExcludesError*>(error) && excludes != std::string::npos)
     return what.substr(0, excludes) + ": give it or " + what.substr(excludes + 10) + ", not both";
   if (dynamic_cast<const CLI::RequiredError*>(error)) return first + ": required (mpm " + command + " --help)";
@@ -146,7 +149,8 @@ inline std::optional<int> parse_arguments(CLI::App& app, std::vector<std::string
 /// refuses (Refused, InputError, SceneError) is one line `error: ...` and exit 2, a file or picture it cannot
 /// write (OutputFailure) exit 3.
 template <class Body>
-int run_parsed(CLI::App& app, const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err, Body body) {
+int run_parsed(CLI::App& app, const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err,
+               Body body) {
   if (const auto code = parse_arguments(app, arguments, app.get_name().substr(4), out, err)) return *code;
   try {
     return body();

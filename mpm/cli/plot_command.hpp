@@ -28,7 +28,8 @@ namespace mpm::cli {
 inline std::vector<std::string> plot_header(const std::string& path) {
   io::CsvFile file(path);
   if (file.missing()) return {};
-  if (!file.read_header()) throw Refused(file.error().empty() ? path + ": empty; a header line is needed" : file.error());
+  if (!file.read_header())
+    throw Refused(file.error().empty() ? path + ": empty; a header line is needed" : file.error());
   const auto& names = file.header();
   for (size_t k = 0; k < names.size(); ++k)
     if (has_control_character(names[k]))
@@ -52,6 +53,13 @@ inline std::string quantity_of(const std::string& column) {
   return dot == std::string::npos ? "" : column.substr(dot + 1);
 }
 
+/// The y label of a quantity's panel: "velocity v_x (m/s)", "stress sigma_xx (Pa, tension > 0)", "position x (m)".
+inline std::string quantity_label(const std::string& quantity) {
+  if (quantity.rfind("v_", 0) == 0) return "velocity " + quantity + " (m/s)";
+  if (quantity.rfind("sigma_", 0) == 0) return "stress " + quantity + " (Pa, tension > 0)";
+  return "position " + quantity + " (m)";
+}
+
 /// The quantities of observers.csv's columns NAME.QUANTITY, in order of first appearance: one panel each.
 inline std::vector<std::string> observed_quantities(const std::vector<std::string>& observers) {
   std::vector<std::string> quantities;
@@ -68,7 +76,8 @@ inline bool energy_column(const std::string& name, bool momentum) {
 
 /// True if energy.csv's header `energy` has a column energy.png draws.
 inline bool draws_energy(const std::vector<std::string>& energy) {
-  return std::any_of(energy.begin(), energy.end(), [](auto& name) { return energy_column(name, false) || energy_column(name, true); });
+  return std::any_of(energy.begin(), energy.end(),
+                     [](auto& name) { return energy_column(name, false) || energy_column(name, true); });
 }
 
 /// A gnuplot `plot` of the columns of `file` (its header `names`) that `pick` takes, by number and titled by name,
@@ -79,8 +88,8 @@ std::string plot_columns(const std::string& file, const std::vector<std::string>
   std::string line;
   for (size_t k = 1; k < names.size(); ++k) {
     if (!pick(names[k])) continue;
-    line += (line.empty() ? "plot '" : ", '") + file + "' using 1:" + std::to_string(k + 1) + " with lines lw 1.5 title " +
-            gnuplot_quoted(names[k]);
+    line += (line.empty() ? "plot '" : ", '") + file + "' using 1:" + std::to_string(k + 1) +
+            " with lines lw 1.5 title " + gnuplot_quoted(names[k]);
     for (size_t j = 0; j < exact.size(); ++j)
       if (exact[j] == names[k])
         line += ", 'exact.csv' using 1:" + std::to_string(j + 1) + " with lines dt 2 lw 2 lc rgb 'black' title " +
@@ -98,16 +107,16 @@ inline std::string plot_script(const std::vector<std::string>& observers, const 
   const std::vector<std::string> quantities = observed_quantities(observers);
   if (!quantities.empty()) gp += gnuplot_page("observers.png", quantities.size());
   for (const auto& quantity : quantities) {
-    const std::string kind = quantity.rfind("v_", 0) == 0 ? "velocity " : quantity.rfind("sigma_", 0) == 0 ? "stress " : "position ";
-    const std::string unit = kind == "velocity " ? " (m/s)" : kind == "stress " ? " (Pa, tension > 0)" : " (m)";
-    gp += "set ylabel " + gnuplot_quoted(kind + quantity + unit) + "\n" +
-          plot_columns("observers.csv", observers, [&](const std::string& name) { return quantity_of(name) == quantity; }, exact);
+    const auto same_quantity = [&](const std::string& name) { return quantity_of(name) == quantity; };
+    gp += "set ylabel " + gnuplot_quoted(quantity_label(quantity)) + "\n" +
+          plot_columns("observers.csv", observers, same_quantity, exact);
   }
   if (!quantities.empty()) gp += "unset multiplot\nunset output\n";
   if (!draws_energy(energy)) return gp;
   return gp + gnuplot_page("energy.png", 2) + "set ylabel 'energy (J; 1D per m^2, 2D per m)'\n" +
-         plot_columns("energy.csv", energy, [](const std::string& name) { return energy_column(name, false); }) +
-         "set ylabel 'momentum'\n" + plot_columns("energy.csv", energy, [](auto& name) { return energy_column(name, true); }) +
+         plot_columns("energy.csv", energy, [](auto& name) { return energy_column(name, false); }) +
+         "set ylabel 'momentum'\n" +
+         plot_columns("energy.csv", energy, [](auto& name) { return energy_column(name, true); }) +
          "unset multiplot\nunset output\n";
 }
 
@@ -122,7 +131,8 @@ inline void plot_folder(const std::string& folder, std::ostream& out) {
   const std::string is_run = " (is " + folder + " the folder of an `mpm run`?)";
   const auto observers = plot_header(folder + "/observers.csv"), energy = plot_header(folder + "/energy.csv");
   const auto exact = plot_header(folder + "/exact.csv");
-  if (observers.empty() && energy.empty()) throw Refused(folder + ": holds neither observers.csv nor energy.csv" + is_run);
+  if (observers.empty() && energy.empty())
+    throw Refused(folder + ": holds neither observers.csv nor energy.csv" + is_run);
   for (const auto& [name, header] : {std::pair{"observers.csv", observers}, std::pair{"energy.csv", energy}})
     if (!header.empty() && header[0] != "t")
       throw Refused(folder + "/" + name + ": its header line does not start with t" + is_run);
@@ -131,7 +141,8 @@ inline void plot_folder(const std::string& folder, std::ostream& out) {
   if (panels > 0) pictures.push_back(folder + "/observers.png");
   if (draws_energy(energy)) pictures.push_back(folder + "/energy.png");
   if (panels > 16 || pictures.empty())  // a picture much taller fails in cairo
-    throw Refused(folder + "/observers.csv: " + std::to_string(panels) + " quantities (columns NAME.QUANTITY) to draw; " +
+    throw Refused(folder + "/observers.csv: " + std::to_string(panels) +
+                  " quantities (columns NAME.QUANTITY) to draw; " +
                   (panels == 0 ? "none, and energy.csv has no energy or momentum column" : "at most 16"));
   io::FolderLock lock(folder);  // no run or other plot writes here meanwhile
   const std::string script = plot_script(observers, exact, energy);
@@ -143,10 +154,11 @@ inline void plot_folder(const std::string& folder, std::ostream& out) {
 /// `mpm plot`; returns the exit code.
 inline int plot_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   std::string folder;
-  CommandParser app("plot",
-                    "Draws a run's observer histories (observers.csv, with exact.csv beside them when the scene names an\n"
-                    "exact solution) into RUN_DIR/observers.png and its energy balance (energy.csv) into RUN_DIR/energy.png,\n"
-                    "with gnuplot. Either CSV may be missing (a folder of another code's observers.csv): what is there is drawn.");
+  CommandParser app(
+      "plot",
+      "Draws a run's observer histories (observers.csv, with exact.csv beside them when the scene names an\n"
+      "exact solution) into RUN_DIR/observers.png and its energy balance (energy.csv) into RUN_DIR/energy.png,\n"
+      "with gnuplot. Either CSV may be missing (a folder of another code's observers.csv): what is there is drawn.");
   app.add_option("RUN_DIR", folder, "the folder of an `mpm run` (or of another code's observers.csv)")->required();
   return run_parsed(app, arguments, out, err, [&] {
     plot_folder(folder, out);
@@ -158,17 +170,22 @@ TEST_CASE("mpm plot: the script draws each observer's column beside the exact on
   const std::string script = plot_script({"t", "A.x", "A.v_x", "A.sigma_xx"}, {"t", "A.v_x", "A.sigma_xx"},
                                          {"t", "kinetic", "strain", "total", "momentum_x"});
   CHECK(script.find("set multiplot layout 3,1") != std::string::npos);
-  CHECK(script.find("'observers.csv' using 1:3 with lines lw 1.5 title 'A.v_x', 'exact.csv' using 1:2 ") != std::string::npos);
-  CHECK(script.find("'observers.csv' using 1:4 with lines lw 1.5 title 'A.sigma_xx', 'exact.csv' using 1:3 ") != std::string::npos);
+  CHECK(script.find("'observers.csv' using 1:3 with lines lw 1.5 title 'A.v_x', 'exact.csv' using 1:2 ") !=
+        std::string::npos);
+  CHECK(script.find("'observers.csv' using 1:4 with lines lw 1.5 title 'A.sigma_xx', 'exact.csv' using 1:3 ") !=
+        std::string::npos);
   CHECK(script.find("'observers.csv' using 1:2 with lines lw 1.5 title 'A.x'\n") != std::string::npos);  // no exact x
   CHECK(script.find("set ylabel 'stress sigma_xx (Pa, tension > 0)'\n") != std::string::npos);
   CHECK(script.find("'energy.csv' using 1:4 with lines lw 1.5 title 'total'") != std::string::npos);
   CHECK(script.find("'energy.csv' using 1:5 with lines lw 1.5 title 'momentum_x'") != std::string::npos);
   CHECK(plot_script({"t"}, {}, {"t", "kinetic"}).find("observers.png") == std::string::npos);
   CHECK(plot_script({"t", "A.x"}, {}, {}).find("energy.png") == std::string::npos);  // no energy.csv, no energy.png
-  const std::string hostile = "A.x' . system('touch F') . '";  // a header name closing its string: doubled quotes keep it inside
+  const std::string hostile =
+      "A.x' . system('touch F') . '";  // a header name closing its string: doubled quotes keep it inside
   CHECK(plot_script({"t", hostile}, {}, {}).find("title 'A.x'' . system(''touch F'') . '''\n") != std::string::npos);
-  CHECK(plot_script({"t"}, {}, {"t", "momentum' . system('id') . '"}).find("title 'momentum'' . system(''id'') . '''") != std::string::npos);
+  CHECK(
+      plot_script({"t"}, {}, {"t", "momentum' . system('id') . '"}).find("title 'momentum'' . system(''id'') . '''") !=
+      std::string::npos);
   const std::string path = (std::filesystem::temp_directory_path() / "mpm_plot_header_test.csv").string();
   std::ofstream(path) << "\xEF\xBB\xBFt,A.x,B\tx\n0,1,2\n";
   CHECK_THROWS_WITH_AS(plot_header(path), (path + ":1: column 3: its name holds a control character").c_str(), Refused);

@@ -21,6 +21,7 @@
 
 namespace mpm::cli {
 
+/// What `mpm shape` was asked.
 struct ShapeRequest {
   int dimension = 1;
   std::string kind;
@@ -30,13 +31,16 @@ struct ShapeRequest {
 };
 
 /// Why an LME support of locality `gamma` and tolerance `tolerance` is refused, "" if it is not: reaching beyond
-/// 100 cells, its stencils would hold (2R/h)^dim entries per particle, and below gamma = 1e-16 Newton's iteration fails.
+/// 100 cells, its stencils would hold (2R/h)^dim entries per particle, and below gamma = 1e-16 Newton's iteration
+/// fails.
 inline std::string lme_support_too_wide(double gamma, double tolerance) {
   if (std::sqrt(-std::log(tolerance) / gamma) + 3.0 <= 103.0) return "";
-  const double smallest = -std::log(tolerance) / (100.0 * 100.0), digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
+  const double smallest = -std::log(tolerance) / (100.0 * 100.0),
+               digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
   std::ostringstream text;
-  text << "too small for the support tolerance " << tolerance << ": the support would reach beyond 100 cells; give at least "
-       << std::setprecision(3) << std::ceil(smallest / digit) * digit;  // rounded up: the value printed is accepted
+  text << "too small for the support tolerance " << tolerance
+       << ": the support would reach beyond 100 cells; give at least " << std::setprecision(3)
+       << std::ceil(smallest / digit) * digit;  // rounded up: the value printed is accepted
   return text.str();
 }
 
@@ -91,11 +95,11 @@ void evaluate_request(const ShapeRequest& request, std::ostream& out) {
   lme.gamma = request.gamma;
   lme.support_tolerance = request.tolerance;
   auto print = [&](auto shape) { print_stencils(shape, grid, particles, out); };
-  if (request.kind == "linear") print(LinearShape<Dim>(grid));
-  else if (request.kind == "ugimp") print(UgimpShape<Dim>(grid));
-  else if (request.kind == "bspline2") print(BsplineShape<Dim, 2>(grid));
-  else if (request.kind == "bspline3") print(BsplineShape<Dim, 3>(grid));
-  else print(LmeShape<Dim>(grid, lme));
+  if (request.kind == "linear") return print(LinearShape<Dim>(grid));
+  if (request.kind == "ugimp") return print(UgimpShape<Dim>(grid));
+  if (request.kind == "bspline2") return print(BsplineShape<Dim, 2>(grid));
+  if (request.kind == "bspline3") return print(BsplineShape<Dim, 3>(grid));
+  print(LmeShape<Dim>(grid, lme));
 }
 
 /// Reads each --at ("X" or "X,Y": every comma separates two numbers) into the request's points and checks what
@@ -108,7 +112,9 @@ inline void check_shape_request(ShapeRequest& request) {
       comma = text.find(',', start);
       std::string out_of_range;
       const auto coordinate = parse_number(text.substr(start, comma - start), &out_of_range);
-      if (!coordinate) throw Refused("--at: " + (out_of_range.empty() ? "'" + text + "' is not X or X,Y of finite numbers" : out_of_range));
+      if (!coordinate)
+        throw Refused("--at: " +
+                      (out_of_range.empty() ? "'" + text + "' is not X or X,Y of finite numbers" : out_of_range));
       request.points.back().push_back(*coordinate);
     }
   }
@@ -117,7 +123,8 @@ inline void check_shape_request(ShapeRequest& request) {
   if (request.kind == "ugimp" && request.particle_size > request.cell_size)
     throw Refused("--particle-size: must not exceed the cell size");
   for (const auto& point : request.points)
-    if (static_cast<int>(point.size()) != request.dimension) throw Refused("--at: each point needs --dim coordinates, comma-separated");
+    if (static_cast<int>(point.size()) != request.dimension)
+      throw Refused("--at: each point needs --dim coordinates, comma-separated");
   if (request.kind == "lme" && !lme_support_too_wide(request.gamma, request.tolerance).empty())
     throw Refused("--gamma: " + lme_support_too_wide(request.gamma, request.tolerance));
   const double reach = std::sqrt(-std::log(request.tolerance) / request.gamma) + 3.0;  // cells, as evaluate_request
@@ -125,7 +132,8 @@ inline void check_shape_request(ShapeRequest& request) {
   for (int axis = 0; axis < request.dimension; ++axis) {
     double lower = 0.0, upper = 0.0;
     for (const auto& point : request.points) {
-      if (std::abs(point[axis]) > 1e6 * request.cell_size) throw Refused("--at: coordinates must lie within 10^6 cell sizes of 0");
+      if (std::abs(point[axis]) > 1e6 * request.cell_size)
+        throw Refused("--at: coordinates must lie within 10^6 cell sizes of 0");
       lower = std::min(lower, point[axis]);
       upper = std::max(upper, point[axis]);
     }
@@ -139,11 +147,18 @@ inline int shape_command(const std::vector<std::string>& arguments, std::ostream
   ShapeRequest request;
   CommandParser app(
       "shape",
-      "Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of the cell size) and prints\n"
-      "CSV, one row per node of each point's stencil: point,node_x[,node_y],N,dN_dx[,dN_dy]; point counts the --at from 0.");
+      "Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of the cell size) "
+      "and prints\n"
+      "CSV, one row per node of each point's stencil: point,node_x[,node_y],N,dN_dx[,dN_dy]; point counts "
+      "the --at from 0.");
   app.add_option("--dim", request.dimension, "dimension")->check(whole_in(1, 2));
-  app.add_option("--kind", request.kind, "shape function")->required()->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
-  app.add_option("--at", request.at, "a point X (1D) or X,Y (2D); repeat for more")->type_name("X[,Y]")->required()->allow_extra_args(false);
+  app.add_option("--kind", request.kind, "shape function")
+      ->required()
+      ->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
+  app.add_option("--at", request.at, "a point X (1D) or X,Y (2D); repeat for more")
+      ->type_name("X[,Y]")
+      ->required()
+      ->allow_extra_args(false);
   app.add_option("--gamma", request.gamma, "LME locality gamma, <= -ln(tol)/dim")->check(positive());
   app.add_option("--cell-size", request.cell_size, "cell size h")->check(positive());
   app.add_option("--particle-size", request.particle_size, "uGIMP particle length 2 l_p, <= h (-1: h/2)")
@@ -181,8 +196,9 @@ TEST_CASE("mpm shape: the linear hat in 1D and Q4 in 2D by hand, and bad options
   CHECK(shape_command({"--dim", "1", "--kind", "linear", "--tol", "0", "--at", "0"}, out, err) == 2);
   std::ostringstream wide;
   CHECK(shape_command({"--dim", "1", "--kind", "lme", "--gamma", "1e-9", "--at", "0"}, out, wide) == 2);
-  CHECK(wide.str() == "error: --gamma: too small for the support tolerance 1e-06: the support would reach beyond 100 cells; "
-                      "give at least 0.00139\n");
+  CHECK(wide.str() ==
+        "error: --gamma: too small for the support tolerance 1e-06: the support would reach beyond 100 cells; "
+        "give at least 0.00139\n");
   std::ostringstream tiny;
   CHECK(shape_command({"--dim", "1", "--kind", "linear", "--at", "1e-310"}, out, tiny) == 2);
   CHECK(tiny.str().rfind("error: --at: '1e-310' is too small", 0) == 0);
