@@ -71,7 +71,7 @@ inline bool png_file_complete(const std::string& path) {
 }
 
 /// Runs gnuplot without a shell in `folder` ("" for here) on `script`, given on its standard input from an
-/// unnamed temporary file; `log` gets what it printed. Returns its exit status (127: it could not be started).
+/// unnamed temporary file; `log` gets the first 64 KiB it printed. Returns its exit status (127: not started).
 inline int run_gnuplot(const std::string& folder, const std::string& script, std::string& log) {
   std::FILE* input = std::tmpfile();
   std::FILE* output = std::tmpfile();
