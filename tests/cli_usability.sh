@@ -113,7 +113,7 @@ expect 0 -- plot "$work/observers_only"
 [[ -s "$work/observers_only/observers.png" && ! -e "$work/observers_only/energy.png" ]] || fail "plot of observers alone"
 expect 2 -- plot
 PATH=/nonexistent expect 3 -- plot "$work/bar"
-grep -q "^failure: gnuplot failed" "$work/err" || fail "plot without gnuplot: $(cat "$work/err")"
+grep -q "^error: $work/bar/observers.png: cannot write: gnuplot failed" "$work/err" || fail "plot without gnuplot: $(cat "$work/err")"
 # an exact solution the scene cannot have
 expect 2 -- run "$scene" --out "$work/never" --set 'exact="soil_column"'
 grep -q "^error: --set(1):1: exact: 'soil_column' is the 2D column" "$work/err" || fail "exact check: $(cat "$work/err")"

@@ -1,13 +1,7 @@
 /// \file
-/// Running gnuplot safely, for `mpm plot` and `mpm compare --plot`:
-/// - every string written into a script is a gnuplot single-quoted string (no escapes but '' for a quote, no
-///   backquote or macro substitution inside), and strings holding a control character are refused before, so
-///   that a name read from a CSV header cannot end the string and run a command;
-/// - an output name never starts with '|' (gnuplot would run it as a shell command);
-/// - each file the CLI creates (script, log, picture) is created afresh: an existing file or symbolic link of
-///   that name is removed, never followed, and a folder of that name refused;
-/// - gnuplot is started without a shell (fork and execvp), and each picture is checked complete afterwards
-///   (the PNG signature at its start, the IEND chunk at its end): gnuplot exits 0 on a failed write.
+/// gnuplot run safely for `mpm plot` and `mpm compare --plot`: every string in a script single-quoted (a name
+/// with a control character refused before), each file made afresh (never through a symbolic link), gnuplot
+/// started without a shell, and each picture checked complete to its end chunk (gnuplot exits 0 on a failed write).
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
@@ -15,15 +9,19 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include "mpm/io/output_file.hpp"
 
 namespace mpm::cli {
 
-/// `text` as a gnuplot single-quoted string: 'it''s'.
+/// `text` as a gnuplot single-quoted string ('it''s': no escape, backquote or macro works inside).
 inline std::string gnuplot_quoted(const std::string& text) {
   std::string result = "'";
   for (char character : text) result += character == '\'' ? std::string("''") : std::string(1, character);
@@ -32,137 +30,133 @@ inline std::string gnuplot_quoted(const std::string& text) {
 
 /// True if `text` holds a control character (a newline, a tab, a NUL, DEL...).
 inline bool has_control_character(const std::string& text) {
-  for (char character : text)
-    if (static_cast<unsigned char>(character) < 0x20 || character == 0x7f) return true;
-  return false;
+  return std::any_of(text.begin(), text.end(),
+                     [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
-/// A path as gnuplot's `set output` may take it: a relative one starts with ./ so that it never starts with '|'.
-inline std::string gnuplot_output_path(const std::string& path) { return path.rfind('/', 0) == 0 ? path : "./" + path; }
+/// The settings every picture starts with: CSV data, a grid, the key outside, t on the x axis.
+inline const char* gnuplot_preamble =
+    "set datafile separator ','\nset grid lc rgb '#dddddd'\n"
+    "set key outside right top\nset lmargin 14\nset xlabel 't (s)'\n";
 
-/// Creates `path` afresh for writing (an existing file or symbolic link of that name removed first, never
-/// followed; a folder refused); the descriptor, or -1 with `reason` set.
-inline int create_fresh(const std::string& path, std::string& reason) {
-  struct stat status {};
-  if (::lstat(path.c_str(), &status) == 0) {
-    if (S_ISDIR(status.st_mode)) {
-      reason = "a folder of that name is in the way";
-      return -1;
-    }
-    if (::unlink(path.c_str()) != 0) {
-      reason = std::strerror(errno);
-      return -1;
-    }
-  }
-  const int descriptor = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
-  if (descriptor < 0) reason = std::strerror(errno);
-  return descriptor;
+/// The lines starting a PNG `picture` of `panels` panels stacked, 260 pixels high each; a relative path is
+/// written ./PATH, so that it never starts with '|' (gnuplot would run it as a command).
+inline std::string gnuplot_page(const std::string& picture, std::size_t panels) {
+  std::ostringstream page;
+  page << "set terminal pngcairo noenhanced size 1000," << 260 * panels << " font ',10'\nset output "
+       << gnuplot_quoted(picture.rfind('/', 0) == 0 ? picture : "./" + picture) << "\nset multiplot layout " << panels
+       << ",1\n";
+  return page.str();
 }
 
-/// Writes all of `text` to `descriptor`; false with `reason` set on a short or failed write.
-inline bool write_all(int descriptor, const std::string& text, std::string& reason) {
-  for (std::size_t done = 0; done < text.size();) {
-    const ssize_t count = ::write(descriptor, text.data() + done, text.size() - done);
-    if (count < 0 && errno == EINTR) continue;
-    if (count <= 0) {
-      reason = count < 0 ? std::strerror(errno) : "nothing written";
-      return false;
-    }
-    done += static_cast<std::size_t>(count);
-  }
-  return true;
+/// Writes `text` into `path` made afresh: whatever had that name (a symbolic link too) removed, never followed;
+/// a folder in the way refused. \throws OutputFailure.
+inline void write_fresh(const std::string& path, const std::string& text) {
+  ::unlink(path.c_str());
+  io::write_file(path, text, io::OutputFile::Mode::direct);
 }
 
-/// Creates `path` afresh (create_fresh) holding `text`; false with `reason` set unless all of it was written and closed.
-inline bool write_fresh(const std::string& path, const std::string& text, std::string& reason) {
-  const int descriptor = create_fresh(path, reason);
-  if (descriptor < 0) return false;
-  const bool written = write_all(descriptor, text, reason);
-  if (::close(descriptor) != 0 && written) {
-    reason = std::strerror(errno);
-    return false;
-  }
-  return written;
-}
-
-/// True if `start` (a file's first bytes) and `end` (its last) are those of a complete PNG: the signature,
-/// and the IEND chunk (length 0, type, CRC) closing it.
-inline bool png_complete(const std::string& start, const std::string& end) {
-  static const std::string signature("\x89PNG\r\n\x1a\n", 8), last("\0\0\0\0IEND\xae\x42\x60\x82", 12);
-  return start.size() >= 8 && start.compare(0, 8, signature) == 0 && end.size() >= 12 &&
-         end.compare(end.size() - 12, 12, last) == 0;
-}
-
-/// True if the file `path` (not a symbolic link) is a complete PNG (png_complete on its first and last bytes).
+/// True if the file `path` (not a symbolic link) is a complete PNG: its signature first and the IEND chunk
+/// (length 0, type, CRC) last.
 inline bool png_file_complete(const std::string& path) {
+  static const std::string signature("\x89PNG\r\n\x1a\n", 8), last("\0\0\0\0IEND\xae\x42\x60\x82", 12);
   const int descriptor = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-  if (descriptor < 0) return false;
   struct stat status {};
   std::string start(8, '\0'), end(12, '\0');
-  const bool read = ::fstat(descriptor, &status) == 0 && S_ISREG(status.st_mode) && status.st_size >= 20 &&
-                    ::pread(descriptor, &start[0], 8, 0) == 8 && ::pread(descriptor, &end[0], 12, status.st_size - 12) == 12;
-  ::close(descriptor);
-  return read && png_complete(start, end);
+  const bool read = descriptor >= 0 && ::fstat(descriptor, &status) == 0 && S_ISREG(status.st_mode) &&
+                    status.st_size >= 20 && ::pread(descriptor, &start[0], 8, 0) == 8 &&
+                    ::pread(descriptor, &end[0], 12, status.st_size - 12) == 12;
+  if (descriptor >= 0) ::close(descriptor);
+  return read && start == signature && end == last;
 }
 
-/// Runs `gnuplot [script]` without a shell, in `folder` ("" for here), its standard input from `input` (-1:
-/// /dev/null) and its standard output and error into `log`. Returns gnuplot's exit status (127: it could not
-/// be started; 128 + N: killed by signal N).
-inline int run_gnuplot(const std::string& folder, const std::string& script, int input, int log) {
-  const pid_t child = ::fork();
-  if (child < 0) return 127;
-  if (child == 0) {  // only system calls here, then exec
-    if (!folder.empty() && ::chdir(folder.c_str()) != 0) ::_exit(127);
-    const int null = input >= 0 ? input : ::open("/dev/null", O_RDONLY);
-    if (null < 0 || ::dup2(null, 0) < 0 || ::dup2(log, 1) < 0 || ::dup2(log, 2) < 0) ::_exit(127);
-    if (script.empty()) ::execlp("gnuplot", "gnuplot", static_cast<char*>(nullptr));
-    else ::execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
+/// Runs gnuplot without a shell in `folder` ("" for here) on `script`, given on its standard input from an
+/// unnamed temporary file; `log` gets the first 64 KiB it printed. Returns its exit status (127: not started).
+inline int run_gnuplot(const std::string& folder, const std::string& script, std::string& log) {
+  std::FILE* input = std::tmpfile();
+  std::FILE* output = std::tmpfile();
+  int status = 127 << 8;
+  if (input && output && std::fwrite(script.data(), 1, script.size(), input) == script.size() &&
+      std::fflush(input) == 0 && ::lseek(fileno(input), 0, SEEK_SET) == 0) {
+    const pid_t child = ::fork();
+    if (child == 0) {  // only system calls here, then exec
+      if ((!folder.empty() && ::chdir(folder.c_str()) != 0) || ::dup2(fileno(input), 0) < 0 ||
+          ::dup2(fileno(output), 1) < 0 || ::dup2(fileno(output), 2) < 0)
+        ::_exit(127);
+      ::execlp("gnuplot", "gnuplot", static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    while (child > 0 && ::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    log.assign(1 << 16, '\0');
+    const ssize_t count = ::pread(fileno(output), &log[0], log.size(), 0);
+    log.resize(count > 0 ? static_cast<std::size_t>(count) : 0);
   }
-  int status = 0;
-  while (::waitpid(child, &status, 0) < 0)
-    if (errno != EINTR) return 127;
+  for (std::FILE* file : {input, output})
+    if (file) std::fclose(file);
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-TEST_CASE("gnuplot: strings quoted, control characters found, PNGs complete only to their end chunk") {
+/// Draws `pictures` (paths from here) with gnuplot running `script` in `folder`, each picture made afresh first;
+/// gnuplot's messages go into `log_path` (or, when it is "", their first line into the error).
+/// \throws OutputFailure naming the first picture not drawn whole; the pictures are then removed.
+inline void draw_with_gnuplot(const std::string& folder, const std::string& script,
+                              const std::vector<std::string>& pictures, const std::string& log_path = "") {
+  std::string log, reason, picture = pictures.front();
+  try {
+    for (const auto& fresh : pictures) write_fresh(fresh, "");
+    const int status = run_gnuplot(folder, script, log);
+    if (!log_path.empty()) write_fresh(log_path, log);
+    const auto incomplete = std::find_if_not(pictures.begin(), pictures.end(), png_file_complete);
+    if (status != 0) reason = "gnuplot failed (status " + std::to_string(status) + "; is gnuplot installed? make deps)";
+    if (status == 0 && incomplete != pictures.end()) {
+      reason = "gnuplot left it incomplete (no PNG end chunk)";
+      picture = *incomplete;
+    }
+  } catch (const OutputFailure&) {
+    for (const auto& made : pictures) ::unlink(made.c_str());
+    throw;
+  }
+  if (reason.empty()) return;
+  for (const auto& made : pictures) ::unlink(made.c_str());  // not whole: not to be taken for a picture
+  log = log.substr(0, log.find_first_of("\r\n"));
+  throw OutputFailure(picture, reason + (!log_path.empty() ? ": see " + log_path : log.empty() ? "" : ": " + log));
+}
+
+TEST_CASE(
+    "gnuplot: strings quoted, control characters found, files made afresh, PNGs complete only to their end chunk") {
   CHECK(gnuplot_quoted("A.x' . system('touch F') . '") == "'A.x'' . system(''touch F'') . '''");
-  CHECK(gnuplot_quoted("plain") == "'plain'");
   CHECK(has_control_character("a\nb"));
   CHECK(has_control_character(std::string("a\0b", 3)));
-  CHECK(has_control_character("tab\there"));
   CHECK(!has_control_character("sigma_xx (Pa) \xc3\xa9"));  // UTF-8 is no control character
-  CHECK(gnuplot_output_path("|touch F.png") == "./|touch F.png");
-  CHECK(gnuplot_output_path("/tmp/a.png") == "/tmp/a.png");
-  const std::string signature("\x89PNG\r\n\x1a\n", 8), iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
-  const std::string whole = signature + std::string("\0\0\0\rIHDR...", 11) + iend;
-  CHECK(png_complete(whole.substr(0, 8), whole.substr(whole.size() - 12)));
-  const std::string cut = whole.substr(0, whole.size() - 1);  // the last byte of the CRC missing
-  CHECK(!png_complete(cut.substr(0, 8), cut.substr(cut.size() - 12)));
-  CHECK(!png_complete("GIF89a..", whole.substr(whole.size() - 12)));
-  CHECK(!png_complete("", ""));
+  CHECK(gnuplot_page("|touch F.png", 1).find("set output './|touch F.png'\n") != std::string::npos);
+  CHECK(gnuplot_page("/tmp/a.png", 2).find("size 1000,520 font ',10'\nset output '/tmp/a.png'") != std::string::npos);
   namespace fs = std::filesystem;
   const std::string path = (fs::temp_directory_path() / "mpm_gnuplot_test.png").string(), target = path + ".target";
-  std::string reason;
-  REQUIRE(write_fresh(target, "precious", reason));
+  const std::string signature("\x89PNG\r\n\x1a\n", 8), iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  const std::string whole = signature + std::string("\0\0\0\rIHDR...", 11) + iend;
+  write_fresh(target, "precious");
   fs::remove(path);
   fs::create_symlink(target, path);
-  REQUIRE(write_fresh(path, whole, reason));  // the link removed, a file made in its place
+  write_fresh(path, whole);  // the link removed, a file made in its place
   CHECK(!fs::is_symlink(path));
   CHECK(png_file_complete(path));
-  CHECK(fs::file_size(target) == 8);  // the link's target untouched
-  REQUIRE(write_fresh(path, cut, reason));
+  CHECK(fs::file_size(target) == 8);                     // the link's target untouched
+  write_fresh(path, whole.substr(0, whole.size() - 1));  // the last byte of the CRC missing
+  CHECK(!png_file_complete(path));
+  write_fresh(path, "GIF89a.." + whole.substr(8));
   CHECK(!png_file_complete(path));
   fs::remove(path);
   fs::create_directory(path);
-  CHECK(!write_fresh(path, whole, reason));
-  CHECK(reason == "a folder of that name is in the way");
+  CHECK_THROWS_AS(write_fresh(path, whole), OutputFailure);
   CHECK(!png_file_complete(path));
   fs::remove(path);
   fs::remove(target);
-  const int sink = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-  CHECK(run_gnuplot("/nonexistent/folder", "plot.gp", -1, sink) == 127);  // no such folder: gnuplot never started
-  ::close(sink);
+  std::string log;
+  CHECK(run_gnuplot("/nonexistent/folder", "", log) == 127);  // no such folder: gnuplot never started
+  CHECK_THROWS_WITH_AS(draw_with_gnuplot("/nonexistent/folder", "", {path}),
+                       doctest::Contains("gnuplot failed (status 127"), OutputFailure);
+  CHECK(!fs::exists(path));  // made, then removed: not whole
 }
 
 }  // namespace mpm::cli

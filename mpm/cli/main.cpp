@@ -1,38 +1,18 @@
 /// \file
-/// The `mpm` command: one command per file of mpm/cli/, each parsing its own options with CLI11
-/// (mpm/cli/options.hpp) and generating its own help from them; `mpm --help` prints them all.
-///   mpm run SCENE.toml      runs a scene into its folder (run_command.hpp)
-///   mpm exact SCENE.toml    the scene's exact solution at points and times, without running (exact_command.hpp)
-///   mpm compare CSV SCENE   scores another code's CSV against the exact solution, Eq. (43) (compare_command.hpp)
-///   mpm shape               a shape function on an unbounded grid (shape_command.hpp)
-///   mpm plot RUN_DIR        draws a run with gnuplot (plot_command.hpp)
-///   mpm stability           the largest stable CFL of a method from its own linearised step (stability_command.hpp)
-///   mpm --version           the project's version and `git describe` at build time (version.cmake)
-/// Whatever the command, standard output is checked when it ends: exit 3 `cannot write` if it failed.
-///
-/// Sample run (measured on the 2-core development machine; the wall time varies):
-///   $ build/bin/mpm run scenes/dyka_bar.toml --set grid.cells=[160]
-///   Dyka bar: 2428 steps to t = 0.0002 s, 160 particles, 0.0219 s wall, 1.77e+07 particle-steps/s
-///   wrote runs/dyka_bar
+/// The `mpm` command: `mpm COMMAND ...` runs the command of mpm/cli/COMMAND_command.hpp, each parsing its own
+/// options (mpm/cli/options.hpp); `mpm --help` prints them all (help.hpp). Whatever the command, standard output
+/// is checked when it ends: exit 3 `cannot write` if it failed.
 #include <cerrno>
 #include <csignal>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <iostream>
 #include <new>
 #include <string>
 #include <vector>
 
-#include "mpm/cli/compare_command.hpp"
-#include "mpm/cli/exact_command.hpp"
-#include "mpm/cli/help.hpp"
-#include "mpm/cli/plot_command.hpp"
-#include "mpm/cli/shape_command.hpp"
-#include "mpm/cli/stability_command.hpp"
-#include "mpm/cli/run_command.hpp"
-#include "mpm/version.hpp"  // generated at build time (mpm/cli/version.cmake): MPM_VERSION
+#include "mpm/cli/help.hpp"  // and through it every command
+#include "mpm/version.hpp"   // generated at build time (mpm/cli/version.cmake): MPM_VERSION
 
 namespace {
 
@@ -51,6 +31,7 @@ int check_standard_output(int code) {
   return 3;
 }
 
+/// Runs the command `arguments` name; its exit code.
 int dispatch(const std::vector<std::string>& arguments, const mpm::io::RunIdentity& identity) {
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
   if (arguments[0] == "plot") return mpm::cli::plot_command(rest, std::cout, std::cerr);

@@ -1,77 +1,80 @@
 /// \file
-/// The one argument parser of every command: CLI11 (Debian's libcli11-dev), each option declared once with
-/// its default, range and help (mpm COMMAND --help is CLI11's, from those declarations), and CLI11's errors
-/// turned into the command's own: one line `error: --OPTION: what is wrong`, exit code 2.
+/// The one argument parser of every command: CLI11, each option declared once with its default, range and help
+/// (`mpm COMMAND --help` is generated from them), and CLI11's errors turned into the command's own:
+/// one line `error: --OPTION: what is wrong`, exit code 2.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <cctype>
-#include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
+
+#include "mpm/core/errors.hpp"
+#include "mpm/io/csv_file.hpp"
 
 namespace mpm::cli {
 
-/// The whole text as a finite decimal number; nullopt for anything else ("1e-3" yes, "1e-3s", "", "nan", " 1",
-/// "0x10" no).
-inline std::optional<double> parse_number(const std::string& text) {
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) || text.find_first_of("xX") != std::string::npos)
-    return std::nullopt;
-  std::size_t end = 0;
+/// A bad input, said whole after `error: ` (the option or `FILE:LINE` first): the command exits 2.
+struct Refused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The whole text as a finite decimal number (io::read_finite_number; no hexadecimal); nullopt for anything else.
+/// A number beyond a double's normal range ('1e-310' is too small, '1e400' too large) sets `out_of_range` to why.
+inline std::optional<double> parse_number(const std::string& text, std::string* out_of_range = nullptr) {
   double value = 0.0;
-  try {
-    value = std::stod(text, &end);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  if (end != text.size() || !std::isfinite(value)) return std::nullopt;
-  return value;
+  const std::string why = text.find_first_of("xX") == std::string::npos ? io::read_finite_number(text, value) : "x";
+  if (why.empty()) return value;
+  if (out_of_range && why.find(" is too ") != std::string::npos) *out_of_range = why;
+  return std::nullopt;
+}
+
+/// A validator of a number for which `accept` holds; `values` ("number in [0, 1]") names them in the help and
+/// the error (`must be a number in [0, 1], got '2'`).
+inline CLI::Validator number_where(const std::string& values, std::function<bool(double)> accept) {
+  return CLI::Validator(
+      [=](const std::string& text) -> std::string {
+        std::string out_of_range;
+        const auto number = parse_number(text, &out_of_range);
+        if (number && accept(*number)) return "";
+        return out_of_range.empty() ? "must be a " + values + ", got '" + text + "'" : out_of_range;
+      },
+      "NUMBER" + values.substr(6));
 }
 
 /// A finite number in [low, high] (or [low, high) when `open_high`); CLI11's Range lets NaN through.
 inline CLI::Validator number_in(double low, double high, bool open_high = false) {
-  std::ostringstream text_of_range;
-  text_of_range << "[" << low << ", " << high << (open_high ? ")" : "]");
-  const std::string range = text_of_range.str();
-  return CLI::Validator(
-      [=](const std::string& text) -> std::string {
-        const auto number = parse_number(text);
-        if (number && *number >= low && (open_high ? *number < high : *number <= high)) return "";
-        return "must be a number in " + range + ", got '" + text + "'";
-      },
-      "NUMBER in " + range);
+  std::ostringstream range;
+  range << "number in [" << low << ", " << high << (open_high ? ")" : "]");
+  return number_where(range.str(), [=](double x) { return x >= low && (open_high ? x < high : x <= high); });
 }
 
 /// A finite number > 0.
 inline CLI::Validator positive() {
-  return CLI::Validator(
-      [](const std::string& text) -> std::string {
-        const auto number = parse_number(text);
-        return number && *number > 0.0 ? "" : "must be a number > 0, got '" + text + "'";
-      },
-      "NUMBER > 0");
+  return number_where("number > 0", [](double x) { return x > 0.0; });
 }
 
 /// A whole number in [low, high], written as digits (no sign, point or exponent), whatever its length.
 inline CLI::Validator whole_in(long low, long high) {
+  const std::string from = std::to_string(low), to = std::to_string(high);
   return CLI::Validator(
       [=](const std::string& text) -> std::string {
         const bool digits = !text.empty() && text.size() <= 18 && std::all_of(text.begin(), text.end(), ::isdigit);
         if (digits && std::stol(text) >= low && std::stol(text) <= high) return "";
-        return "must be a whole number from " + std::to_string(low) + " to " + std::to_string(high) + ", got '" + text + "'";
+        return "must be a whole number from " + from + " to " + to + ", got '" + text + "'";
       },
-      "INTEGER in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+      "INTEGER in [" + from + ", " + to + "]");
 }
 
 /// One of `choices`.
-inline CLI::Validator one_of(std::vector<std::string> choices) {
+inline CLI::Validator one_of(const std::vector<std::string>& choices) {
   std::string list;
   for (const auto& choice : choices) list += (list.empty() ? "" : " | ") + choice;
   return CLI::Validator(
@@ -88,13 +91,10 @@ class HelpFormatter : public CLI::Formatter {
  public:
   std::string make_option_opts(const CLI::Option* option) const override {
     if (option->get_type_size() == 0) return "";
-    const std::string type = option->get_type_name();
-    const auto colon = type.find(':');
-    std::string text = " " + (colon == std::string::npos ? type : type.substr(colon + 1));
-    const std::string fallback = option->get_default_str();
+    const std::string type = option->get_type_name(), fallback = option->get_default_str();
+    std::string text = " " + type.substr(type.find(':') + 1);
     if (!fallback.empty() && fallback != "[]" && !option->get_required()) text += " (default " + fallback + ")";
-    if (option->get_expected_max() > 1) text += " ...";
-    return text;
+    return text + (option->get_expected_max() > 1 ? " ..." : "");
   }
 };
 
@@ -109,30 +109,20 @@ class CommandParser : public CLI::App {
   }
 };
 
-/// An argument no option or positional took: `--bogus: unknown option`, `stray: unexpected argument`.
-inline std::string extra_message(const std::string& extra, const std::string& command) {
-  return extra + ": " + (extra.rfind("-", 0) == 0 ? "unknown option" : "unexpected argument") + " (mpm " + command +
-         " --help lists the options)";
-}
-
-/// CLI11's message as the command's: `--OPTION: what`, the option named first.
-inline std::string error_message(const CLI::ParseError& error, const std::string& command) {
-  const std::string what = error.what();
-  const auto mismatch = what.find(": ");
-  if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) && mismatch != std::string::npos)
-    return what.substr(0, mismatch) + (what.find("At Most") != std::string::npos ? ": given more than once" : ": needs a value");
-  const auto equals = what.find(" = ");
-  if (dynamic_cast<const CLI::ConversionError*>(&error) && mismatch != std::string::npos && equals != std::string::npos)
-    return what.substr(mismatch + 2, equals - mismatch - 2) + ": '" + what.substr(equals + 3) + "' cannot be read";
-  if (dynamic_cast<const CLI::ExcludesError*>(&error)) {
-    const auto excludes = what.find(" excludes ");
-    if (excludes != std::string::npos)
-      return what.substr(0, excludes) + ": give it or " + what.substr(excludes + 10) + ", not both";
-  }
-  if (dynamic_cast<const CLI::RequiredError*>(&error)) {
-    const std::string name = what.substr(0, what.find(' '));
-    return name + ": required (mpm " + command + " --help)";
-  }
+/// An argument no option took (`--bogus: unknown option`, `stray: unexpected argument`), or CLI11's error as the
+/// command's: the option named first.
+inline std::string error_message(const CLI::ParseError* error, const std::string& extra, const std::string& command) {
+  if (!error || !extra.empty())
+    return extra + ": " + (extra.rfind('-', 0) == 0 ? "unknown option" : "unexpected argument") + " (mpm " + command +
+           " --help lists the options)";
+  const std::string what = error->what(), first = what.substr(0, what.find(' '));
+  const auto colon = what.find(": "), excludes = what.find(" excludes ");
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(error) && colon != std::string::npos)
+    return what.substr(0, colon) +
+           (what.find("At Most") != std::string::npos ? ": given more than once" : ": needs a value");
+  if (dynamic_cast<const CLI::ExcludesError*>(error) && excludes != std::string::npos)
+    return what.substr(0, excludes) + ": give it or " + what.substr(excludes + 10) + ", not both";
+  if (dynamic_cast<const CLI::RequiredError*>(error)) return first + ": required (mpm " + command + " --help)";
   return what;
 }
 
@@ -147,22 +137,47 @@ inline std::optional<int> parse_arguments(CLI::App& app, std::vector<std::string
     out << app.help();
     return 0;
   } catch (const CLI::ParseError& error) {  // an unknown option first: it may be what left a required one out
-    err << "error: " << (app.remaining().empty() ? error_message(error, command) : extra_message(app.remaining().front(), command))
-        << "\n";
+    err << "error: " << error_message(&error, app.remaining().empty() ? "" : app.remaining().front(), command) << "\n";
     return 2;
   }
-  if (!app.remaining().empty()) {
-    err << "error: " << extra_message(app.remaining().front(), command) << "\n";
-    return 2;
+  if (app.remaining().empty()) return std::nullopt;
+  err << "error: " << error_message(nullptr, app.remaining().front(), command) << "\n";
+  return 2;
+}
+
+/// Parses `arguments` with `app` (parse_arguments), then runs `body`, which returns the exit code: what it
+/// refuses (Refused, InputError, SceneError) is one line `error: ...` and exit 2, a file or picture it cannot
+/// write (OutputFailure) exit 3.
+template <class Body>
+int run_parsed(CLI::App& app, const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err,
+               Body body) {
+  if (const auto code = parse_arguments(app, arguments, app.get_name().substr(4), out, err)) return *code;
+  try {
+    return body();
+  } catch (const Refused& refused) {
+    err << "error: " << refused.what() << "\n";
+  } catch (const InputError& error) {
+    err << error.message() << "\n";
+  } catch (const SceneError& error) {
+    err << error.message() << "\n";
+  } catch (const OutputFailure& failure) {
+    err << failure.message() << "\n";
+    return 3;
   }
-  return std::nullopt;
+  return 2;
 }
 
 TEST_CASE("options: numbers, ranges and choices as the commands read them, CLI11's errors as the command's own") {
   for (const char* text : {"", " 1", "1e-3s", "nan", "inf", "1e400", "0x", "0x10"}) CHECK(!parse_number(text));
+  CHECK(parse_number("-2.5e2") == -250.0);
+  std::string why;
+  CHECK((!parse_number("1e-310", &why) && why.rfind("'1e-310' is too small (below 2.2e-308", 0) == 0));
+  CHECK(number_in(0.0, 1.0)("1e-310") == why);  // a subnormal is too small, not 'not a finite number'
+  CHECK(positive()("1e400") == "'1e400' is too large (beyond 1.8e308)");
   CHECK(number_in(0.0, 1.0)("0.5").empty());
   CHECK(number_in(0.0, 0.5, true)("0.5") == "must be a number in [0, 0.5), got '0.5'");
-  CHECK(!number_in(0.0, 1.0)("nan").empty());
+  CHECK(number_in(0.0, 0.5, true).get_description() == "NUMBER in [0, 0.5)");
+  CHECK(positive()("nan") == "must be a number > 0, got 'nan'");
   CHECK(whole_in(1, 4)("4").empty());
   CHECK(!whole_in(1, 4)("5").empty());
   CHECK(!whole_in(1, 4)("1.0").empty());
@@ -181,18 +196,28 @@ TEST_CASE("options: numbers, ranges and choices as the commands read them, CLI11
       {{"--ppc"}, "error: --ppc: needs a value\n"},
       {{"--ppc", "1", "--ppc", "2"}, "error: --ppc: given more than once\n"},
       {{"--bogus", "1"}, "error: --bogus: unknown option (mpm try --help lists the options)\n"},
-      {{"stray"}, "error: stray: unexpected argument (mpm try --help lists the options)\n"}};
+      {{"stray"}, "error: stray: unexpected argument (mpm try --help lists the options)\n"},
+      {{"--refuse"}, "error: --refuse: no\n"},
+      {{"--fail"}, "error: out.csv: cannot write: full\n"}};
   for (const auto& [arguments, message] : wrong) {
     CommandParser fresh("try", "a trial");
     fresh.add_option("--ppc", ppc, "particles per cell")->check(whole_in(1, 4));
+    bool refuse = false, fail = false;
+    fresh.add_flag("--refuse", refuse, "refuse");
+    fresh.add_flag("--fail", fail, "fail");
     err.str("");
-    CHECK(parse_arguments(fresh, arguments, "try", out, err) == 2);
+    const int code = run_parsed(fresh, arguments, out, err, [&] {
+      if (fail) throw OutputFailure("out.csv", "full");
+      if (refuse) throw Refused("--refuse: no");
+      return 0;
+    });
+    CHECK(code == (fail ? 3 : 2));
     CHECK(err.str() == message);
   }
   CommandParser helped("try", "a trial");
   helped.add_option("--ppc", ppc, "particles per cell")->check(whole_in(1, 4));
   CHECK(parse_arguments(helped, {"--help"}, "try", out, err) == 0);
-  CHECK(out.str().find("--ppc") != std::string::npos);
+  CHECK(out.str().find("--ppc INTEGER in [1, 4] (default ") != std::string::npos);
 }
 
 }  // namespace mpm::cli

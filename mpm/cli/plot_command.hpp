@@ -1,15 +1,7 @@
 /// \file
-/// `mpm plot RUN_DIR`: draws a run with gnuplot (PNG), into the run's folder:
-///   observers.png  one panel per observed quantity (x, v_x, sigma_xx, ...), every observer, and the
-///                  exact solution (exact.csv, dashed black) wherever it has the same column
-///   energy.png     kinetic, strain and total energy; momentum
-/// The gnuplot script is kept as RUN_DIR/plot.gp, to be edited and rerun by hand.
-/// Either CSV may be missing (a folder of another code's observers.csv, say): what is there is drawn.
-/// The CSV files are read by io::CsvFile (regular files only, lines of at most 1 MiB); their column names reach
-/// the script only as gnuplot single-quoted strings, and a name with a control character is refused. The
-/// script, plot.log and the pictures are created afresh, never through a symbolic link (mpm/cli/gnuplot.hpp).
-/// Exit codes: 0 done; 2 no such folder, neither CSV, a CSV that cannot be read or without its header, a name
-/// with a control character; 3 a file cannot be written, gnuplot failed or left a picture incomplete.
+/// `mpm plot RUN_DIR`: draws a run's observers.csv (with exact.csv beside it) into observers.png and its
+/// energy.csv into energy.png with gnuplot, keeping the script as RUN_DIR/plot.gp. Exit codes: 0 done; 2 a
+/// folder or CSV it cannot draw; 3 a file cannot be written, gnuplot failed or left a picture incomplete.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -19,9 +11,7 @@
 #include <fstream>
 #include <ostream>
 #include <sstream>
-#include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "mpm/cli/gnuplot.hpp"
@@ -31,37 +21,30 @@
 
 namespace mpm::cli {
 
-/// The column names of the header of `path` (io::CsvFile), empty when there is no such file; false with
-/// `error` set (`FILE:LINE: ...`) when it cannot be read, a name holds a control character (a name is
-/// written into the gnuplot script), or it has no data row or a field that is not a number (nan and inf
-/// are numbers here: a failed run writes them).
-inline bool plot_header(const std::string& path, std::vector<std::string>& names, std::string& error) {
+/// The column names of the header of the CSV file `path` (io::CsvFile), none when there is no such file. Each
+/// name is written into the script: one with a control character is refused, and so is a file without a data row
+/// or with a field that is not a number (nan and inf are numbers here: a failed run writes them).
+/// \throws Refused (`FILE:LINE: ...`).
+inline std::vector<std::string> plot_header(const std::string& path) {
   io::CsvFile file(path);
-  names.clear();
-  if (file.missing()) return true;
-  if (!file.read_header()) {
-    error = file.error().empty() ? path + ": empty; a header line is needed" : file.error();
-    return false;
-  }
-  for (size_t k = 0; k < file.header().size(); ++k)
-    if (has_control_character(file.header()[k])) {
-      error = file.where() + "column " + std::to_string(k + 1) + ": its name holds a control character";
-      return false;
-    }
+  if (file.missing()) return {};
+  if (!file.read_header())
+    throw Refused(file.error().empty() ? path + ": empty; a header line is needed" : file.error());
+  const auto& names = file.header();
+  for (size_t k = 0; k < names.size(); ++k)
+    if (has_control_character(names[k]))
+      throw Refused(file.where() + "column " + std::to_string(k + 1) + ": its name holds a control character");
   int rows = 0;
   for (std::vector<std::string> fields; file.next_row(fields); ++rows)
     for (size_t k = 0; k < fields.size(); ++k) {
       char* end = nullptr;
       std::strtod(fields[k].c_str(), &end);
-      if (fields[k].empty() || *end != '\0') {
-        error = file.where() + file.header()[k] + ": '" + fields[k].substr(0, 40) + "' is not a number";
-        return false;
-      }
+      if (fields[k].empty() || *end != '\0')
+        throw Refused(file.where() + names[k] + ": '" + fields[k].substr(0, 40) + "' is not a number");
     }
-  error = file.error();
-  if (error.empty() && rows == 0) error = path + ": has a header but no data row";
-  names = file.header();
-  return error.empty();
+  if (!file.error().empty()) throw Refused(file.error());
+  if (rows == 0) throw Refused(path + ": has a header but no data row");
+  return names;
 }
 
 /// "A.v_x" -> "v_x"; "t" -> "".
@@ -70,6 +53,7 @@ inline std::string quantity_of(const std::string& column) {
   return dot == std::string::npos ? "" : column.substr(dot + 1);
 }
 
+/// The y label of a quantity's panel: "velocity v_x (m/s)", "stress sigma_xx (Pa, tension > 0)", "position x (m)".
 inline std::string quantity_label(const std::string& quantity) {
   if (quantity.rfind("v_", 0) == 0) return "velocity " + quantity + " (m/s)";
   if (quantity.rfind("sigma_", 0) == 0) return "stress " + quantity + " (Pa, tension > 0)";
@@ -79,210 +63,138 @@ inline std::string quantity_label(const std::string& quantity) {
 /// The quantities of observers.csv's columns NAME.QUANTITY, in order of first appearance: one panel each.
 inline std::vector<std::string> observed_quantities(const std::vector<std::string>& observers) {
   std::vector<std::string> quantities;
-  for (const auto& column : observers) {
-    const std::string quantity = quantity_of(column);
-    if (!quantity.empty() && std::find(quantities.begin(), quantities.end(), quantity) == quantities.end())
-      quantities.push_back(quantity);
-  }
+  for (const auto& column : observers)
+    if (!quantity_of(column).empty() && std::count(quantities.begin(), quantities.end(), quantity_of(column)) == 0)
+      quantities.push_back(quantity_of(column));
   return quantities;
 }
 
-/// True if energy.csv's header has a column energy.png draws (kinetic, strain, total, momentum_*).
-inline bool has_energy_column(const std::vector<std::string>& energy) {
-  return std::any_of(energy.begin(), energy.end(), [](const std::string& name) {
-    return name == "kinetic" || name == "strain" || name == "total" || name.rfind("momentum", 0) == 0;
-  });
+/// True if `name` is a column of energy.csv that energy.png draws in its panel `momentum` or the other.
+inline bool energy_column(const std::string& name, bool momentum) {
+  return momentum ? name.rfind("momentum", 0) == 0 : name == "kinetic" || name == "strain" || name == "total";
 }
 
-/// The most panels observers.png holds (one per quantity); a picture much taller fails in cairo.
-inline constexpr std::size_t most_panels = 16;
+/// True if energy.csv's header `energy` has a column energy.png draws.
+inline bool draws_energy(const std::vector<std::string>& energy) {
+  return std::any_of(energy.begin(), energy.end(),
+                     [](auto& name) { return energy_column(name, false) || energy_column(name, true); });
+}
 
-/// The gnuplot script drawing observers.png (if any observer) and energy.png from the headers of
-/// observers.csv, exact.csv (empty: none) and energy.csv; columns are addressed by number.
+/// A gnuplot `plot` of the columns of `file` (its header `names`) that `pick` takes, by number and titled by name,
+/// each with the column of exact.csv (its header `exact`) of the same name beside it.
+template <class Pick>
+std::string plot_columns(const std::string& file, const std::vector<std::string>& names, Pick pick,
+                         const std::vector<std::string>& exact = {}) {
+  std::string line;
+  for (size_t k = 1; k < names.size(); ++k) {
+    if (!pick(names[k])) continue;
+    line += (line.empty() ? "plot '" : ", '") + file + "' using 1:" + std::to_string(k + 1) +
+            " with lines lw 1.5 title " + gnuplot_quoted(names[k]);
+    for (size_t j = 0; j < exact.size(); ++j)
+      if (exact[j] == names[k])
+        line += ", 'exact.csv' using 1:" + std::to_string(j + 1) + " with lines dt 2 lw 2 lc rgb 'black' title " +
+                gnuplot_quoted(exact[j] + " exact");
+  }
+  return line + "\n";
+}
+
+/// The gnuplot script drawing observers.png (one panel per quantity, if any) and energy.png (if energy.csv has a
+/// column it draws) from the headers of observers.csv, exact.csv and energy.csv (each empty: none).
 inline std::string plot_script(const std::vector<std::string>& observers, const std::vector<std::string>& exact,
                                const std::vector<std::string>& energy) {
-  std::ostringstream gp;
-  gp << "# written by `mpm plot`; run again with: gnuplot plot.gp (in this folder)\n"
-        "set datafile separator ','\nset datafile missing 'nan'\nset grid lc rgb '#dddddd'\n"
-        "set key outside right top\nset lmargin 14\nset xlabel 't (s)'\n";
+  std::string gp = std::string("# written by `mpm plot`; run again with: gnuplot plot.gp (in this folder)\n") +
+                   gnuplot_preamble + "set datafile missing 'nan'\n";
   const std::vector<std::string> quantities = observed_quantities(observers);
-  if (!quantities.empty()) {
-    gp << "set terminal pngcairo noenhanced size 1000," << 260 * quantities.size() << " font ',10'\n"
-       << "set output 'observers.png'\nset multiplot layout " << quantities.size() << ",1\n";
-    for (const auto& quantity : quantities) {
-      gp << "set ylabel " << gnuplot_quoted(quantity_label(quantity)) << "\nplot ";
-      std::string separator;
-      for (size_t k = 0; k < observers.size(); ++k) {
-        if (quantity_of(observers[k]) != quantity) continue;
-        gp << separator << "'observers.csv' using 1:" << k + 1 << " with lines lw 1.5 title " << gnuplot_quoted(observers[k]);
-        separator = ", ";
-        for (size_t j = 0; j < exact.size(); ++j)
-          if (exact[j] == observers[k])
-            gp << ", 'exact.csv' using 1:" << j + 1 << " with lines dt 2 lw 2 lc rgb 'black' title " << gnuplot_quoted(exact[j] + " exact");
-      }
-      gp << "\n";
-    }
-    gp << "unset multiplot\nunset output\n";
+  if (!quantities.empty()) gp += gnuplot_page("observers.png", quantities.size());
+  for (const auto& quantity : quantities) {
+    const auto same_quantity = [&](const std::string& name) { return quantity_of(name) == quantity; };
+    gp += "set ylabel " + gnuplot_quoted(quantity_label(quantity)) + "\n" +
+          plot_columns("observers.csv", observers, same_quantity, exact);
   }
-  if (!has_energy_column(energy)) return gp.str();  // no energy.csv: observers.png only
-  gp << "set terminal pngcairo noenhanced size 1000,520 font ',10'\nset output 'energy.png'\nset multiplot layout 2,1\n"
-        "set ylabel 'energy (J; 1D per m^2, 2D per m)'\nplot ";
-  std::string separator;
-  for (size_t k = 1; k < energy.size(); ++k)
-    if (energy[k] == "kinetic" || energy[k] == "strain" || energy[k] == "total") {
-      gp << separator << "'energy.csv' using 1:" << k + 1 << " with lines lw 1.5 title " << gnuplot_quoted(energy[k]);
-      separator = ", ";
-    }
-  gp << "\nset ylabel 'momentum'\nplot ";
-  separator.clear();
-  for (size_t k = 1; k < energy.size(); ++k)
-    if (energy[k].rfind("momentum", 0) == 0) {
-      gp << separator << "'energy.csv' using 1:" << k + 1 << " with lines lw 1.5 title " << gnuplot_quoted(energy[k]);
-      separator = ", ";
-    }
-  gp << "\nunset multiplot\nunset output\n";
-  return gp.str();
+  if (!quantities.empty()) gp += "unset multiplot\nunset output\n";
+  if (!draws_energy(energy)) return gp;
+  return gp + gnuplot_page("energy.png", 2) + "set ylabel 'energy (J; 1D per m^2, 2D per m)'\n" +
+         plot_columns("energy.csv", energy, [](auto& name) { return energy_column(name, false); }) +
+         "set ylabel 'momentum'\n" +
+         plot_columns("energy.csv", energy, [](auto& name) { return energy_column(name, true); }) +
+         "unset multiplot\nunset output\n";
 }
 
-/// Reads the headers of `folder`'s observers.csv, energy.csv and exact.csv (plot_header); false, with a line
-/// on `err`, when one cannot be read or neither observers.csv nor energy.csv is a run's.
-inline bool plot_headers(const std::string& folder, std::vector<std::string>& observers, std::vector<std::string>& energy,
-                         std::vector<std::string>& exact, std::ostream& err) {
-  std::string problem;
-  if (!plot_header(folder + "/observers.csv", observers, problem) || !plot_header(folder + "/energy.csv", energy, problem) ||
-      !plot_header(folder + "/exact.csv", exact, problem)) {
-    err << "error: " << problem << "\n";
-    return false;
-  }
-  if (observers.empty() && energy.empty()) {  // either is optional, not both
-    err << "error: " << folder << ": holds neither observers.csv nor energy.csv (is " << folder << " the folder of an `mpm run`?)\n";
-    return false;
-  }
+/// Draws the run in `folder`: its CSVs' headers read and checked, then plot.gp, the pictures and plot.log written
+/// under the folder's lock. \throws Refused, InputError (a busy folder), OutputFailure.
+inline void plot_folder(const std::string& folder, std::ostream& out) {
+  std::error_code error;
+  if (has_control_character(folder))
+    throw Refused("plot: the folder's name holds a control character (a newline, a tab...); rename it");
+  if (!std::filesystem::is_directory(folder, error))
+    throw Refused(folder + ": no such folder (give the folder of an `mpm run`, e.g. runs/dyka_bar)");
+  const std::string is_run = " (is " + folder + " the folder of an `mpm run`?)";
+  const auto observers = plot_header(folder + "/observers.csv"), energy = plot_header(folder + "/energy.csv");
+  const auto exact = plot_header(folder + "/exact.csv");
+  if (observers.empty() && energy.empty())
+    throw Refused(folder + ": holds neither observers.csv nor energy.csv" + is_run);
   for (const auto& [name, header] : {std::pair{"observers.csv", observers}, std::pair{"energy.csv", energy}})
-    if (!header.empty() && header[0] != "t") {
-      err << "error: " << folder << "/" << name << ": its header line does not start with t (is " << folder
-          << " the folder of an `mpm run`?)\n";
-      return false;
-    }
-  return true;
+    if (!header.empty() && header[0] != "t")
+      throw Refused(folder + "/" + name + ": its header line does not start with t" + is_run);
+  const std::size_t panels = observed_quantities(observers).size();
+  std::vector<std::string> pictures;
+  if (panels > 0) pictures.push_back(folder + "/observers.png");
+  if (draws_energy(energy)) pictures.push_back(folder + "/energy.png");
+  if (panels > 16 || pictures.empty())  // a picture much taller fails in cairo
+    throw Refused(folder + "/observers.csv: " + std::to_string(panels) +
+                  " quantities (columns NAME.QUANTITY) to draw; " +
+                  (panels == 0 ? "none, and energy.csv has no energy or momentum column" : "at most 16"));
+  io::FolderLock lock(folder);  // no run or other plot writes here meanwhile
+  const std::string script = plot_script(observers, exact, energy);
+  write_fresh(folder + "/plot.gp", script);
+  draw_with_gnuplot(folder, script, pictures, folder + "/plot.log");
+  for (const auto& picture : pictures) out << "wrote " << picture << "\n";
 }
 
-/// `mpm plot`'s parser, its folder bound to `folder`.
-inline std::unique_ptr<CommandParser> plot_parser(std::string& folder) {
-  auto app = std::make_unique<CommandParser>(
+/// `mpm plot`; returns the exit code.
+inline int plot_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+  std::string folder;
+  CommandParser app(
       "plot",
       "Draws a run's observer histories (observers.csv, with exact.csv beside them when the scene names an\n"
       "exact solution) into RUN_DIR/observers.png and its energy balance (energy.csv) into RUN_DIR/energy.png,\n"
       "with gnuplot. Either CSV may be missing (a folder of another code's observers.csv): what is there is drawn.");
-  app->add_option("RUN_DIR", folder, "the folder of an `mpm run` (or of another code's observers.csv)")->required();
-  return app;
-}
-
-/// `mpm plot --help`: the parser's own help.
-inline std::string plot_usage() {
-  std::string folder;
-  return plot_parser(folder)->help();
-}
-
-/// Draws the run in the folder the arguments name; returns the exit code.
-inline int plot_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
-  namespace fs = std::filesystem;
-  std::string folder;
-  if (const auto code = parse_arguments(*plot_parser(folder), arguments, "plot", out, err)) return *code;
-  if (has_control_character(folder)) {
-    err << "error: plot: the folder's name holds a control character (a newline, a tab...); rename it\n";
-    return 2;
-  }
-  std::error_code error;
-  if (!fs::is_directory(folder, error)) {
-    err << "error: " << folder << ": no such folder (give the folder of an `mpm run`, e.g. runs/dyka_bar)\n";
-    return 2;
-  }
-  std::vector<std::string> observers, energy, exact;
-  if (!plot_headers(folder, observers, energy, exact, err)) return 2;
-  const std::size_t panels = observed_quantities(observers).size();
-  if (panels > most_panels || (panels == 0 && !has_energy_column(energy))) {
-    err << "error: " << folder << "/observers.csv: " << panels << " quantities (columns NAME.QUANTITY) to draw; "
-        << (panels == 0 ? "none, and energy.csv has no energy or momentum column" : "at most 16") << "\n";
-    return 2;
-  }
-  std::vector<std::string> pictures;
-  if (panels > 0) pictures.push_back("observers.png");
-  if (has_energy_column(energy)) pictures.push_back("energy.png");
-  std::string reason;
-  auto remove_pictures = [&] {  // made here, and not whole: no picture is left to be taken for a finished one
-    for (const auto& picture : pictures) ::unlink((folder + "/" + picture).c_str());
-  };
-  std::unique_ptr<io::FolderLock> lock;  // no run or other plot writes here meanwhile
-  try {
-    lock = std::make_unique<io::FolderLock>(folder);
-  } catch (const InputError& busy) {
-    err << busy.message() << "\n";
-    return 2;
-  } catch (const OutputFailure& failure) {
-    err << failure.message() << "\n";
-    return 3;
-  }
-  if (!write_fresh(folder + "/plot.gp", plot_script(observers, exact, energy), reason)) {
-    err << "error: " << folder << "/plot.gp: cannot write: " << reason << "\n";
-    return 3;
-  }
-  for (const auto& picture : pictures) {  // each made afresh, so that gnuplot writes no symbolic link's target
-    const int descriptor = create_fresh(folder + "/" + picture, reason);
-    if (descriptor < 0) {
-      err << "error: " << folder << "/" << picture << ": cannot write: " << reason << "\n";
-      return remove_pictures(), 3;
-    }
-    ::close(descriptor);
-  }
-  const int log = create_fresh(folder + "/plot.log", reason);
-  if (log < 0) {
-    err << "error: " << folder << "/plot.log: cannot write: " << reason << "\n";
-    return remove_pictures(), 3;
-  }
-  const int status = run_gnuplot(folder, "plot.gp", -1, log);
-  ::close(log);
-  if (status != 0) {
-    err << "failure: gnuplot failed (status " << status << "; is gnuplot installed? make deps): see " << folder
-        << "/plot.log and " << folder << "/plot.gp\n";
-    return remove_pictures(), 3;
-  }
-  for (const auto& picture : pictures)
-    if (!png_file_complete(folder + "/" + picture)) {
-      err << "error: " << folder << "/" << picture << ": cannot write: gnuplot left it incomplete (no PNG end chunk): see " << folder
-          << "/plot.log\n";
-      return remove_pictures(), 3;
-    }
-  for (const auto& picture : pictures) out << "wrote " << folder << "/" << picture << "\n";
-  return 0;
+  app.add_option("RUN_DIR", folder, "the folder of an `mpm run` (or of another code's observers.csv)")->required();
+  return run_parsed(app, arguments, out, err, [&] {
+    plot_folder(folder, out);
+    return 0;
+  });
 }
 
 TEST_CASE("mpm plot: the script draws each observer's column beside the exact one of the same name") {
   const std::string script = plot_script({"t", "A.x", "A.v_x", "A.sigma_xx"}, {"t", "A.v_x", "A.sigma_xx"},
                                          {"t", "kinetic", "strain", "total", "momentum_x"});
   CHECK(script.find("set multiplot layout 3,1") != std::string::npos);
-  CHECK(script.find("'observers.csv' using 1:3 with lines lw 1.5 title 'A.v_x', 'exact.csv' using 1:2 ") != std::string::npos);
-  CHECK(script.find("'observers.csv' using 1:4 with lines lw 1.5 title 'A.sigma_xx', 'exact.csv' using 1:3 ") != std::string::npos);
+  CHECK(script.find("'observers.csv' using 1:3 with lines lw 1.5 title 'A.v_x', 'exact.csv' using 1:2 ") !=
+        std::string::npos);
+  CHECK(script.find("'observers.csv' using 1:4 with lines lw 1.5 title 'A.sigma_xx', 'exact.csv' using 1:3 ") !=
+        std::string::npos);
   CHECK(script.find("'observers.csv' using 1:2 with lines lw 1.5 title 'A.x'\n") != std::string::npos);  // no exact x
+  CHECK(script.find("set ylabel 'stress sigma_xx (Pa, tension > 0)'\n") != std::string::npos);
   CHECK(script.find("'energy.csv' using 1:4 with lines lw 1.5 title 'total'") != std::string::npos);
   CHECK(script.find("'energy.csv' using 1:5 with lines lw 1.5 title 'momentum_x'") != std::string::npos);
   CHECK(plot_script({"t"}, {}, {"t", "kinetic"}).find("observers.png") == std::string::npos);
   CHECK(plot_script({"t", "A.x"}, {}, {}).find("energy.png") == std::string::npos);  // no energy.csv, no energy.png
-  const std::string hostile = "A.x' . system('touch F') . '";  // a header name closing its string: doubled quotes keep it inside
+  const std::string hostile =
+      "A.x' . system('touch F') . '";  // a header name closing its string: doubled quotes keep it inside
   CHECK(plot_script({"t", hostile}, {}, {}).find("title 'A.x'' . system(''touch F'') . '''\n") != std::string::npos);
-  CHECK(plot_script({"t"}, {}, {"t", "momentum' . system('id') . '"}).find("title 'momentum'' . system(''id'') . '''") != std::string::npos);
+  CHECK(
+      plot_script({"t"}, {}, {"t", "momentum' . system('id') . '"}).find("title 'momentum'' . system(''id'') . '''") !=
+      std::string::npos);
   const std::string path = (std::filesystem::temp_directory_path() / "mpm_plot_header_test.csv").string();
   std::ofstream(path) << "\xEF\xBB\xBFt,A.x,B\tx\n0,1,2\n";
-  std::vector<std::string> names;
-  std::string error;
-  CHECK(!plot_header(path, names, error));
-  CHECK(error == path + ":1: column 3: its name holds a control character");
+  CHECK_THROWS_WITH_AS(plot_header(path), (path + ":1: column 3: its name holds a control character").c_str(), Refused);
   std::ofstream(path) << "\xEF\xBB\xBFt,A.x\n0,1\n";
-  CHECK(plot_header(path, names, error));
-  CHECK(names == std::vector<std::string>{"t", "A.x"});  // the byte-order mark is not part of t
+  CHECK(plot_header(path) == std::vector<std::string>{"t", "A.x"});  // the byte-order mark is not part of t
+  std::ofstream(path) << "t,A.x\n0,fast\n";
+  CHECK_THROWS_WITH_AS(plot_header(path), (path + ":2: A.x: 'fast' is not a number").c_str(), Refused);
   std::filesystem::remove(path);
-  CHECK(plot_header(path, names, error));  // no such file: no header, and no error (either CSV is optional)
-  CHECK(names.empty());
+  CHECK(plot_header(path).empty());  // no such file: no header, and no error (either CSV is optional)
   std::ostringstream out, err;
   CHECK(plot_command({}, out, err) == 2);
   CHECK(plot_command({"/nonexistent/run"}, out, err) == 2);

@@ -1,25 +1,19 @@
 /// \file
-/// `mpm shape`: a shape function evaluated on an unbounded uniform grid, for teaching and Fig. 4.
-///
-///   mpm shape --dim 2 --kind lme --gamma 3 [--cell-size 1] [--particle-size 0.5] --at 0.3,0.7 [--at ...]
-///
-/// prints `point,node_x,N,dN_dx` (1D) or `point,node_x,node_y,N,dN_dx,dN_dy` (2D), one row per node
-/// of each point's stencil; `point` counts the --at arguments from 0. The grid is made large enough
-/// around the points that no stencil meets its edge, which is what "unbounded" means here.
-/// `--particle-size` is the uGIMP particle length 2 l_p (default half the cell size).
+/// `mpm shape --dim 2 --kind lme --gamma 3 --at 0.3,0.7 [--at ...]`: a shape function on an unbounded uniform grid
+/// (made large enough around the points that no stencil meets its edge), for teaching and Fig. 4: CSV, one row
+/// per node of each point's stencil.
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <memory>
 #include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "mpm/cli/options.hpp"
-
 #include "mpm/shape/bspline.hpp"
 #include "mpm/shape/lme.hpp"
 #include "mpm/shape/linear.hpp"
@@ -27,13 +21,30 @@
 
 namespace mpm::cli {
 
+/// What `mpm shape` was asked.
 struct ShapeRequest {
   int dimension = 1;
   std::string kind;
   double gamma = 3.0, cell_size = 1.0, particle_size = -1.0, tolerance = 1e-6;
+  std::vector<std::string> at;  ///< each --at as written
   std::vector<std::vector<double>> points;
 };
 
+/// Why an LME support of locality `gamma` and tolerance `tolerance` is refused, "" if it is not: reaching beyond
+/// 100 cells, its stencils would hold (2R/h)^dim entries per particle, and below gamma = 1e-16 Newton's iteration
+/// fails.
+inline std::string lme_support_too_wide(double gamma, double tolerance) {
+  if (std::sqrt(-std::log(tolerance) / gamma) + 3.0 <= 103.0) return "";
+  const double smallest = -std::log(tolerance) / (100.0 * 100.0),
+               digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
+  std::ostringstream text;
+  text << "too small for the support tolerance " << tolerance
+       << ": the support would reach beyond 100 cells; give at least " << std::setprecision(3)
+       << std::ceil(smallest / digit) * digit;  // rounded up: the value printed is accepted
+  return text.str();
+}
+
+/// Prints `point,node_x[,node_y],N,dN_dx[,dN_dy]`, one row per node of each particle's stencil.
 template <int Dim, class Shape>
 void print_stencils(Shape& shape, const Grid<Dim>& grid, const Particles<Dim>& particles, std::ostream& out) {
   shape.initialise(particles);
@@ -58,18 +69,16 @@ void print_stencils(Shape& shape, const Grid<Dim>& grid, const Particles<Dim>& p
   }
 }
 
+/// Prints the stencils of the request's points on a grid of its cell size reaching beyond any support around them.
 template <int Dim>
 void evaluate_request(const ShapeRequest& request, std::ostream& out) {
   const double h = request.cell_size;
   const double reach = h * (std::sqrt(-std::log(request.tolerance) / request.gamma) + 3.0);  // beyond any support
-  Vector<Dim> lower, upper;
-  lower.setConstant(1e300);
-  upper.setConstant(-1e300);
+  Vector<Dim> lower = Vector<Dim>::Constant(1e300), upper = Vector<Dim>::Constant(-1e300);
   Particles<Dim> particles;
   const double particle_size = request.particle_size > 0.0 ? request.particle_size : 0.5 * h;
   for (const auto& point : request.points) {
-    Vector<Dim> x;
-    for (int axis = 0; axis < Dim; ++axis) x[axis] = point[axis];
+    const Vector<Dim> x = Eigen::Map<const Vector<Dim>>(point.data());
     lower = lower.cwiseMin(x);
     upper = upper.cwiseMax(x);
     particles.add(x, 1.0, 1.0, Vector<Dim>::Zero(), Vector<Dim>::Constant(0.5 * particle_size));
@@ -78,118 +87,94 @@ void evaluate_request(const ShapeRequest& request, std::ostream& out) {
   std::array<int, Dim> cells{};
   for (int axis = 0; axis < Dim; ++axis) {
     const int first = static_cast<int>(std::floor((lower[axis] - reach) / h));
-    const int last = static_cast<int>(std::ceil((upper[axis] + reach) / h));
     origin[axis] = first * h;
-    cells[axis] = last - first;
+    cells[axis] = static_cast<int>(std::ceil((upper[axis] + reach) / h)) - first;
   }
   const Grid<Dim> grid(origin, h, cells);
-  if (request.kind == "linear") {
-    LinearShape<Dim> shape(grid);
-    print_stencils(shape, grid, particles, out);
-  } else if (request.kind == "ugimp") {
-    UgimpShape<Dim> shape(grid);
-    print_stencils(shape, grid, particles, out);
-  } else if (request.kind == "bspline2") {
-    BsplineShape<Dim, 2> shape(grid);
-    print_stencils(shape, grid, particles, out);
-  } else if (request.kind == "bspline3") {
-    BsplineShape<Dim, 3> shape(grid);
-    print_stencils(shape, grid, particles, out);
-  } else {
-    LmeOptions options;
-    options.gamma = request.gamma;
-    options.support_tolerance = request.tolerance;
-    LmeShape<Dim> shape(grid, options);
-    print_stencils(shape, grid, particles, out);
-  }
+  LmeOptions lme;
+  lme.gamma = request.gamma;
+  lme.support_tolerance = request.tolerance;
+  auto print = [&](auto shape) { print_stencils(shape, grid, particles, out); };
+  if (request.kind == "linear") return print(LinearShape<Dim>(grid));
+  if (request.kind == "ugimp") return print(UgimpShape<Dim>(grid));
+  if (request.kind == "bspline2") return print(BsplineShape<Dim, 2>(grid));
+  if (request.kind == "bspline3") return print(BsplineShape<Dim, 3>(grid));
+  print(LmeShape<Dim>(grid, lme));
 }
 
-/// `mpm shape`'s parser, its options bound to `request` and to `points` (each --at as written).
-inline std::unique_ptr<CommandParser> shape_parser(ShapeRequest& request, std::vector<std::string>& points) {
-  auto app = std::make_unique<CommandParser>(
-      "shape",
-      "Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of the cell size) and prints\n"
-      "CSV, one row per node of each point's stencil: point,node_x[,node_y],N,dN_dx[,dN_dy]; point counts the --at from 0.");
-  app->add_option("--dim", request.dimension, "dimension")->check(whole_in(1, 2));
-  app->add_option("--kind", request.kind, "shape function")->required()->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
-  app->add_option("--at", points, "a point X (1D) or X,Y (2D); repeat for more")->type_name("X[,Y]")->required()->allow_extra_args(false);
-  app->add_option("--gamma", request.gamma, "LME locality gamma, <= -ln(tol)/dim")->check(positive());
-  app->add_option("--cell-size", request.cell_size, "cell size h")->check(positive());
-  app->add_option("--particle-size", request.particle_size, "uGIMP particle length 2 l_p, <= h (-1: h/2)")
-      ->check(CLI::Validator(
-          [](const std::string& text) -> std::string {
-            const auto number = parse_number(text);
-            return number && (*number > 0.0 || *number == -1.0) ? "" : "must be a number > 0, got '" + text + "'";
-          },
-          "NUMBER > 0"));
-  app->add_option("--tol", request.tolerance, "LME support tolerance")->check(number_in(0.0, 1.0, true));
-  return app;
-}
-
-/// `mpm shape --help`: the parser's own help.
-inline std::string shape_usage() {
-  ShapeRequest request;
-  std::vector<std::string> points;
-  return shape_parser(request, points)->help();
-}
-
-/// "X" or "X,Y" as numbers; false if a part is not a finite number ("0.5," is refused: every comma separates two).
-inline bool read_point(const std::string& text, std::vector<double>& point) {
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = text.find(',', start);
-    const auto coordinate = parse_number(text.substr(start, comma - start));
-    if (!coordinate) return false;
-    point.push_back(*coordinate);
-    if (comma == std::string::npos) return true;
-    start = comma + 1;
-  }
-}
-
-/// Parses the options and prints the CSV; returns the exit code (2 with a message on bad input).
-inline int shape_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
-  ShapeRequest request;
-  std::vector<std::string> points;
-  if (const auto code = parse_arguments(*shape_parser(request, points), arguments, "shape", out, err)) return *code;
-  auto fail = [&](const std::string& option, const std::string& what) {
-    err << "error: " << option << ": " << what << "\n";
-    return 2;
-  };
-  for (const std::string& text : points) {
+/// Reads each --at ("X" or "X,Y": every comma separates two numbers) into the request's points and checks what
+/// the options cannot check alone: the LME support, uGIMP's particle size, a grid of at most 10^8 nodes whose
+/// coordinates lie within 10^6 cells of 0. \throws Refused naming the option.
+inline void check_shape_request(ShapeRequest& request) {
+  for (const std::string& text : request.at) {
     request.points.emplace_back();
-    if (!read_point(text, request.points.back())) return fail("--at", "'" + text + "' is not X or X,Y of finite numbers");
+    for (std::size_t start = 0, comma = 0; comma != std::string::npos; start = comma + 1) {
+      comma = text.find(',', start);
+      std::string out_of_range;
+      const auto coordinate = parse_number(text.substr(start, comma - start), &out_of_range);
+      if (!coordinate)
+        throw Refused("--at: " +
+                      (out_of_range.empty() ? "'" + text + "' is not X or X,Y of finite numbers" : out_of_range));
+      request.points.back().push_back(*coordinate);
+    }
   }
-  if (request.dimension != 1 && request.dimension != 2) return fail("--dim", "must be 1 or 2");
-  if (request.kind != "linear" && request.kind != "ugimp" && request.kind != "lme" && request.kind != "bspline2" && request.kind != "bspline3")
-    return fail("--kind", "must be linear, ugimp, lme, bspline2 or bspline3");
-  if (!(request.tolerance > 0.0)) return fail("--tol", "must be in (0, 1)");
   if (request.kind == "lme" && request.gamma > -std::log(request.tolerance) / request.dimension)
-    return fail("--gamma", "too large for --tol: the support must reach the corners of a cell, gamma <= -ln(tol)/dim");
+    throw Refused("--gamma: too large for --tol: the support must reach the corners of a cell, gamma <= -ln(tol)/dim");
   if (request.kind == "ugimp" && request.particle_size > request.cell_size)
-    return fail("--particle-size", "must not exceed the cell size");
-  if (request.points.empty()) return fail("--at", "give at least one point");
+    throw Refused("--particle-size: must not exceed the cell size");
   for (const auto& point : request.points)
-    if (static_cast<int>(point.size()) != request.dimension) return fail("--at", "each point needs --dim coordinates, comma-separated");
-  // The grid around the points must be indexable: coordinates within 10^6 cells of 0, supports
-  // within 100 cells, and at most 10^8 nodes in all.
+    if (static_cast<int>(point.size()) != request.dimension)
+      throw Refused("--at: each point needs --dim coordinates, comma-separated");
+  if (request.kind == "lme" && !lme_support_too_wide(request.gamma, request.tolerance).empty())
+    throw Refused("--gamma: " + lme_support_too_wide(request.gamma, request.tolerance));
   const double reach = std::sqrt(-std::log(request.tolerance) / request.gamma) + 3.0;  // cells, as evaluate_request
-  if (request.kind == "lme" && reach > 103.0) return fail("--gamma", "too small for --tol: the support would reach beyond 100 cells");
   double nodes = 1.0;
   for (int axis = 0; axis < request.dimension; ++axis) {
     double lower = 0.0, upper = 0.0;
     for (const auto& point : request.points) {
-      if (std::abs(point[axis]) > 1e6 * request.cell_size) return fail("--at", "coordinates must lie within 10^6 cell sizes of 0");
-      lower = std::min(lower, point[axis]), upper = std::max(upper, point[axis]);
+      if (std::abs(point[axis]) > 1e6 * request.cell_size)
+        throw Refused("--at: coordinates must lie within 10^6 cell sizes of 0");
+      lower = std::min(lower, point[axis]);
+      upper = std::max(upper, point[axis]);
     }
     nodes *= (upper - lower) / request.cell_size + 2.0 * reach + 3.0;
   }
-  if (nodes > 1e8) return fail("--at", "the points lie too far apart for one grid of at most 10^8 nodes");
-  try {
-    request.dimension == 1 ? evaluate_request<1>(request, out) : evaluate_request<2>(request, out);
-  } catch (const ShapeFailure& failure) {
-    err << "failure: point " << failure.particle << ": " << failure.what() << "\n";
-    return 3;
-  }
-  return 0;
+  if (nodes > 1e8) throw Refused("--at: the points lie too far apart for one grid of at most 10^8 nodes");
+}
+
+/// `mpm shape`; returns the exit code (3 when the shape function fails at a point).
+inline int shape_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+  ShapeRequest request;
+  CommandParser app(
+      "shape",
+      "Evaluates a shape function on an unbounded uniform grid (nodes at integer multiples of the cell size) "
+      "and prints\n"
+      "CSV, one row per node of each point's stencil: point,node_x[,node_y],N,dN_dx[,dN_dy]; point counts "
+      "the --at from 0.");
+  app.add_option("--dim", request.dimension, "dimension")->check(whole_in(1, 2));
+  app.add_option("--kind", request.kind, "shape function")
+      ->required()
+      ->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
+  app.add_option("--at", request.at, "a point X (1D) or X,Y (2D); repeat for more")
+      ->type_name("X[,Y]")
+      ->required()
+      ->allow_extra_args(false);
+  app.add_option("--gamma", request.gamma, "LME locality gamma, <= -ln(tol)/dim")->check(positive());
+  app.add_option("--cell-size", request.cell_size, "cell size h")->check(positive());
+  app.add_option("--particle-size", request.particle_size, "uGIMP particle length 2 l_p, <= h (-1: h/2)")
+      ->check(number_where("number > 0", [](double x) { return x > 0.0 || x == -1.0; }));
+  app.add_option("--tol", request.tolerance, "LME support tolerance")
+      ->check(number_where("number in (0, 1)", [](double x) { return x > 0.0 && x < 1.0; }));
+  return run_parsed(app, arguments, out, err, [&] {
+    check_shape_request(request);
+    try {
+      request.dimension == 1 ? evaluate_request<1>(request, out) : evaluate_request<2>(request, out);
+    } catch (const ShapeFailure& failure) {
+      err << "failure: point " << failure.particle << ": " << failure.what() << "\n";
+      return 3;
+    }
+    return 0;
+  });
 }
 
 TEST_CASE("mpm shape: the linear hat in 1D and Q4 in 2D by hand, and bad options") {
@@ -202,13 +187,21 @@ TEST_CASE("mpm shape: the linear hat in 1D and Q4 in 2D by hand, and bad options
   CHECK(shape_command({"--dim", "3", "--kind", "linear", "--at", "0"}, out, err) == 2);
   CHECK(shape_command({"--dim", "1", "--kind", "lme", "--gamma", "20", "--at", "0"}, out, err) == 2);
   CHECK(shape_command({"--dim", "2", "--kind", "linear", "--at", "0.1"}, out, err) == 2);
-  // not numbers, or not finite, or out of reach: refused with exit 2 (issue 11)
+  // not numbers, or not finite, or out of reach: refused with exit 2
   CHECK(shape_command({"--dim", "2x", "--kind", "linear", "--at", "0.1,0.2"}, out, err) == 2);
   CHECK(shape_command({"--dim", "1", "--kind", "linear", "--at", "0.5,"}, out, err) == 2);
   CHECK(shape_command({"--dim", "1", "--kind", "linear", "--at", "nan"}, out, err) == 2);
   CHECK(shape_command({"--dim", "1", "--kind", "linear", "--at", "1e300"}, out, err) == 2);
-  CHECK(shape_command({"--dim", "1", "--kind", "lme", "--gamma", "1e-9", "--at", "0"}, out, err) == 2);
   CHECK(shape_command({"--dim", "1", "--kind", "linear", "--cell-size", "inf", "--at", "0"}, out, err) == 2);
+  CHECK(shape_command({"--dim", "1", "--kind", "linear", "--tol", "0", "--at", "0"}, out, err) == 2);
+  std::ostringstream wide;
+  CHECK(shape_command({"--dim", "1", "--kind", "lme", "--gamma", "1e-9", "--at", "0"}, out, wide) == 2);
+  CHECK(wide.str() ==
+        "error: --gamma: too small for the support tolerance 1e-06: the support would reach beyond 100 cells; "
+        "give at least 0.00139\n");
+  std::ostringstream tiny;
+  CHECK(shape_command({"--dim", "1", "--kind", "linear", "--at", "1e-310"}, out, tiny) == 2);
+  CHECK(tiny.str().rfind("error: --at: '1e-310' is too small", 0) == 0);
 }
 
 }  // namespace mpm::cli

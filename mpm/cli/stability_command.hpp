@@ -1,69 +1,28 @@
 /// \file
-/// `mpm stability`: the largest stable CFL of a method, from the spectral radius of the code's own
-/// linearised step on a uniform body held at its walls (mpm/stability.hpp, paper/10_integrator_analysis.md).
-///
-///   $ build/bin/mpm stability --shape linear --integrator npc --newmark-gamma 0.75
-///   dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,highest_mode,cfl_limit,cfl_limit_from_modes,stress_update
-///   1,linear,3,npc,eq32,0.75,1,1,0,64,192,1,1.63299...,1.63299...,usf
+/// `mpm stability`: the largest stable CFL of a method, from the spectral radius of the code's own linearised step
+/// on a uniform body held at its walls (mpm/stability.hpp, paper/10_integrator_analysis.md); CSV, one row.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <memory>
 #include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "mpm/cli/options.hpp"
-
+#include "mpm/cli/shape_command.hpp"
 #include "mpm/stability.hpp"
 
 namespace mpm::cli {
 
+/// The method `mpm stability` is asked about (its body: StabilityBody).
 struct StabilityRequest {
-  int dimension = 1, ppc = 1, cells = 0;
   std::string shape = "linear", integrator = "fe", npc_velocity = "eq32", stress_update = "usf";
   double newmark_gamma = 0.5, lme_gamma = 3.0, flip_fraction = 1.0, poisson_ratio = 0.0;
 };
-
-/// Declares every option of `mpm stability`, bound to `request` (whose members hold the defaults).
-inline void declare_stability_options(CLI::App& app, StabilityRequest& request) {
-  app.add_option("--shape", request.shape, "shape function")->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
-  app.add_option("--integrator", request.integrator, "fe (forward Euler) | npc (the predictor-corrector)")->check(one_of({"fe", "npc"}));
-  app.add_option("--newmark-gamma", request.newmark_gamma, "Newmark gamma of npc")->check(number_in(0.0, 1.0));
-  app.add_option("--npc-velocity", request.npc_velocity, "npc's particle velocity: Eq. (32) or the Newmark average")
-      ->check(one_of({"eq32", "average"}));
-  app.add_option("--flip-fraction", request.flip_fraction, "forward Euler's PIC/FLIP blend")->check(number_in(0.0, 1.0));
-  app.add_option("--stress-update", request.stress_update, "forward Euler's stress update")->check(one_of({"usf", "usl", "musl"}));
-  app.add_option("--ppc", request.ppc, "particles per cell and axis")->check(whole_in(1, 4));
-  app.add_option("--lme-gamma", request.lme_gamma, "LME locality gamma")->check(positive());
-  app.add_option("--dim", request.dimension, "dimension")->check(whole_in(1, 2));
-  app.add_option("--poisson-ratio", request.poisson_ratio, "plane strain")->check(number_in(0.0, 0.5, true));
-  app.add_option("--cells", request.cells,
-                 "cells per axis, at most 1000 unknowns in all (0: max(16, 64 / ppc) in 1D, max(4, 8 / ppc) in 2D)")
-      ->check(whole_in(0, 256));
-}
-
-/// `mpm stability`'s parser, its options bound to `request`.
-inline std::unique_ptr<CommandParser> stability_parser(StabilityRequest& request) {
-  auto app = std::make_unique<CommandParser>("stability",
-                    "Prints CSV with the largest stable CFL (Eq. 42, c = sqrt(E / rho)) of a method: cfl_limit, from the spectral\n"
-                    "radius of the code's own step linearised about rest on a uniform bar (1D) or square (2D) held at its walls,\n"
-                    "and cfl_limit_from_modes, the one-mode analysis (2 for forward Euler and the Newmark average, 2/sqrt(3 - 2 gamma)\n"
-                    "for Eq. 32) divided by the body's highest mode omega_max h / c (highest_mode); inf when no CFL up to 1000\n"
-                    "is unstable.");
-  declare_stability_options(*app, request);
-  return app;
-}
-
-/// `mpm stability --help`: the parser's own help.
-inline std::string stability_usage() {
-  StabilityRequest request;
-  return stability_parser(request)->help();
-}
 
 /// The option of `mpm stability` that sets a scene key of its body (`solver.lme_gamma`: `--lme-gamma`); the key itself
 /// for one no option sets.
@@ -82,62 +41,84 @@ TEST_CASE("mpm stability: a scene key of its body is named by the option that se
   CHECK(option_of_key("grid.cells") == "grid.cells");
 }
 
-/// Parses the options and prints the CSV; returns the exit code (2 with a message naming the option on bad input).
-inline int stability_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
-  StabilityRequest request;
-  if (const auto code = parse_arguments(*stability_parser(request), arguments, "stability", out, err)) return *code;
-  auto fail = [&](const std::string& option, const std::string& what) {
-    err << "error: " << option << ": " << what << "\n";
-    return 2;
-  };
-  if (request.cells != 0 && request.cells < 4) return fail("--cells", "must be 0 (the default) or from 4 to 256");
+/// The scene of `body` with the method of `request`, checked as the options cannot be alone (at most 1000 unknowns,
+/// an LME support within 100 cells, as `mpm shape`'s). \throws Refused naming the option.
+inline io::Scene stability_request_scene(const StabilityRequest& request, StabilityBody& body) {
+  if (body.cells != 0 && body.cells < 4) throw Refused("--cells: must be 0 (the default) or from 4 to 256");
   if (request.integrator == "npc" && request.stress_update != "usf")
-    return fail("--stress-update", "usl and musl are forward Euler's (the predictor-corrector updates stress first): give --integrator fe");
-  StabilityBody body;
-  body.dimension = request.dimension;
-  body.cells = request.cells;
-  body.ppc = request.ppc;
-  body.poisson_ratio = request.poisson_ratio;
+    throw Refused(
+        "--stress-update: usl and musl are forward Euler's (the predictor-corrector updates stress first): "
+        "give --integrator fe");
   if (stability_unknowns(body) > 1000)
-    return fail(request.cells > 0 ? "--cells" : "--ppc",
-                "the body would have " + std::to_string(stability_unknowns(body)) +
-                    " unknowns, more than 1000 (the step matrix is dense; its eigenvalues cost their cube): fewer cells or particles");
-  std::ostringstream number;
-  number << std::setprecision(17);
-  auto setting = [&](const std::string& key, double value) {
-    number.str("");
-    number << value;
-    return "solver." + key + "=" + number.str();
+    throw Refused(std::string(body.cells > 0 ? "--cells" : "--ppc") + ": the body would have " +
+                  std::to_string(stability_unknowns(body)) +
+                  " unknowns, more than 1000 (the step matrix is dense; its "
+                  "eigenvalues cost their cube): fewer cells or particles");
+  auto setting = [](const std::string& key, double value) {
+    std::ostringstream number;
+    number << "solver." << key << "=" << std::setprecision(17) << value;
+    return number.str();
   };
-  body.method = {"solver.shape=\"" + request.shape + "\"", "solver.integrator=\"" + request.integrator + "\"",
-                 "solver.npc_velocity=\"" + request.npc_velocity + "\"", setting("newmark_gamma", request.newmark_gamma),
-                 setting("flip_fraction", request.flip_fraction), setting("lme_gamma", request.lme_gamma),
+  body.method = {"solver.shape=\"" + request.shape + "\"",
+                 "solver.integrator=\"" + request.integrator + "\"",
+                 "solver.npc_velocity=\"" + request.npc_velocity + "\"",
+                 setting("newmark_gamma", request.newmark_gamma),
+                 setting("flip_fraction", request.flip_fraction),
+                 setting("lme_gamma", request.lme_gamma),
                  "solver.stress_update=\"" + request.stress_update + "\""};
   io::Scene scene;
   try {
     scene = stability_scene(body);
-  } catch (const SceneError& error) {  // e.g. an LME gamma too large for its support tolerance: name the option, not the key
-    return fail(option_of_key(error.key), error.what());
+  } catch (const SceneError& error) {  // e.g. an LME gamma too large for its support tolerance: named by its option
+    throw Refused(option_of_key(error.key) + ": " + error.what());
   }
-  // As `mpm shape`: the support may reach no further than 100 cells. A wider one covers the whole body (at most 256
-  // cells) and changes nothing but the cost: its stencils hold (2R/h)^dim entries per particle (gigabytes below
-  // gamma = 1e-5 in 2D), and below 1e-16 the Newton iteration of the weights fails.
-  const double reach = std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 3.0;  // cells, as `mpm shape`
-  if (scene.shape == io::ShapeKind::lme && reach > 103.0) {
-    std::ostringstream least;
-    const double smallest = -std::log(scene.lme_tol) / (100.0 * 100.0), digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
-    least << std::setprecision(3) << std::ceil(smallest / digit) * digit;  // rounded up: the value printed is accepted
-    return fail("--lme-gamma", "too small for the support tolerance " + io::SceneReader::describe(scene.lme_tol) +
-                                   ": the support would reach beyond 100 cells; give at least " + least.str());
-  }
-  const StabilityLimits limits = request.dimension == 1 ? stability_limits<1>(scene) : stability_limits<2>(scene);
-  out << "dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,"
-         "highest_mode,cfl_limit,cfl_limit_from_modes,stress_update\n"
-      << std::setprecision(8) << request.dimension << "," << request.shape << "," << request.lme_gamma << ","
-      << request.integrator << "," << request.npc_velocity << "," << request.newmark_gamma << "," << request.flip_fraction
-      << "," << request.ppc << "," << request.poisson_ratio << "," << stability_cells(body) << "," << limits.unknowns << ","
-      << limits.highest_mode << "," << limits.cfl_limit << "," << limits.cfl_limit_from_modes << "," << request.stress_update << "\n";
-  return 0;
+  if (scene.shape == io::ShapeKind::lme && !lme_support_too_wide(scene.lme_gamma, scene.lme_tol).empty())
+    throw Refused("--lme-gamma: " + lme_support_too_wide(scene.lme_gamma, scene.lme_tol));
+  return scene;
+}
+
+/// `mpm stability`; returns the exit code.
+inline int stability_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+  StabilityRequest request;
+  StabilityBody body;
+  CommandParser app(
+      "stability",
+      "Prints CSV with the largest stable CFL (Eq. 42, c = sqrt(E / rho)) of a method: cfl_limit, from the spectral\n"
+      "radius of the code's own step linearised about rest on a uniform bar (1D) or square (2D) held at its walls,\n"
+      "and cfl_limit_from_modes, the one-mode analysis (2 for forward Euler and the Newmark average, "
+      "2/sqrt(3 - 2 gamma)\n"
+      "for Eq. 32) divided by the body's highest mode omega_max h / c (highest_mode); inf when no CFL up to 1000\n"
+      "is unstable.");
+  app.add_option("--shape", request.shape, "shape function")
+      ->check(one_of({"linear", "ugimp", "lme", "bspline2", "bspline3"}));
+  app.add_option("--integrator", request.integrator, "fe (forward Euler) | npc (the predictor-corrector)")
+      ->check(one_of({"fe", "npc"}));
+  app.add_option("--newmark-gamma", request.newmark_gamma, "Newmark gamma of npc")->check(number_in(0.0, 1.0));
+  app.add_option("--npc-velocity", request.npc_velocity, "npc's particle velocity: Eq. (32) or the Newmark average")
+      ->check(one_of({"eq32", "average"}));
+  app.add_option("--flip-fraction", request.flip_fraction, "forward Euler's PIC/FLIP blend")
+      ->check(number_in(0.0, 1.0));
+  app.add_option("--stress-update", request.stress_update, "forward Euler's stress update")
+      ->check(one_of({"usf", "usl", "musl"}));
+  app.add_option("--ppc", body.ppc, "particles per cell and axis")->check(whole_in(1, 4));
+  app.add_option("--lme-gamma", request.lme_gamma, "LME locality gamma")->check(positive());
+  app.add_option("--dim", body.dimension, "dimension")->check(whole_in(1, 2));
+  app.add_option("--poisson-ratio", body.poisson_ratio, "plane strain")->check(number_in(0.0, 0.5, true));
+  app.add_option("--cells", body.cells,
+                 "cells per axis, at most 1000 unknowns in all (0: max(16, 64 / ppc) in 1D, max(4, 8 / ppc) in 2D)")
+      ->check(whole_in(0, 256));
+  return run_parsed(app, arguments, out, err, [&] {
+    const io::Scene scene = stability_request_scene(request, body);
+    const StabilityLimits limits = body.dimension == 1 ? stability_limits<1>(scene) : stability_limits<2>(scene);
+    out << "dim,shape,lme_gamma,integrator,npc_velocity,newmark_gamma,flip_fraction,ppc,poisson_ratio,cells,unknowns,"
+           "highest_mode,cfl_limit,cfl_limit_from_modes,stress_update\n"
+        << std::setprecision(8) << body.dimension << "," << request.shape << "," << request.lme_gamma << ","
+        << request.integrator << "," << request.npc_velocity << "," << request.newmark_gamma << ","
+        << request.flip_fraction << "," << body.ppc << "," << body.poisson_ratio << "," << stability_cells(body) << ","
+        << limits.unknowns << "," << limits.highest_mode << "," << limits.cfl_limit << ","
+        << limits.cfl_limit_from_modes << "," << request.stress_update << "\n";
+    return 0;
+  });
 }
 
 TEST_CASE("mpm stability: linear shapes at 1 ppc, 2 for forward Euler and 2/sqrt(3 - 2 gamma) for Eq. (32), to 1e-3") {
@@ -156,8 +137,10 @@ TEST_CASE("mpm stability: linear shapes at 1 ppc, 2 for forward Euler and 2/sqrt
   };
   CHECK(limit_of({"--integrator", "fe"}) == doctest::Approx(2.0).epsilon(1e-3));
   CHECK(limit_of({"--integrator", "npc"}) == doctest::Approx(std::sqrt(2.0)).epsilon(1e-3));
-  CHECK(limit_of({"--integrator", "npc", "--newmark-gamma", "0.75"}) == doctest::Approx(2.0 / std::sqrt(1.5)).epsilon(1e-3));
-  CHECK(limit_of({"--integrator", "npc", "--newmark-gamma", "0.6", "--npc-velocity", "average"}) == doctest::Approx(2.0).epsilon(1e-3));
+  CHECK(limit_of({"--integrator", "npc", "--newmark-gamma", "0.75"}) ==
+        doctest::Approx(2.0 / std::sqrt(1.5)).epsilon(1e-3));
+  CHECK(limit_of({"--integrator", "npc", "--newmark-gamma", "0.6", "--npc-velocity", "average"}) ==
+        doctest::Approx(2.0).epsilon(1e-3));
   std::ostringstream out, err;
   CHECK(stability_command({"--newmark-gamma", "1.5"}, out, err) == 2);
   CHECK(err.str().find("--newmark-gamma") != std::string::npos);
@@ -167,15 +150,17 @@ TEST_CASE("mpm stability: linear shapes at 1 ppc, 2 for forward Euler and 2/sqrt
   CHECK(stability_command({"--lme-gamma", "50", "--shape", "lme"}, out, err) == 2);
   CHECK(stability_command({"--dim", "2", "--cells", "12"}, out, err) == 2);  // 1008 unknowns
   CHECK(out.str().empty());
-  for (const char* gamma : {"1e-3", "1e-12", "1e-18"}) {  // beyond 100 cells: refused at once, never out of memory or Newton
+  for (const char* gamma :
+       {"1e-3", "1e-12", "1e-18"}) {  // beyond 100 cells: refused at once, never out of memory or Newton
     std::ostringstream wide;
     CHECK(stability_command({"--shape", "lme", "--lme-gamma", gamma}, out, wide) == 2);
-    CHECK(wide.str() == "error: --lme-gamma: too small for the support tolerance 1e-06: the support would reach beyond 100 cells; "
-                        "give at least 0.00139\n");
+    CHECK(wide.str() ==
+          "error: --lme-gamma: too small for the support tolerance 1e-06: the support would reach beyond 100 cells; "
+          "give at least 0.00139\n");
   }
   CHECK(out.str().empty());
   std::ostringstream large;
-  CHECK(stability_command({"--lme-gamma", "1e-18"}, out, large) == 0);  // no LME: gamma unused
+  CHECK(stability_command({"--lme-gamma", "1e-18"}, out, large) == 0);                      // no LME: gamma unused
   CHECK(stability_command({"--shape", "lme", "--lme-gamma", "0.00139"}, out, large) == 0);  // the least it names
   // a Poisson ratio just below 0.5 reaches the body's scene as it is (at 6 digits it read 0.5, out of range)
   StabilityBody nearly_incompressible;
@@ -207,7 +192,8 @@ TEST_CASE("scene_cfl_limit: mpm run's warning limit for a scene, 1D and 2D, look
   CHECK(limit > 2.0 / std::sqrt(1.346) * 0.9);
 }
 
-TEST_CASE("moved_body_cfl_limit: a free end's node entering the quadratic B-spline's support drops USL's limit, not USF's or the cubic's") {
+TEST_CASE(
+    "moved_body_cfl_limit: a free end's node entering the quadratic B-spline's support drops USL's limit, not USF's or the cubic's") {
   // A free bar, 1 particle per cell at the cell centres, 2 margin cells beyond its free end at x = 0, held at x = 1:
   // the node at x = -h lies exactly 1.5 h from the end particle, where the quadratic B-spline vanishes. Moved outward
   // by 1e-6 h, that node enters the support with a mass of 5e-13 m_p, and USL's strain rate takes from it
@@ -228,12 +214,14 @@ TEST_CASE("moved_body_cfl_limit: a free end's node entering the quadratic B-spli
   const double moved = moved_body_cfl_limit<1>(quadratic_usl, -1e-6);
   CHECK(moved < 0.65);
   CHECK(moved > 0.55);
-  CHECK(moved_body_cfl_limit<1>(quadratic_usl, 1e-6) == doctest::Approx(1.0 / std::sqrt(2.0)).epsilon(2e-3));  // inward: no new node
+  CHECK(moved_body_cfl_limit<1>(quadratic_usl, 1e-6) ==
+        doctest::Approx(1.0 / std::sqrt(2.0)).epsilon(2e-3));  // inward: no new node
   CHECK(moved_body_cfl_limit<1>(scene("bspline2", "usf"), -1e-6) == doctest::Approx(2.0).epsilon(1e-2));
   CHECK(moved_body_cfl_limit<1>(scene("bspline2", "musl"), -1e-6) == doctest::Approx(2.0).epsilon(1e-2));
   CHECK(moved_body_cfl_limit<1>(scene("linear", "usl"), -1e-6) == doctest::Approx(1.0 / std::sqrt(2.0)).epsilon(2e-3));
   const io::Scene cubic_usl = scene("bspline3", "usl");
-  CHECK(moved_body_cfl_limit<1>(cubic_usl, -1e-6) == doctest::Approx(moved_body_cfl_limit<1>(cubic_usl, 0.0)).epsilon(1e-3));
+  CHECK(moved_body_cfl_limit<1>(cubic_usl, -1e-6) ==
+        doctest::Approx(moved_body_cfl_limit<1>(cubic_usl, 0.0)).epsilon(1e-3));
 }
 
 }  // namespace mpm::cli
