@@ -45,6 +45,7 @@ int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRe
   io::RunState state = io::RunState::failed;
   std::string failure;
   int code = 3;
+  bool cannot_write = false;  // then run.json likely cannot be written either: one `cannot write` line is enough
   try {
     io::RunWriter<Dim> writer(request.folder, scene, setup.observed);
     io::ExactWriter<Dim> monitor(request.folder, scene, setup.particles, writer);
@@ -59,6 +60,7 @@ int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRe
   } catch (const OutputFailure& error) {
     std::cerr << error.message() << "\n";
     failure = error.message();
+    cannot_write = true;
   } catch (const io::Interrupted& interrupted) {
     const char* name = interrupted.signal == SIGINT ? "SIGINT" : "SIGTERM";
     std::cerr << "interrupted: " << name << " at t = " << summary.final_time << " s; " << run_json << " says so\n";
@@ -70,7 +72,11 @@ int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRe
     io::write_run_json(run_json, scene, summary, state, failure, count, request.identity);
     throw;
   }
-  io::write_run_json(run_json, scene, summary, state, failure, count, request.identity);
+  try {
+    io::write_run_json(run_json, scene, summary, state, failure, count, request.identity);
+  } catch (const OutputFailure&) {
+    if (!cannot_write) throw;
+  }
   if (code != 0) return code;
   std::printf("%s: %ld steps to t = %g s, %d particles, %.3g s wall, %.3g particle-steps/s\nwrote %s\n",
               scene.title.c_str(), summary.steps, summary.final_time, count, summary.wall_seconds,
