@@ -5,6 +5,7 @@
 #   - a link where a file goes is refused (exit 2) before anything is written, its target untouched;
 #   - a particle file whose particles are too large for uGIMP is refused (exit 2, located at the row)
 #     before anything is written: a finished run in the same folder stays whole.
+#   - a folder deleted while the run writes: one `cannot write` line, exit 3.
 #   bash tests/cli_run_folder.sh build/bin/mpm
 set -u
 mpm=$1
@@ -88,6 +89,19 @@ for signal in TERM INT; do
   grep -q "\"failure\": \"stopped by SIG$signal\"" "$long/run.json" || fail "SIG$signal: run.json does not name the signal"
   tail -c 1 "$long/observers.csv" | od -c | grep -q '\\n' || fail "SIG$signal: observers.csv ends in the middle of a line"
 done
+
+# The folder deleted while the run writes: the next snapshot fails, one `cannot write` line, exit 3.
+gone=$work/gone
+"$mpm" run "$scene" --out "$gone" --set grid.cells=[4000] --set solver.end_time=1.0 \
+  --set 'output.snapshots=[0.0, 2.0e-5]' --max-steps 1e9 --force >/dev/null 2>"$work/err" &
+pid=$!
+for _ in $(seq 100); do [[ -s "$gone/snapshots.pvd" ]] && break; sleep 0.1; done
+rm -rf "$gone"
+wait $pid
+code=$?
+[[ $code -eq 3 && $(wc -l <"$work/err") -eq 1 ]] &&
+  grep -q "^error: $gone/snapshot_0001.csv: cannot write: " "$work/err" ||
+  fail "a folder deleted during the run: exit $code, $(cat "$work/err")"
 
 # --out that is not a folder: a file, a device, a link to nothing: exit 2, nothing written.
 touch "$work/afile"

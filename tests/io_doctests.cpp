@@ -14,7 +14,6 @@
 #include "mpm/cli/compare_command.hpp"
 #include "mpm/io/scene_budget.hpp"
 #include "mpm/io/particle_file.hpp"
-#include "mpm/io/json_writer.hpp"
 #include "mpm/io/output_file.hpp"
 #include "mpm/io/run_folder.hpp"
 #include "mpm/io/run_writer.hpp"

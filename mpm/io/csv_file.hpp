@@ -1,12 +1,7 @@
 /// \file
-/// The one reader of the project's text inputs (the CSV of `mpm compare`, the headers `mpm plot` reads, a
-/// body's particle file, the times file of `mpm exact`), bounded against hostile files:
-/// - regular files only: the path is examined before it is opened, so a FIFO, a device or a folder is
-///   refused at once (`FILE: not a regular file`) instead of blocking or filling the memory; the files of
-///   /proc and /sys (regular to stat, but endless or unreadable) are refused likewise;
-/// - lines of at most 1 MiB (LF or CR LF), a UTF-8 byte-order mark at the start skipped (spreadsheets write one);
-/// - blank lines and lines starting with # skipped; each line numbered, for `FILE:LINE: ...` errors;
-/// - the file read with read(2): a read error is a located message, never an exception.
+/// The one reader of text inputs (compare's CSV, the headers plot reads, particle files, times files), bounded:
+/// regular files only, refused at once otherwise (`FILE: not a regular file`); lines of at most 1 MiB (LF or CR LF);
+/// a UTF-8 byte-order mark skipped; blank and # lines skipped; errors as `FILE:LINE: ...`, never an exception.
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
@@ -21,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,21 +25,23 @@ namespace mpm::io {
 /// The longest line the readers accept (1 MiB).
 inline constexpr std::size_t longest_line = 1 << 20;
 
-/// Splits a CSV line at commas; each field trimmed of spaces and tabs and of one pair of surrounding double
-/// quotes; a line ending in a comma has an empty last field.
+/// `text` without its leading and trailing spaces and tabs.
+inline std::string trimmed(const std::string& text) {
+  const auto start = text.find_first_not_of(" \t");
+  return start == std::string::npos ? "" : text.substr(start, text.find_last_not_of(" \t") - start + 1);
+}
+
+/// Splits a CSV line at commas; each field trimmed, and of one pair of surrounding double quotes; a line ending
+/// in a comma has an empty last field.
 inline std::vector<std::string> csv_fields(const std::string& line) {
   std::vector<std::string> fields;
-  std::size_t begin = 0;
-  while (true) {
-    const std::size_t comma = line.find(',', begin);
-    std::string field = line.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
-    const auto start = field.find_first_not_of(" \t"), end = field.find_last_not_of(" \t");
-    field = start == std::string::npos ? "" : field.substr(start, end - start + 1);
+  std::istringstream in(line + ",");  // each field ends with a comma
+  for (std::string field; std::getline(in, field, ',');) {
+    field = trimmed(field);
     if (field.size() >= 2 && field.front() == '"' && field.back() == '"') field = field.substr(1, field.size() - 2);
     fields.push_back(field);
-    if (comma == std::string::npos) return fields;
-    begin = comma + 1;
   }
+  return fields;
 }
 
 /// Reads the whole of `text` as a finite number into `value`. Returns "" or what is wrong, after the quoted text:
@@ -56,7 +54,8 @@ inline std::string read_finite_number(const std::string& text, double& value) {
   errno = 0;
   const double read = std::strtod(text.c_str(), &end);
   const bool out_of_range = errno == ERANGE;
-  if (end != text.c_str() + text.size() || (!std::isfinite(read) && !out_of_range)) return quoted + "is not a finite number";
+  if (end != text.c_str() + text.size() || (!std::isfinite(read) && !out_of_range))
+    return quoted + "is not a finite number";
   if (out_of_range && std::abs(read) > 1.0) return quoted + "is too large (beyond 1.8e308)";
   if (out_of_range) return quoted + "is too small (below 2.2e-308 in magnitude, where doubles lose precision)";
   value = read;
@@ -66,53 +65,48 @@ inline std::string read_finite_number(const std::string& text, double& value) {
 /// Why the file of `status` (open as `descriptor`, or -1 when only the path was examined) is not a regular
 /// file; "" if it is one.
 inline std::string kind_refused(const struct stat& status, int descriptor) {
+  struct statfs system {};
   if (S_ISDIR(status.st_mode)) return "is a folder, not a regular file; give a file";
   if (S_ISFIFO(status.st_mode)) return "not a regular file (a FIFO)";
   if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode)) return "not a regular file (a device)";
   if (!S_ISREG(status.st_mode)) return "not a regular file";
-  struct statfs system {};
-  if (descriptor >= 0 && ::fstatfs(descriptor, &system) == 0 && (system.f_type == 0x9fa0 || system.f_type == 0x62656572))
-    return "not a regular file (a file of /proc or /sys)";
-  return "";
+  if (descriptor < 0 || ::fstatfs(descriptor, &system) != 0) return "";
+  const bool proc_or_sys = system.f_type == 0x9fa0 || system.f_type == 0x62656572;  // PROC_SUPER_MAGIC, SYSFS_MAGIC
+  return proc_or_sys ? "not a regular file (a file of /proc or /sys)" : "";
 }
 
-/// Opens `path` for reading if it is a regular file, examined before it is opened (a FIFO is never opened,
-/// so never waited on) and again once open. Returns the descriptor, or -1 with `error` set to
-/// `PATH: why` and `missing` true when the path names nothing.
+/// Opens `path` for reading if it is a regular file, examined before it is opened (a FIFO is never waited on)
+/// and again once open. Returns the descriptor, or -1 with `error` set to `PATH: why` and `missing` true when
+/// the path names nothing.
 inline int open_regular_file(const std::string& path, std::string& error, bool& missing) {
+  const auto refuse = [&](const std::string& why) {
+    error = path + ": " + why;
+    return -1;
+  };
   struct stat before {}, after {};
   if (::stat(path.c_str(), &before) != 0) {
     missing = errno == ENOENT;
-    error = path + (errno == ENOENT || errno == EACCES || errno == ENOTDIR ? ": cannot be read: no such file, or no permission"
-                                                                         : ": cannot be read: " + std::string(std::strerror(errno)));
-    return -1;
+    const bool absent = errno == ENOENT || errno == EACCES || errno == ENOTDIR;
+    return refuse("cannot be read: " + std::string(absent ? "no such file, or no permission" : std::strerror(errno)));
   }
-  if (std::string refused = kind_refused(before, -1); !refused.empty()) {
-    error = path + ": " + refused;
-    return -1;
-  }
+  if (const std::string why = kind_refused(before, -1); !why.empty()) return refuse(why);
   // O_NONBLOCK: should the path have become a FIFO since, opening it does not wait for a writer.
   const int descriptor = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-  if (descriptor < 0) {
-    error = path + ": cannot be read: " + std::strerror(errno);
-    return -1;
-  }
-  std::string refused;
-  if (::fstat(descriptor, &after) != 0 || after.st_ino != before.st_ino || after.st_dev != before.st_dev)
-    refused = "changed while it was opened";
-  else
-    refused = kind_refused(after, descriptor);
-  if (refused.empty()) return descriptor;
+  if (descriptor < 0) return refuse("cannot be read: " + std::string(std::strerror(errno)));
+  const bool same = ::fstat(descriptor, &after) == 0 && after.st_ino == before.st_ino && after.st_dev == before.st_dev;
+  const std::string why = same ? kind_refused(after, descriptor) : "changed while it was opened";
+  if (why.empty()) return descriptor;
   ::close(descriptor);
-  error = path + ": " + refused;
-  return -1;
+  return refuse(why);
 }
 
 /// A text file read line by line, as the file's comment says. Every reading call returns false at the end of
 /// the file or on a problem; error() then tells which ("" at the end), as `FILE: ...` or `FILE:LINE: ...`.
 class CsvFile {
  public:
-  explicit CsvFile(std::string path) : path_(std::move(path)) { open(); }
+  explicit CsvFile(std::string path) : path_(std::move(path)) {
+    descriptor_ = open_regular_file(path_, error_, missing_);
+  }
   CsvFile(const CsvFile&) = delete;
   CsvFile& operator=(const CsvFile&) = delete;
   ~CsvFile() {
@@ -131,10 +125,8 @@ class CsvFile {
   /// The next line that is neither blank nor a # comment, trimmed of spaces and tabs.
   bool next_line(std::string& line) {
     while (raw_line(line)) {
-      const auto start = line.find_first_not_of(" \t");
-      if (start == std::string::npos || line[start] == '#') continue;
-      line = line.substr(start, line.find_last_not_of(" \t") - start + 1);
-      return true;
+      line = trimmed(line);
+      if (!line.empty() && line[0] != '#') return true;
     }
     return false;
   }
@@ -159,10 +151,6 @@ class CsvFile {
   }
 
  private:
-  void open() {
-    descriptor_ = open_regular_file(path_, error_, missing_);
-  }
-
   /// The next byte, or -1 at the end of the file or on a read error (error_ set).
   int next_byte() {
     if (position_ == buffer_.size()) {

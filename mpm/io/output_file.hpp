@@ -1,18 +1,11 @@
 /// \file
-/// The one checked writer of the command: every file `mpm` writes goes through OutputFile.
-///
-/// - It is opened with O_NOFOLLOW: a symbolic link where the file should be is refused, never written
-///   through (a link planted in an output folder cannot redirect a write elsewhere).
-/// - Every write() is checked, and so are the last flush and the close: a full disk, a quota or a file
-///   size limit raises OutputFailure naming the file, never a silent short file.
-/// - OutputFile::atomic writes into a hidden temporary beside the file and renames it over the file at
-///   close(): a reader (or a run killed half-way) sees the old file or the whole new one, never a part.
-///   run.json and snapshots.pvd are written so.
+/// The one checked writer: every file `mpm` writes goes through OutputFile, opened with O_NOFOLLOW (never written
+/// through a symbolic link), every write, flush and close checked. An atomic OutputFile writes a hidden temporary
+/// and renames it over the file at close(): a reader, or a run killed half-way, sees the old file or the new one.
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
 #include <sys/resource.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -28,74 +21,37 @@
 
 namespace mpm::io {
 
-/// A stream buffer writing to a file descriptor, remembering the first failed write's errno.
-class DescriptorBuffer : public std::streambuf {
- public:
-  void attach(int descriptor) { descriptor_ = descriptor, setp(buffer_, buffer_ + sizeof buffer_); }
-  int error() const { return error_; }
-
- protected:
-  int_type overflow(int_type character) override {
-    if (!drain()) return traits_type::eof();
-    if (!traits_type::eq_int_type(character, traits_type::eof())) {
-      *pptr() = traits_type::to_char_type(character);
-      pbump(1);
-    }
-    return traits_type::not_eof(character);
-  }
-  int sync() override { return drain() ? 0 : -1; }
-
- private:
-  /// Writes the buffer out; false (and error_ set) if the descriptor took less than all of it.
-  bool drain() {
-    for (const char* next = pbase(); next < pptr();) {
-      const ssize_t written = descriptor_ < 0 ? -1 : ::write(descriptor_, next, static_cast<size_t>(pptr() - next));
-      if (written < 0 && errno == EINTR) continue;
-      if (written <= 0) {
-        if (error_ == 0) error_ = written < 0 ? errno : EIO;
-        setp(buffer_, buffer_ + sizeof buffer_);
-        return false;
-      }
-      next += written;
-    }
-    setp(buffer_, buffer_ + sizeof buffer_);
-    return true;
-  }
-  char buffer_[1 << 16];
-  int descriptor_ = -1;
-  int error_ = 0;
-};
-
-/// An output file: a std::ostream whose every failure raises OutputFailure(path) at the latest at close().
-class OutputFile : public std::ostream {
+/// An output file: a std::ostream (its own buffer, writing to a descriptor) whose every failure raises
+/// OutputFailure(path) at the latest at close().
+class OutputFile : private std::streambuf, public std::ostream {
  public:
   enum class Mode { direct, atomic };
 
   /// Creates (or truncates) `path`. \throws OutputFailure if it cannot be opened, or is a symbolic link.
-  explicit OutputFile(std::string path, Mode mode = Mode::direct) : std::ostream(&buffer_), path_(std::move(path)) {
-    written_path_ = mode == Mode::atomic ? temporary_path(path_) : path_;
+  explicit OutputFile(std::string path, Mode mode = Mode::direct)
+      : std::ostream(static_cast<std::streambuf*>(this)), path_(std::move(path)),
+        written_path_(mode == Mode::atomic ? temporary_path(path_) : path_) {
     if (mode == Mode::atomic) ::unlink(written_path_.c_str());  // a stale temporary of a killed run, or a link
     descriptor_ = ::open(written_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
-    if (descriptor_ < 0)
-      throw OutputFailure(path_, errno == ELOOP ? "it is a symbolic link (mpm writes through no link)" : std::strerror(errno));
-    buffer_.attach(descriptor_);
+    if (descriptor_ < 0 && errno == ELOOP)
+      throw OutputFailure(path_, "it is a symbolic link (mpm writes through no link)");
+    if (descriptor_ < 0) throw OutputFailure(path_, std::strerror(errno));
+    setp(buffer_, buffer_ + sizeof buffer_);
     precision(12);
   }
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;
-  /// An unfinished file (an exception on the way): what it holds is written out (a failed run keeps its
-  /// history up to the failure), an atomic file's temporary removed.
-  ~OutputFile() override {  // a failed close() leaves closed_ false: the temporary is removed here
+  /// An unfinished file (an exception on the way): a direct file keeps what it was given (a failed run keeps its
+  /// history up to the failure), an atomic file's temporary is removed.
+  ~OutputFile() override {
     if (!closed_ && written_path_ == path_) flush();
     if (descriptor_ >= 0) ::close(descriptor_);
-    if (written_path_ != path_ && !closed_) ::unlink(written_path_.c_str());
+    if (!closed_ && written_path_ != path_) ::unlink(written_path_.c_str());
   }
-
-  const std::string& path() const { return path_; }
 
   /// Raises the first write error so far. \throws OutputFailure.
   void check() {
-    if (buffer_.error() != 0 || fail()) throw OutputFailure(path_, std::strerror(buffer_.error() != 0 ? buffer_.error() : EIO));
+    if (error_ != 0 || fail()) throw OutputFailure(path_, std::strerror(error_ != 0 ? error_ : EIO));
   }
 
   /// Flushes, closes and (atomic) renames into place. \throws OutputFailure if any of it failed.
@@ -106,16 +62,11 @@ class OutputFile : public std::ostream {
     closed_ = true;
     const int descriptor = descriptor_;
     descriptor_ = -1;
-    if (::close(descriptor) != 0) {
-      const int error = errno;
-      if (written_path_ != path_) ::unlink(written_path_.c_str());
-      throw OutputFailure(path_, std::strerror(error));
-    }
-    if (written_path_ != path_ && std::rename(written_path_.c_str(), path_.c_str()) != 0) {
-      const int error = errno;
-      ::unlink(written_path_.c_str());
-      throw OutputFailure(path_, std::strerror(error));
-    }
+    if (::close(descriptor) == 0 && (written_path_ == path_ || std::rename(written_path_.c_str(), path_.c_str()) == 0))
+      return;
+    const int error = errno;
+    if (written_path_ != path_) ::unlink(written_path_.c_str());
+    throw OutputFailure(path_, std::strerror(error));
   }
 
   /// The hidden temporary of an atomic write: ".NAME.partial" beside NAME.
@@ -125,15 +76,40 @@ class OutputFile : public std::ostream {
   }
 
  private:
-  DescriptorBuffer buffer_;
+  using traits = std::streambuf::traits_type;
+  std::streambuf::int_type overflow(std::streambuf::int_type character) override {
+    if (!drain()) return traits::eof();
+    if (!traits::eq_int_type(character, traits::eof())) sputc(traits::to_char_type(character));
+    return traits::not_eof(character);
+  }
+  int sync() override { return drain() ? 0 : -1; }
+
+  /// Writes the buffer out; false, and error_ the first errno, if the file took less than all of it.
+  bool drain() {
+    const char* next = pbase();
+    while (next < pptr()) {
+      const ssize_t written = ::write(descriptor_, next, static_cast<size_t>(pptr() - next));
+      if (written < 0 && errno == EINTR) continue;
+      if (written <= 0) {
+        if (error_ == 0) error_ = written < 0 ? errno : EIO;
+        break;
+      }
+      next += written;
+    }
+    const bool whole = next == pptr();
+    setp(buffer_, buffer_ + sizeof buffer_);
+    return whole;
+  }
+
+  char buffer_[1 << 16];
   std::string path_, written_path_;
-  int descriptor_ = -1;
+  int descriptor_ = -1, error_ = 0;
   bool closed_ = false;
 };
 
 /// Writes `text` into `path` whole (atomically). \throws OutputFailure.
-inline void write_file(const std::string& path, const std::string& text, OutputFile::Mode mode = OutputFile::Mode::atomic) {
-  OutputFile out(path, mode);
+inline void write_file(const std::string& path, const std::string& text) {
+  OutputFile out(path, OutputFile::Mode::atomic);
   out << text;
   out.close();
 }
