@@ -34,18 +34,18 @@ inline void read_table(const SceneFile& file, SceneReader& root, const std::stri
   reader.reject_unknown_keys();
 }
 
-/// Reads every table of the array of tables `section` ([[body]]): `add` appends the entry each fills,
-/// `check(k)` checks entry k.
-template <class Add, class Check>
-void read_tables(const SceneFile& file, SceneReader& root, const std::string& section, Scene& scene, Add add,
-                 Check check) {
+/// Reads each table of the array of tables `section` ([[body]]) into a copy of `fresh` appended to `entries`
+/// (the scene's own list), then check(k) checks entry k.
+template <class Entry, class Check>
+void read_tables(const SceneFile& file, SceneReader& root, const std::string& section, Scene& scene,
+                 std::vector<Entry>& entries, const Entry& fresh, Check check) {
   if (!root.has(section)) return;
   const toml::array* array = file.table[section].as_array();
   if (!array || !array->is_array_of_tables())
     root.fail(section, "must be an array of tables: write [[" + section + "]]");
   for (size_t k = 0; k < array->size(); ++k) {
     SceneReader reader(file, *(*array)[k].as_table(), section + "[" + std::to_string(k) + "]");
-    add();
+    entries.push_back(fresh);
     read_keys(reader, section, scene, k);
     check(k);
     reader.reject_unknown_keys();
@@ -420,23 +420,21 @@ inline Scene read_scene(const SceneFile& file) {
   read_table(file, root, "grid", scene);
   check_grid(scene);
   read_table(file, root, "material", scene);
-  auto add_body = [&] {
-    scene.bodies.emplace_back();
-    scene.bodies.back().material = scene.material();  // a body's own material keys default to [material]'s
-  };
-  read_tables(file, root, "body", scene, add_body, [&](size_t k) { check_body(scene, k); });
+  BodySettings body;
+  body.material = scene.material();  // a body's own material keys default to [material]'s
+  read_tables(file, root, "body", scene, scene.bodies, body, [&](size_t k) { check_body(scene, k); });
   if (scene.bodies.empty()) root.fail("body", "the scene needs at least one [[body]]");
   check_bodies_apart(scene);
-  read_tables(file, root, "initial_velocity", scene, [&] { scene.initial_velocities.emplace_back(); }, [](size_t) {});
+  read_tables(file, root, "initial_velocity", scene, scene.initial_velocities, VelocityBox{}, [](size_t) {});
   auto check_fixed = [&](size_t k) {
     require(scene.dimension == 2 || scene.fixed[k].axis() == 0, scene, entry_key("fixed", k) + "face",
             "'" + name_of(scene.fixed[k].face) + "' is not allowed; use one of xmin | xmax");
   };
-  read_tables(file, root, "fixed", scene, [&] { scene.fixed.emplace_back(); }, check_fixed);
+  read_tables(file, root, "fixed", scene, scene.fixed, FixedSettings{}, check_fixed);
   read_table(file, root, "gravity", scene);
   read_table(file, root, "solver", scene);
   check_solver(file, scene);
-  read_tables(file, root, "observer", scene, [&] { scene.observers.emplace_back(); },
+  read_tables(file, root, "observer", scene, scene.observers, ObserverSettings{},
               [&](size_t k) { check_observer(scene, k); });
   read_table(file, root, "output", scene);
   check_output(scene);

@@ -61,6 +61,7 @@ class Formula {
     mu::Parser parser;
   };
 
+  /// A parser of the text with its variables bound to the storage of a fresh state; compiled by a first evaluation.
   std::unique_ptr<Compiled> compile() const {
     auto state = std::make_unique<Compiled>();
     mu::Parser& parser = state->parser;
