@@ -1,19 +1,14 @@
 /// \file
 /// A body's particles read from a CSV file (body.shape = "file", body.file = "PATH"): one particle per row,
-/// the columns found by name in the header line, any order, other columns ignored:
-///   x (and y in 2D)          reference position, m
-///   volume or mass           m^3 (1D: m, 2D: m^2, per unit area or thickness) or kg likewise; mass = density volume
-///   v_x (and v_y), optional  initial velocity, m/s (default: body.velocity)
-/// Each particle's half-length per axis is half the side of a square of its volume, l_p = V^(1/Dim) / 2
-/// (what uGIMP needs). The path is relative to the scene file's folder. Every row is validated: a located
-/// error `FILE:LINE: what` names the first bad one.
+/// columns found by name in the header, any order, others ignored: x (and y in 2D, m), volume (m^3 per unit
+/// area or thickness) or mass (kg likewise), optionally v_x (and v_y, m/s; default: body.velocity).
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,68 +19,56 @@ namespace mpm::io {
 /// One particle of a file: position, mass (kg per unit area or thickness) and velocity, both axes (y ignored in 1D).
 struct FileParticle {
   double x = 0.0, y = 0.0, mass = 0.0, v_x = 0.0, v_y = 0.0;
-  int line = 0;  ///< its row's line in the file, for the errors found later (a particle too large for uGIMP)
+  double half_length = 0.0;  ///< l_p = V^(1/Dim) / 2 per axis: half the side of a square of its volume (uGIMP's)
+  int line = 0;              ///< its row's line in the file, for errors found later (too large for uGIMP)
 };
 
 /// The most rows a particle file may hold.
 inline constexpr std::size_t most_file_particles = 1'000'000;
 
 /// Reads the particles of `path`; `default_velocity` where the file has no velocity columns. Returns an
-/// empty list with `error` ("PATH:LINE: ...") on a problem.
+/// empty list with `error` ("PATH:LINE: ...", the first bad row) on a problem.
 inline std::vector<FileParticle> read_particle_file(const std::string& path, int dimension, double density,
                                                     const std::vector<double>& default_velocity, std::string& error) {
   CsvFile file(path);
   if (!file.read_header()) {
-    error = file.error().empty() ? path + ": empty; a header line (x[,y],volume|mass[,v_x[,v_y]]) and one row per particle are needed"
-                                 : file.error();
+    error = file.error().empty()
+                ? path + ": empty; a header line (x[,y],volume|mass[,v_x[,v_y]]) and one row per particle are needed"
+                : file.error();
     return {};
   }
   const std::vector<std::string>& header = file.header();
-  int column_x = -1, column_y = -1, column_volume = -1, column_mass = -1, column_vx = -1, column_vy = -1;
-  for (int k = 0; k < static_cast<int>(header.size()); ++k) {
-    const std::string& name = header[k];
-    int* column = name == "x" ? &column_x : name == "y" ? &column_y : name == "volume" ? &column_volume : name == "mass" ? &column_mass
-                : name == "v_x" ? &column_vx : name == "v_y" ? &column_vy : nullptr;
-    if (column && *column >= 0) {
-      error = file.where() + "column '" + name + "' appears twice";
-      return {};
-    }
-    if (column) *column = k;
+  auto need = [&](bool holds, const std::string& what) {
+    if (!holds && error.empty()) error = file.where() + what;
+  };
+  const std::vector<std::string> names{"x", "y", "volume", "mass", "v_x", "v_y"};
+  std::vector<int> column;  // of each name, -1 where the header lacks it
+  for (const std::string& name : names) {
+    const auto first = std::find(header.begin(), header.end(), name);
+    const bool twice = first != header.end() && std::find(first + 1, header.end(), name) != header.end();
+    need(!twice, "column '" + name + "' appears twice");
+    column.push_back(first == header.end() ? -1 : static_cast<int>(first - header.begin()));
   }
-  if (column_x < 0 || (dimension == 2 && column_y < 0)) error = file.where() + "the header needs the columns x" + (dimension == 2 ? " and y" : "");
-  else if ((column_volume < 0) == (column_mass < 0)) error = file.where() + "the header needs one of the columns volume or mass";
-  else if (dimension == 2 && (column_vx < 0) != (column_vy < 0)) error = file.where() + "give both v_x and v_y, or neither";
-  if (!error.empty()) return {};
+  if (dimension == 1) column[1] = column[5] = -1;  // y and v_y ignored
+  need(column[0] >= 0 && (dimension == 1 || column[1] >= 0),
+       dimension == 2 ? "the header needs the columns x and y" : "the header needs the columns x");
+  need((column[2] < 0) != (column[3] < 0), "the header needs one of the columns volume or mass");
+  need(dimension == 1 || (column[4] < 0) == (column[5] < 0), "give both v_x and v_y, or neither");
   std::vector<FileParticle> particles;
-  for (std::vector<std::string> fields; file.next_row(fields);) {
-    const std::string where = file.where();
-    auto number_at = [&](int column, double& value) {
-      if (column < 0) return true;
-      const std::string wrong = read_finite_number(fields[column], value);
-      if (!wrong.empty()) error = where + header[column] + ": " + wrong;
-      return wrong.empty();
-    };
-    FileParticle particle;
-    particle.line = file.line();
-    particle.v_x = default_velocity.at(0), particle.v_y = dimension == 2 ? default_velocity.at(1) : 0.0;
-    double volume = 0.0;
-    if (!number_at(column_x, particle.x) || !number_at(dimension == 2 ? column_y : -1, particle.y) ||
-        !number_at(column_volume, volume) || !number_at(column_mass, particle.mass) || !number_at(column_vx, particle.v_x) ||
-        !number_at(dimension == 2 ? column_vy : -1, particle.v_y))
-      return {};
-    if (column_volume >= 0) particle.mass = density * volume;
-    if (!(particle.mass > 0.0)) {
-      error = where + (column_volume >= 0 ? "volume" : "mass") + ": must be > 0";
-      return {};
+  for (std::vector<std::string> fields; error.empty() && file.next_row(fields);) {
+    double value[6] = {0.0, 0.0, 0.0, 0.0, default_velocity.at(0), dimension == 2 ? default_velocity.at(1) : 0.0};
+    for (int c = 0; c < 6; ++c) {
+      const std::string wrong = column[c] < 0 ? "" : read_finite_number(fields[column[c]], value[c]);
+      need(wrong.empty(), names[c] + ": " + wrong);
     }
-    if (particles.size() == most_file_particles) {
-      error = where + "more than 1000000 particles";
-      return {};
-    }
-    particles.push_back(particle);
+    const double mass = column[2] >= 0 ? density * value[2] : value[3];
+    need(mass > 0.0, names[column[2] >= 0 ? 2 : 3] + ": must be > 0");
+    need(particles.size() < most_file_particles, "more than 1000000 particles");
+    const double half_length = 0.5 * std::pow(mass / density, 1.0 / dimension);
+    particles.push_back({value[0], value[1], mass, value[4], value[5], half_length, file.line()});
   }
-  if (!file.error().empty()) error = file.error();
-  else if (particles.empty()) error = path + ": holds no particle";
+  if (error.empty() && !file.error().empty()) error = file.error();
+  else if (error.empty() && particles.empty()) error = path + ": holds no particle";
   return error.empty() ? particles : std::vector<FileParticle>{};
 }
 

@@ -1,20 +1,7 @@
 /// \file
-/// Smooth data in scenes: an initial velocity and stress given as formulas of position, a body
-/// force as a formula of position and time, compiled by muParser; and named constants.
-///
-///     [constants]          # usable in every formula; a value is a number or a formula of other constants
-///     L = 1.0
-///     V = "1e-6 * L * omega"
-///     [initial_field]      # formulas of the position at t = 0: x, X (and y, Y in 2D)
-///     velocity = ["V * cos(pi * X / (2 * L))"]          # one per axis
-///     stress = ["0"]                                    # 1D: xx; 2D: xx, yy, xy
-///     [body_force]         # per unit mass, added to [gravity]: formulas of x, X (y, Y) and t
-///     acceleration = ["0"]                              # one per axis
-///
-/// x, y name the current position of a particle, X, Y its position at t = 0, t the time. Every
-/// formula also knows pi and the material's young_modulus, poisson_ratio and density. A formula
-/// that does not compile, names an unknown variable, or gives a non-finite value at a particle at
-/// seeding is a scene error (`error: FILE:LINE: KEY: ...`, exit 2).
+/// Smooth data in scenes, compiled by muParser: [constants] (numbers, or formulas of other constants), the
+/// [initial_field] velocity and stress (formulas of x, X and y, Y in 2D) and the [body_force] acceleration (also
+/// of t). Every formula knows pi and the material's young_modulus, poisson_ratio and density.
 #pragma once
 #include <doctest/doctest.h>
 #include <muParser.h>
@@ -33,20 +20,10 @@
 
 namespace mpm::io {
 
-/// Names a formula may use besides the scene's constants.
+/// Names a formula may use besides pi and the scene's constants: x, X (y, Y in 2D; none for dimension 0), t.
 struct FormulaVariables {
   int dimension = 1;
   bool time = false;  ///< t is known (body force only)
-
-  std::vector<std::string> names() const {
-    std::vector<std::string> list;
-    if (dimension >= 1) list.push_back("x");
-    if (dimension == 2) list.push_back("y");
-    if (dimension >= 1) list.push_back("X");
-    if (dimension == 2) list.push_back("Y");
-    if (time) list.push_back("t");
-    return list;
-  }
 };
 
 /// One formula, compiled by muParser with the variables x, y, X, Y, t and the given constants.
@@ -84,6 +61,7 @@ class Formula {
     mu::Parser parser;
   };
 
+  /// A parser of the text with its variables bound to the storage of a fresh state; compiled by a first evaluation.
   std::unique_ptr<Compiled> compile() const {
     auto state = std::make_unique<Compiled>();
     mu::Parser& parser = state->parser;
@@ -98,7 +76,8 @@ class Formula {
     parser.SetExpr(text_);
     int results = 0;
     parser.Eval(results);  // muParser parses on the first evaluation: syntax errors surface here
-    if (results != 1) throw mu::Parser::exception_type("a formula gives one value; this one gives " + std::to_string(results));
+    if (results != 1)
+      throw mu::Parser::exception_type("a formula gives one value; this one gives " + std::to_string(results));
     return state;
   }
 
@@ -124,17 +103,16 @@ struct FormulaList {
   std::vector<double> at(const double* position, const double* reference_position, double time, int particle_id,
                          int dimension) const {
     std::vector<double> values;
-    for (size_t k = 0; k < components.size(); ++k) {
-      values.push_back(components[k](position, reference_position, time));
-      if (!std::isfinite(values.back())) {
-        std::ostringstream what;
-        what.precision(9);
-        what << "'" << components[k].text() << "' is " << values.back() << " at particle " << particle_id << " (X = "
-             << reference_position[0];
-        if (dimension == 2) what << ", Y = " << reference_position[1];
-        what << ") at t = " << time << "; a formula must be finite at every particle";
-        throw SceneError(source.file, source.line, source.key, what.str());
-      }
+    for (const Formula& component : components) {
+      values.push_back(component(position, reference_position, time));
+      if (std::isfinite(values.back())) continue;
+      std::ostringstream what;
+      what.precision(9);
+      what << "'" << component.text() << "' is " << values.back() << " at particle " << particle_id
+           << " (X = " << reference_position[0];
+      if (dimension == 2) what << ", Y = " << reference_position[1];
+      what << ") at t = " << time << "; a formula must be finite at every particle";
+      throw SceneError(source.file, source.line, source.key, what.str());
     }
     return values;
   }
@@ -148,126 +126,108 @@ struct SceneFormulas {
 
 namespace detail {
 
-inline bool is_name(const std::string& name) {
-  if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
-  for (char character : name)
-    if (!(std::isalnum(static_cast<unsigned char>(character)) || character == '_')) return false;
-  return true;
-}
-
-/// Names a constant may not take: the variables, pi and muParser's functions.
-inline bool is_reserved(const std::string& name) {
-  static const std::vector<std::string> reserved{
-      "x", "y", "X", "Y", "t", "pi", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "asinh",
-      "acosh", "atanh", "log2", "log10", "log", "ln", "exp", "sqrt", "sign", "rint", "abs", "min", "max", "sum", "avg"};
-  return std::find(reserved.begin(), reserved.end(), name) != reserved.end();
-}
-
-inline std::string known_names(const std::map<std::string, double>& constants, const FormulaVariables& variables) {
-  std::string list;
-  for (const auto& name : variables.names()) list += name + ", ";
-  list += "pi";
-  for (const auto& [name, value] : constants) list += ", " + name;
-  return list;
+/// The table `key`, or an empty one when the scene has none (its required keys are then refused by name).
+inline const toml::table& table_or_empty(const SceneFile& file, SceneReader& root, const std::string& key) {
+  static const toml::table empty;
+  if (!root.has(key)) return empty;
+  const toml::table* table = file.table[key].as_table();
+  if (!table) root.fail(key, "must be a table: write [" + key + "]");
+  return *table;
 }
 
 /// muParser's complaint, made to name what is known when the formula uses an unknown name.
 inline std::string formula_problem(const mu::Parser::exception_type& error, const std::string& text,
                                    const std::map<std::string, double>& constants, const FormulaVariables& variables) {
   std::string what = "'" + text + "': " + error.GetMsg();
-  if (error.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
-    what += " (unknown name; known here: " + known_names(constants, variables) + ")";
-  return what;
+  if (error.GetCode() != mu::ecUNASSIGNABLE_TOKEN) return what;
+  what += std::string(" (unknown name; known here: ") +
+          (variables.dimension == 2 ? "x, y, X, Y, " : variables.dimension == 1 ? "x, X, " : "") +
+          (variables.time ? "t, " : "") + "pi";
+  for (const auto& [name, value] : constants) what += ", " + name;
+  return what + ")";
 }
 
-inline FormulaSource source_of(const SceneFile& file, const toml::table& table, const std::string& prefix, const std::string& key) {
-  const std::string full = prefix + "." + key;
-  if (auto override = file.overridden.find(full); override != file.overridden.end()) return {override->second, 1, full};
-  const toml::node* node = table.get(key);
-  return {file.path, node ? line_of(*node) : line_of(table), full};
-}
-
-/// Reads `key` of `reader`'s table: an array of `size` formulas (strings) or numbers.
-inline std::optional<FormulaList> read_formula_list(const SceneFile& file, const toml::table& table, SceneReader& reader,
-                                                    const std::string& prefix, const std::string& key, int size,
-                                                    const std::string& size_text, const std::map<std::string, double>& constants,
+/// `key` of `reader`'s table, an array of `size` formulas (in quotes) or numbers; nothing when absent.
+inline std::optional<FormulaList> read_formula_list(SceneReader& reader, const std::string& key, int size,
+                                                    const std::string& size_text,
+                                                    const std::map<std::string, double>& constants,
                                                     FormulaVariables variables) {
-  if (!reader.has(key)) return std::nullopt;
-  const toml::array* array = table.get(key)->as_array();
+  const toml::node* node = reader.node(key);
+  if (!node) return std::nullopt;
+  const toml::array* array = node->as_array();
   if (!array) reader.fail(key, "must be an array of formulas in quotes, e.g. [\"sin(pi * x)\"]");
   if (static_cast<int>(array->size()) != size)
-    reader.fail(key, "has " + std::to_string(array->size()) + " entries; needs " + std::to_string(size) + " (" + size_text + ")");
-  FormulaList list;
-  list.source = source_of(file, table, prefix, key);
+    reader.fail(key, "has " + std::to_string(array->size()) + " entries; needs " + std::to_string(size) + " (" +
+                         size_text + ")");
+  const auto [file, line] = reader.location(key);
+  FormulaList list{{}, {file, line, reader.full(key)}};
   for (const auto& entry : *array) {
-    std::string text;
-    if (entry.is_string()) {
-      text = *entry.value<std::string>();
-    } else if (entry.is_floating_point() || entry.is_integer()) {
-      std::ostringstream number;
-      number.precision(17);
-      number << *entry.value<double>();
-      text = number.str();
-    } else {
-      reader.fail(key, "entries must be formulas in quotes or numbers");
-    }
+    std::ostringstream text;  // a number written as a formula, to 17 digits
+    text.precision(17);
+    if (entry.is_string()) text << *entry.value<std::string>();
+    else if (entry.is_floating_point() || entry.is_integer()) text << *entry.value<double>();
+    else reader.fail(key, "entries must be formulas in quotes or numbers");
     try {
-      list.components.emplace_back(text, constants, variables);
+      list.components.emplace_back(text.str(), constants, variables);
     } catch (const mu::Parser::exception_type& error) {
-      reader.fail(key, formula_problem(error, text, constants, variables));
+      reader.fail(key, formula_problem(error, text.str(), constants, variables));
     }
   }
   return list;
 }
 
-/// [constants]: numbers, or formulas of other constants, resolved in whatever order they allow.
-inline std::map<std::string, double> read_constants(const SceneFile& file, SceneReader& root, std::map<std::string, double> known) {
-  if (!root.has("constants")) return known;
-  const toml::table* table = file.table["constants"].as_table();
-  if (!table) root.fail("constants", "must be a table: write [constants]");
-  SceneReader reader(file, *table, "constants");
+/// [constants]: numbers, or formulas of other constants, resolved in whatever order they allow, beside the
+/// predefined constants `known`.
+inline std::map<std::string, double> read_constants(const SceneFile& file, SceneReader& root,
+                                                    std::map<std::string, double> known) {
+  const toml::table& table = table_or_empty(file, root, "constants");
+  SceneReader reader(file, table, "constants");
+  const std::string variables[] = {"x", "y", "X", "Y", "t", "pi"};
   std::map<std::string, std::string> pending;
-  for (const auto& [key, node] : *table) {
+  for (const auto& [key, node] : table) {
     const std::string name(key.str());
-    reader.has(name);
-    if (!is_name(name)) reader.fail(name, "a constant's name is letters, digits and _, starting with a letter or _");
-    if (is_reserved(name) || known.count(name)) reader.fail(name, "'" + name + "' is a variable, function or predefined constant; choose another name");
-    if (node.is_floating_point() || node.is_integer()) {
-      known[name] = *node.value<double>();
-      if (!std::isfinite(known[name])) reader.fail(name, "must be finite");
-    } else if (node.is_string()) {
+    if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])) ||
+        name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
+      reader.fail(name, "a constant's name is letters, digits and _, starting with a letter or _");
+    if (known.count(name) || mu::Parser().GetFunDef().count(name) || std::count(variables, variables + 6, name))
+      reader.fail(name, "'" + name + "' is a variable, function or predefined constant; choose another name");
+    if (node.is_string()) {
       pending[name] = *node.value<std::string>();
-    } else {
-      reader.fail(name, "must be a number or a formula in quotes");
+      continue;
     }
+    if (!node.is_floating_point() && !node.is_integer()) reader.fail(name, "must be a number or a formula in quotes");
+    known[name] = *node.value<double>();
+    if (!std::isfinite(known[name])) reader.fail(name, "must be finite");
   }
   const FormulaVariables none{0, false};
-  while (!pending.empty()) {  // each pass resolves every constant whose constants are known
-    bool progress = false;
+  for (bool progress = true; progress;) {  // each pass resolves every constant whose constants are known
+    progress = false;
     for (auto entry = pending.begin(); entry != pending.end();) {
+      double value = 0.0;
       try {
-        const double value = Formula(entry->second, known, none)(nullptr, nullptr, 0.0);
-        if (!std::isfinite(value)) reader.fail(entry->first, "'" + entry->second + "' is not finite");
-        known[entry->first] = value;
-        entry = pending.erase(entry);
-        progress = true;
+        value = Formula(entry->second, known, none)(nullptr, nullptr, 0.0);
       } catch (const mu::Parser::exception_type&) {
         ++entry;
+        continue;
       }
-    }
-    if (!progress) {  // what is left does not compile, names an unknown constant, or is a cycle
-      for (int pass = 0; pass < 2; ++pass)  // first a constant whose problem is not another pending constant
-        for (const auto& [name, text] : pending) {
-          try {
-            Formula(text, known, none);
-          } catch (const mu::Parser::exception_type& error) {
-            if (pass == 0 && pending.count(error.GetToken())) continue;
-            reader.fail(name, pass == 0 ? formula_problem(error, text, known, none)
-                                        : "'" + text + "': the constants refer to each other in a cycle");
-          }
-        }
+      if (!std::isfinite(value)) reader.fail(entry->first, "'" + entry->second + "' is not finite");
+      known[entry->first] = value;
+      entry = pending.erase(entry);
+      progress = true;
     }
   }
+  // What is left does not compile, names an unknown constant, or is a cycle: first blamed is a constant
+  // whose problem is not another pending constant.
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& [name, text] : pending) {
+      try {
+        Formula(text, known, none);
+      } catch (const mu::Parser::exception_type& error) {
+        if (pass == 0 && pending.count(error.GetToken())) continue;
+        reader.fail(name, pass == 0 ? formula_problem(error, text, known, none)
+                                    : "'" + text + "': the constants refer to each other in a cycle");
+      }
+    }
   return known;
 }
 
@@ -280,25 +240,17 @@ inline SceneFormulas read_scene_formulas(const SceneFile& file, SceneReader& roo
   SceneFormulas formulas;
   formulas.constants = detail::read_constants(
       file, root, {{"young_modulus", young_modulus}, {"poisson_ratio", poisson_ratio}, {"density", density}});
+  const std::map<std::string, double>& constants = formulas.constants;
   const std::string axes = dimension == 1 ? "x" : "x, y";
-  const std::string stress_components = dimension == 1 ? "xx" : "xx, yy, xy";
-  const int stress_size = dimension == 1 ? 1 : 3;
-  for (const std::string name : {"initial_field", "body_force"}) {
-    if (!root.has(name)) continue;
-    const toml::table* table = file.table[name].as_table();
-    if (!table) root.fail(name, "must be a table: write [" + name + "]");
-    SceneReader reader(file, *table, name);
-    if (name == "initial_field") {
-      const FormulaVariables variables{dimension, false};
-      formulas.initial_velocity = detail::read_formula_list(file, *table, reader, name, "velocity", dimension, axes, formulas.constants, variables);
-      formulas.initial_stress = detail::read_formula_list(file, *table, reader, name, "stress", stress_size, stress_components,
-                                                          formulas.constants, variables);
-    } else {
-      formulas.body_force = detail::read_formula_list(file, *table, reader, name, "acceleration", dimension, axes, formulas.constants,
-                                                      FormulaVariables{dimension, true});
-    }
-    reader.reject_unknown_keys();
-  }
+  SceneReader field(file, detail::table_or_empty(file, root, "initial_field"), "initial_field");
+  formulas.initial_velocity =
+      detail::read_formula_list(field, "velocity", dimension, axes, constants, {dimension, false});
+  formulas.initial_stress = detail::read_formula_list(field, "stress", dimension == 1 ? 1 : 3,
+                                                      dimension == 1 ? "xx" : "xx, yy, xy", constants, {dimension, false});
+  field.reject_unknown_keys();
+  SceneReader force(file, detail::table_or_empty(file, root, "body_force"), "body_force");
+  formulas.body_force = detail::read_formula_list(force, "acceleration", dimension, axes, constants, {dimension, true});
+  force.reject_unknown_keys();
   return formulas;
 }
 
@@ -317,24 +269,24 @@ BodyForceField<Dim> body_force_field(const SceneFormulas& formulas) {
 /// [body_force] is finite at every particle at t = 0 and at the end time.
 /// \throws SceneError naming the key of a formula that is not finite at a particle.
 template <int Dim>
-void apply_scene_formulas(const SceneFormulas& formulas, const std::vector<LinearElastic>& materials, double end_time, Particles<Dim>& particles) {
+void apply_scene_formulas(const SceneFormulas& formulas, const std::vector<LinearElastic>& materials, double end_time,
+                          Particles<Dim>& particles) {
   auto at = [&](const FormulaList& list, int p, double time) {
     return list.at(particles.position[p].data(), particles.reference_position[p].data(), time, particles.id[p], Dim);
   };
-  if (formulas.initial_velocity)
-    for (int p = 0; p < particles.size(); ++p) particles.velocity[p] = Eigen::Map<const Vector<Dim>>(at(*formulas.initial_velocity, p, 0.0).data());
-  if (formulas.initial_stress) {
-    std::vector<Matrix<Dim>> stress(particles.size());
-    for (int p = 0; p < particles.size(); ++p) {
-      const std::vector<double> value = at(*formulas.initial_stress, p, 0.0);
-      if constexpr (Dim == 1) stress[p](0, 0) = value[0];
-      else stress[p] << value[0], value[2], value[2], value[1];
-    }
-    int next = 0;  // set_initial_stress visits the particles in order
-    set_initial_stress<Dim>([&](const Vector<Dim>&) { return stress[next++]; }, materials, particles);
-  }
-  if (formulas.body_force)
-    for (int p = 0; p < particles.size(); ++p) at(*formulas.body_force, p, 0.0), at(*formulas.body_force, p, end_time);
+  for (int p = 0; formulas.initial_velocity && p < particles.size(); ++p)
+    particles.velocity[p] = Eigen::Map<const Vector<Dim>>(at(*formulas.initial_velocity, p, 0.0).data());
+  int next = 0;  // set_initial_stress visits the particles in order
+  auto stress = [&](const Vector<Dim>&) {
+    const std::vector<double> value = at(*formulas.initial_stress, next++, 0.0);
+    Matrix<Dim> sigma;
+    if constexpr (Dim == 1) sigma << value[0];
+    else sigma << value[0], value[2], value[2], value[1];
+    return sigma;
+  };
+  if (formulas.initial_stress) set_initial_stress<Dim>(stress, materials, particles);
+  for (int p = 0; formulas.body_force && p < particles.size(); ++p)
+    at(*formulas.body_force, p, 0.0), at(*formulas.body_force, p, end_time);
 }
 
 TEST_CASE("Scene formulas: constants, a formula against a hand value, each bad formula names its key and line") {
