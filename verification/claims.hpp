@@ -32,6 +32,66 @@ inline bool hard_claims_hold(const std::vector<Claim>& claims) {
   return true;
 }
 
+/// One place of a study a claim is evaluated at (a run, or the pair of runs it compares): where it is, the
+/// value measured there and whether the claim holds there.
+struct Sample {
+  std::string where;  ///< "linear, 640 cells, CFL 0.5"
+  double value = 0.0;
+  bool holds = false;
+};
+
+/// A claim evaluated on every place of its study, so that the report says where it holds and where it fails,
+/// never "holds" over a chosen subset. A stopped run is its own outcome: a sample whose `where` says so.
+struct DomainClaim {
+  std::string statement;         ///< what is claimed, in words
+  std::string measure;           ///< what each sample measures, with the threshold: "RMS_NPC / RMS_FE < 1"
+  std::vector<Sample> samples;   ///< every place of the study
+  bool hard = false;             ///< a theory bound: failing it anywhere fails the suite
+
+  void add(const std::string& where, double value, bool holds) { samples.push_back({where, value, holds}); }
+  std::size_t holding() const {
+    std::size_t count = 0;
+    for (const Sample& sample : samples) count += sample.holds;
+    return count;
+  }
+  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "no samples"
+  std::string verdict() const {
+    const std::size_t n = samples.size(), k = holding();
+    if (n == 0) return "no samples";
+    if (k == n) return "holds on all " + std::to_string(n);
+    if (k == 0) return "fails on all " + std::to_string(n);
+    return "holds on " + std::to_string(k) + " of " + std::to_string(n);
+  }
+};
+
+/// The samples where a claim holds (holds = true) or fails, as "where (value)" joined by "; ", "-" if none.
+inline std::string places(const DomainClaim& claim, bool holds, const char* format = "%.4g") {
+  std::string text;
+  for (const Sample& sample : claim.samples) {
+    if (sample.holds != holds) continue;
+    char value[64];
+    std::snprintf(value, sizeof value, format, sample.value);
+    text += (text.empty() ? "" : "; ") + sample.where + " (" + value + ")";
+  }
+  return text.empty() ? "-" : text;
+}
+
+/// A Markdown table of claims over their domains: | claim | measure | holds on | fails on | verdict |.
+inline void write_domain_claims(std::ostream& out, const std::vector<DomainClaim>& claims) {
+  out << "| claim | measure | holds on | fails on | verdict |\n|---|---|---|---|---|\n";
+  for (const DomainClaim& claim : claims)
+    out << "| " << claim.statement << (claim.hard ? " *(hard check)*" : "") << " | " << claim.measure << " | "
+        << places(claim, true) << " | " << places(claim, false) << " | **" << claim.verdict() << "** |\n";
+  out << "\n";
+}
+
+/// True when every hard claim holds on every sample (and has at least one).
+inline bool hard_claims_hold(const std::vector<DomainClaim>& claims) {
+  for (const DomainClaim& claim : claims)
+    if (claim.hard && (claim.samples.empty() || claim.holding() != claim.samples.size())) return false;
+  return true;
+}
+
 /// printf-style formatting of one number, for the report.
 inline std::string number(double value, const char* format = "%.4g") {
   char text[64];
