@@ -18,6 +18,7 @@
 #include "mpm/cli/run_command.hpp"
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/cli/stability_command.hpp"
+#include "mpm/cli/study_command.hpp"
 #include "mpm/io/scene_keys.hpp"
 
 #include <cstdlib>
@@ -76,7 +77,7 @@ inline std::string scene_keys_markdown() {
 /// `mpm --help`
 inline std::string main_help() {
   return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") +
-         run_usage() + "\n" + exact_usage() + "\n" + compare_usage() + "\n" + shape_usage() + "\n" + plot_usage() + "\n" + stability_usage() + "\n" +
+         run_usage() + "\n" + exact_usage() + "\n" + compare_usage() + "\n" + shape_usage() + "\n" + plot_usage() + "\n" + stability_usage() + "\n" + study_usage() + "\n" +
          "usage: mpm --version\n  Prints the version (git describe at build time).\n\n" + scene_keys_help() + "\n" + exit_codes;
 }
 
@@ -86,6 +87,7 @@ inline std::string command_help(const std::string& command) {
   if (command == "shape") return shape_usage() + "\n" + exit_codes;
   if (command == "plot") return plot_usage() + "\n" + exit_codes;
   if (command == "stability") return stability_usage() + "\n" + exit_codes;
+  if (command == "study") return study_usage();
   if (command == "exact") return exact_usage() + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
   if (command == "compare") return compare_usage();
   return main_help();
