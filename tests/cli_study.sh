@@ -60,6 +60,19 @@ grep -q '^usl,rms_at_t,,,,0,0 finite points; a fit needs 3 at least$' "$fits" ||
 "$mpm" study "$work/tiny.toml" --out "$work/out" --jobs 1 >/dev/null 2>&1 || fail "a second study into the same folder"
 [[ $(wc -l <"$csv") -eq 7 ]] || fail "second study.csv: $(wc -l <"$csv") lines"
 
+# A case stopped by energy growth (forward Euler beyond its CFL limit 2): its own outcome with why, no score
+cat >"$work/unstable.toml" <<TOML
+scene = "$scenes/dyka_bar.toml"
+[set]
+solver.end_time = 2.0e-5
+output.snapshots = []
+[axes]
+solver.cfl = [2.5]
+TOML
+"$mpm" study "$work/unstable.toml" --out "$work/unstable" >/dev/null 2>"$work/stderr" || fail "unstable study: $(cat "$work/stderr")"
+row=$(sed -n 2p "$work/unstable/study.csv")
+[[ $row == 0,2.5,stopped,,,[0-9]*,unstable:\ energy\ grew\ to* ]] || fail "a stopped case: $row"
+
 # Bad study files: exit 2, one line naming FILE:LINE: KEY, nothing on stdout, nothing written
 bad() {  # bad PATTERN STUDY_TEXT
   printf '%s\n' "$2" >"$work/bad.toml"

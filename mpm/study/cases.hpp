@@ -85,12 +85,11 @@ inline std::optional<double> score_with_compare(const std::string& program, cons
   return score;
 }
 
-/// The measures of a finished run in `folder` (status done): steps, energy drift and the two scores of observer
+/// The measures of a finished run in `folder` (status done): the two scores of observer
 /// `observer` (none when `scored` is false: the scene has no exact solution).
 inline void measure_run(const std::string& program, const std::string& scene, const Case& one, const std::string& folder,
                         const toml::table& resolved, const std::string& observer, bool scored, CaseResult& result) {
   std::string error;
-  result.energy_drift = energy_drift(folder + "/energy.csv", error);
   if (!scored || observer.empty()) return;
   const std::string json = io::read_scene_text(folder + "/run.json");
   const auto at = observer_reference(json, observer);
@@ -138,6 +137,8 @@ inline CaseResult run_case(const std::string& program, const std::string& scene,
   else if (run.exit_code == 2) result.status = "refused", result.why = reason_line(run.err);
   else if (run.exit_code == 3 && failure && failure->find("energy grew") != std::string::npos) result.status = "stopped", result.why = *failure;
   else result.why = failure ? *failure : reason_line(run.err).empty() ? "exit " + std::to_string(run.exit_code) : reason_line(run.err);
+  std::string error;
+  if (result.status != "refused") result.energy_drift = energy_drift(folder + "/energy.csv", error);  // a stopped run's growth too
   if (result.status == "done") measure_run(program, scene, one, folder, resolved, observer, scored, result);
   return result;
 }

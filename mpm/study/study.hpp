@@ -63,7 +63,8 @@ inline bool check_scene(const Study& study, const std::string& program) {
   const toml::table resolved = toml::parse(printed.out);
   std::vector<std::string> names;
   if (const auto* observers = resolved["observer"].as_array())
-    for (const auto& observer : *observers) names.push_back(observer.as_table()->get("name")->value_or(std::string()));
+    for (const auto& observer : *observers)
+      if (const auto* table = observer.as_table()) names.push_back((*table)["name"].value_or(std::string()));
   if (study.observer && std::find(names.begin(), names.end(), *study.observer) == names.end()) {
     std::string list;
     for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;

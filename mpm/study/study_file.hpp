@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -63,12 +64,13 @@ struct Study {
   int scene_line = 1, observer_line = 1;
 };
 
-/// A number as TOML writes it back, a float kept a float (`1.0`, `2e-05`), 17 digits so that it reads back the same.
-inline std::string number_text(double value, bool is_float) {
+/// A float as TOML writes it back, kept a float (`1.0`, `2e-05`): 15 digits, or 17 where 15 do not read back the same.
+inline std::string float_text(double value) {
   char text[40];
-  std::snprintf(text, sizeof text, is_float ? "%.17g" : "%.0f", value);
+  std::snprintf(text, sizeof text, "%.15g", value);
+  if (std::strtod(text, nullptr) != value) std::snprintf(text, sizeof text, "%.17g", value);
   std::string result = text;
-  if (is_float && result.find_first_of(".eEn") == std::string::npos) result += ".0";
+  if (result.find_first_of(".eEn") == std::string::npos) result += ".0";
   return result;
 }
 
@@ -91,7 +93,7 @@ inline Value value_of(const toml::node& node, const std::string& file, const std
     const double number = *node.value_exact<double>();
     char label[32];
     std::snprintf(label, sizeof label, "%.12g", number);
-    return {number_text(number, true), label, number};
+    return {float_text(number), label, number};
   }
   if (node.is_boolean()) return {*node.value_exact<bool>() ? "true" : "false", *node.value_exact<bool>() ? "true" : "false", {}};
   if (const auto text = node.value_exact<std::string>()) {
@@ -260,6 +262,8 @@ TEST_CASE("study file: axes and overrides as TOML values, every key checked with
   CHECK(study.axes[1].values[1].label == "lme");
   CHECK(study.axes[2].key == "body[0].particles_per_cell");
   CHECK(study.axes[3].values[1].toml == "1.0");
+  CHECK(float_text(0.1) == "0.1");
+  CHECK(float_text(0.1 + 0.2) == "0.30000000000000004");
   CHECK(study.refine == 0);
   CHECK(refusal("scene = \"x.toml\"\n[axes]\nsolver.cfll = [1]\n") == "error: " + (folder / "s.toml").string() +
                                                                          ":3: solver.cfll: not a scene key (mpm run --help lists them)");
