@@ -90,7 +90,10 @@ inline std::optional<double> score_with_compare(const std::string& program, cons
 inline void measure_run(const std::string& program, const std::string& scene, const Case& one, const std::string& folder,
                         const toml::table& resolved, const std::string& observer, bool scored, CaseResult& result) {
   std::string error;
-  if (!scored || observer.empty()) return;
+  if (!scored || observer.empty()) {
+    result.why = scored ? "the scene has no [[observer]] to score" : "the scene names no exact solution: no score";
+    return;
+  }
   const std::string json = io::read_scene_text(folder + "/run.json");
   const auto at = observer_reference(json, observer);
   std::vector<std::string> columns{observer + ".v_x"};

@@ -71,7 +71,7 @@ inline bool check_scene(const Study& study, const std::string& program) {
     throw SceneError(study.path, study.observer_line, "observer", "no [[observer]] '" + *study.observer + "' in the scene (" +
                                                                       (list.empty() ? "it has none" : list) + ")");
   }
-  return resolved.contains("exact");
+  return resolved["exact"].value_or(std::string("none")) != "none";
 }
 
 /// Refuses a --out that is not a folder, a link or a non-file under a name the study writes, and a `cases` that
