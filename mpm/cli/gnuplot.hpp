@@ -49,12 +49,9 @@ inline std::string gnuplot_page(const std::string& picture, std::size_t panels) 
   return page.str();
 }
 
-/// Writes `text` into `path` made afresh: whatever had that name (a symbolic link too) removed, never followed;
-/// a folder in the way refused. \throws OutputFailure.
-inline void write_fresh(const std::string& path, const std::string& text) {
-  ::unlink(path.c_str());
-  io::write_file(path, text, io::OutputFile::Mode::direct);
-}
+/// Writes `text` into `path` atomically: a symbolic link at `path` is replaced, never followed; a folder in the
+/// way is refused. \throws OutputFailure.
+inline void write_fresh(const std::string& path, const std::string& text) { io::write_file(path, text); }
 
 /// True if the file `path` (not a symbolic link) is a complete PNG: its signature first and the IEND chunk
 /// (length 0, type, CRC) last.

@@ -19,6 +19,7 @@
 #include "mpm/cli/run_command.hpp"
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/cli/stability_command.hpp"
+#include "mpm/cli/study_command.hpp"
 #include "mpm/io/scene_keys.hpp"
 
 namespace mpm::cli {
@@ -80,12 +81,13 @@ inline std::string help_of(int (*command)(const std::vector<std::string>&, std::
 inline std::string main_help() {
   return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") +
          run_usage() + "\n" + exact_usage() + "\n" + help_of(compare_command) + "\n" + help_of(shape_command) + "\n" +
-         help_of(plot_command) + "\n" + help_of(stability_command) +
+         help_of(plot_command) + "\n" + help_of(stability_command) + "\n" +
+         help_of(study_command) +
          "\nusage: mpm --version\n  Prints the version (git describe at build time).\n\n" + scene_keys_help() + "\n" +
          exit_codes;
 }
 
-/// The help of one command ("run", "exact", "compare", "shape", "plot", "stability"); the main help for any other.
+/// The help of one command ("run", "exact", "compare", "shape", "plot", "stability", "study"); the main help for any other.
 inline std::string command_help(const std::string& command) {
   if (command == "run") return run_usage() + "\n" + scene_keys_help() + "\n" + exit_codes;
   if (command == "shape") return help_of(shape_command) + "\n" + exit_codes;
@@ -94,6 +96,7 @@ inline std::string command_help(const std::string& command) {
   if (command == "exact")
     return exact_usage() + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
   if (command == "compare") return help_of(compare_command);
+  if (command == "study") return help_of(study_command);
   return main_help();
 }
 

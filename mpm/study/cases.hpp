@@ -1,0 +1,162 @@
+/// \file
+/// A study's cases and how one is run. The cases are the product of the axes, the last axis varying fastest;
+/// case k runs in DIR/cases/kkkk (four digits). One case is a few children of the same `mpm` program:
+///   mpm run SCENE --set ... --print-scene          the resolved scene (or exit 2: the case is `refused`)
+///   mpm run SCENE --set ... --out CASE --threads 1  the run: `done`, `stopped` (energy growth) or `failed`
+///   mpm compare CASE/observers.csv SCENE --set ... --at X --column A.v_x=v_x         the score at t
+///   mpm compare CASE/observers_shifted.csv ...                                        at the integrator's time
+/// so that a study scores exactly as a user would. The wall and CPU time are those of the run.
+#pragma once
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mpm/study/measures.hpp"
+#include "mpm/study/process.hpp"
+#include "mpm/study/study_file.hpp"
+
+namespace mpm::study {
+
+/// One case of a study: the index of each axis's value, and the overrides it runs with ([set] first, then the axes).
+struct Case {
+  std::size_t index = 0;
+  std::vector<std::size_t> choice;  ///< per axis, the index of its value
+  std::vector<std::string> overrides;
+};
+
+/// What a case gave.
+struct CaseResult {
+  std::string status = "failed";  ///< done | stopped | refused | failed
+  std::string why;                ///< the first line of the refusal or failure; for a done run without scores, why
+  std::optional<double> score_at_t, score_shifted, energy_drift, steps;
+  double wall_s = 0.0, cpu_s = 0.0;
+};
+
+/// Every case of `study`, the last axis varying fastest.
+inline std::vector<Case> expand_cases(const Study& study) {
+  std::size_t count = 1;
+  for (const auto& axis : study.axes) count *= axis.values.size();
+  std::vector<Case> cases(count);
+  for (std::size_t index = 0; index < count; ++index) {
+    Case& one = cases[index];
+    one.index = index;
+    one.choice.assign(study.axes.size(), 0);
+    for (std::size_t rest = index, k = study.axes.size(); k-- > 0; rest /= study.axes[k].values.size())
+      one.choice[k] = rest % study.axes[k].values.size();
+    for (const auto& setting : study.set) one.overrides.push_back(setting.key + "=" + setting.value.toml);
+    for (std::size_t k = 0; k < study.axes.size(); ++k)
+      one.overrides.push_back(study.axes[k].key + "=" + study.axes[k].values[one.choice[k]].toml);
+  }
+  return cases;
+}
+
+/// The folder of case `index` under `out`: out/cases/0042.
+inline std::string case_folder(const std::string& out, std::size_t index) {
+  char name[16];
+  std::snprintf(name, sizeof name, "%04zu", index);
+  return out + "/cases/" + name;
+}
+
+/// The arguments of `mpm COMMAND FIRST [SECOND] --set ...` for a case.
+inline std::vector<std::string> child_arguments(const std::vector<std::string>& head, const std::vector<std::string>& overrides) {
+  std::vector<std::string> arguments{"mpm"};
+  arguments.insert(arguments.end(), head.begin(), head.end());
+  for (const auto& assignment : overrides) arguments.push_back("--set"), arguments.push_back(assignment);
+  return arguments;
+}
+
+/// Scores `csv` (a case's observers, at their times or shifted) with `mpm compare` against the scene's exact solution
+/// at the observer's reference position; nullopt with `why` set if compare gives no score.
+inline std::optional<double> score_with_compare(const std::string& program, const std::string& scene, const std::vector<std::string>& overrides,
+                                                const std::string& csv, const std::vector<double>& at, const std::vector<std::string>& columns,
+                                                std::string& why) {
+  std::string position;
+  char number[32];
+  for (double coordinate : at) std::snprintf(number, sizeof number, "%.17g", coordinate), position += (position.empty() ? "" : ",") + std::string(number);
+  std::vector<std::string> head{"compare", csv, scene, "--at", position};
+  for (const auto& column : columns)
+    head.push_back("--column"), head.push_back(column + "=" + column.substr(column.rfind('.') + 1));
+  const ChildRun compare = run_child(program, child_arguments(head, overrides));
+  const auto score = compare.exit_code == 0 ? compare_score(compare.out) : std::nullopt;
+  if (!score) why = "mpm compare: " + reason_line(compare.err);
+  return score;
+}
+
+/// The measures of a finished run in `folder` (status done): the two scores of observer
+/// `observer` (none when `scored` is false: the scene has no exact solution).
+inline void measure_run(const std::string& program, const std::string& scene, const Case& one, const std::string& folder,
+                        const toml::table& resolved, const std::string& observer, bool scored, CaseResult& result) {
+  std::string error;
+  if (!scored || observer.empty()) {
+    result.why = scored ? "the scene has no [[observer]] to score" : "the scene names no exact solution: no score";
+    return;
+  }
+  const std::string json = io::read_scene_text(folder + "/run.json");
+  const auto at = observer_reference(json, observer);
+  std::vector<std::string> columns{observer + ".v_x"};
+  if (resolved["dimension"].value_or(1) == 2) columns.push_back(observer + ".v_y");
+  result.score_at_t = score_with_compare(program, scene, one.overrides, folder + "/observers.csv", at, columns, result.why);
+  const double fraction = velocity_time_shift(resolved);
+  if (!write_shifted(folder + "/observers.csv", folder + "/observers_shifted.csv", columns, fraction, result.steps.value_or(0),
+                     json_number(json, "final_time").value_or(0.0), error))
+    result.why = error;
+  else
+    result.score_shifted = score_with_compare(program, scene, one.overrides, folder + "/observers_shifted.csv", at, columns, result.why);
+}
+
+/// Runs case `one` of a study of `scene` into `out`/cases/NNNN with the `mpm` program `program`, scoring
+/// observer `observer` ("" for the scene's first). \throws OutputFailure if the shifted CSV cannot be written.
+inline CaseResult run_case(const std::string& program, const std::string& scene, const Case& one, const std::string& out,
+                           std::string observer, bool scored) {
+  CaseResult result;
+  const ChildRun printed = run_child(program, child_arguments({"run", scene, "--print-scene"}, one.overrides));
+  if (printed.exit_code != 0) {
+    result.status = printed.exit_code == 2 ? "refused" : "failed";
+    result.why = reason_line(printed.err);
+    return result;
+  }
+  toml::table resolved;
+  try {
+    resolved = toml::parse(printed.out);
+  } catch (const toml::parse_error& error) {
+    result.why = "mpm run --print-scene: " + std::string(error.description());
+    return result;
+  }
+  if (observer.empty()) observer = resolved["observer"][0]["name"].value_or(std::string());
+  const std::string folder = case_folder(out, one.index);
+  const ChildRun run = run_child(program, child_arguments({"run", scene, "--out", folder, "--threads", "1"}, one.overrides));
+  result.wall_s = run.wall_s, result.cpu_s = run.cpu_s;
+  std::string json;
+  try {
+    json = io::read_scene_text(folder + "/run.json");
+  } catch (const SceneError&) {  // refused before it wrote anything
+  }
+  result.steps = json_number(json, "steps");
+  const auto failure = json_string(json, "failure");
+  if (run.exit_code == 0) result.status = "done";
+  else if (run.exit_code == 2) result.status = "refused", result.why = reason_line(run.err);
+  else if (run.exit_code == 3 && failure && failure->find("energy grew") != std::string::npos) result.status = "stopped", result.why = *failure;
+  else result.why = failure ? *failure : reason_line(run.err).empty() ? "exit " + std::to_string(run.exit_code) : reason_line(run.err);
+  std::string error;
+  if (result.status != "refused") result.energy_drift = energy_drift(folder + "/energy.csv", error);  // a stopped run's growth too
+  if (result.status == "done") measure_run(program, scene, one, folder, resolved, observer, scored, result);
+  return result;
+}
+
+TEST_CASE("study cases: the product of the axes, the last varying fastest, with [set] before the axes") {
+  Study study;
+  study.set.push_back({"solver.end_time", {"1e-05", "1e-05", 1e-5}, 3});
+  study.axes.push_back({"grid.cells", {{"[10]", "10", 10.0}, {"[20]", "20", 20.0}}, 5});
+  study.axes.push_back({"solver.shape", {{"\"linear\"", "linear", {}}, {"\"lme\"", "lme", {}}, {"\"ugimp\"", "ugimp", {}}}, 6});
+  const auto cases = expand_cases(study);
+  REQUIRE(cases.size() == 6);
+  CHECK(cases[4].choice == std::vector<std::size_t>{1, 1});
+  CHECK(cases[4].overrides == std::vector<std::string>{"solver.end_time=1e-05", "grid.cells=[20]", "solver.shape=\"lme\""});
+  CHECK(case_folder("runs/s", 42) == "runs/s/cases/0042");
+  CHECK(child_arguments({"run", "a.toml"}, {"x=1"}) == std::vector<std::string>{"mpm", "run", "a.toml", "--set", "x=1"});
+}
+
+}  // namespace mpm::study

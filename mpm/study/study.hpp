@@ -1,0 +1,230 @@
+/// \file
+/// `mpm study STUDY.toml [--out DIR] [--jobs N]`: a study of any scene from its study file (study_file.hpp),
+/// in this order:
+///   1. the study file is read and every key checked; the scene with the study's [set] is resolved by
+///      `mpm run --print-scene` (a refusal there is the study's: its `--set(n)` named by the study's line) and
+///      the observer looked up in it; the folder is checked. Any problem: `error: FILE:LINE: KEY: why`, exit 2,
+///      nothing written;
+///   2. the folder is locked (a second study into it is refused) and what an earlier study wrote there removed;
+///   3. the cases run in parallel (runner.hpp, cases.hpp), with a progress line on stderr;
+///   4. study.csv, fits.csv (with a refine axis) and the pictures are written (write.hpp), and their names printed.
+/// Exit codes: 0 written (whatever the cases' outcomes: they are rows of study.csv); 2 a bad study, scene or folder;
+/// 3 a file could not be written (`error: FILE: cannot write: why`) or gnuplot failed.
+#pragma once
+#include <doctest/doctest.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "mpm/io/run_folder.hpp"
+#include "mpm/study/runner.hpp"
+#include "mpm/study/write.hpp"
+
+namespace mpm::study {
+
+/// What `mpm study` was asked.
+struct StudyRequest {
+  std::string study_path, out;  ///< out "": runs/<study name>
+  unsigned jobs = 0;            ///< 0: the machine's cores
+  std::string program = "/proc/self/exe";
+};
+
+/// The files a study writes into its folder (besides cases/).
+inline const std::vector<std::string>& study_output_names() {
+  static const std::vector<std::string> names{"study.csv", "fits.csv", "study.gp", "error.png", "cost.png"};
+  return names;
+}
+
+/// A refusal by `mpm run --print-scene` of the scene with the study's [set], its `--set(n):1:` replaced by the
+/// study file and the line of the n-th [set] entry.
+inline std::string study_refusal(const Study& study, const std::string& message) {
+  const std::string prefix = "error: --set(";
+  if (message.rfind(prefix, 0) != 0) return message;
+  const std::size_t close = message.find("):1:");
+  const std::size_t n = std::strtoul(message.c_str() + prefix.size(), nullptr, 10);
+  if (close == std::string::npos || n < 1 || n > study.set.size()) return message;
+  return "error: " + study.path + ":" + std::to_string(study.set[n - 1].line) + ":" + message.substr(close + 4);
+}
+
+/// Resolves the study's scene with its [set] (a child `mpm run --print-scene`); checks its observer and says
+/// whether the scene has an exact solution to score against. \throws SceneError (the study's) or InputError.
+inline bool check_scene(const Study& study, const std::string& program) {
+  std::vector<std::string> overrides;
+  for (const auto& setting : study.set) overrides.push_back(setting.key + "=" + setting.value.toml);
+  const ChildRun printed = run_child(program, child_arguments({"run", study.scene, "--print-scene"}, overrides));
+  if (printed.exit_code != 0) throw InputError(study.path, study_refusal(study, reason_line(printed.err)));
+  const toml::table resolved = toml::parse(printed.out);
+  std::vector<std::string> names;
+  if (const auto* observers = resolved["observer"].as_array())
+    for (const auto& observer : *observers)
+      if (const auto* table = observer.as_table()) names.push_back((*table)["name"].value_or(std::string()));
+  if (study.observer && std::find(names.begin(), names.end(), *study.observer) == names.end()) {
+    std::string list;
+    for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
+    throw SceneError(study.path, study.observer_line, "observer", "no [[observer]] '" + *study.observer + "' in the scene (" +
+                                                                      (list.empty() ? "it has none" : list) + ")");
+  }
+  return resolved["exact"].value_or(std::string("none")) != "none";
+}
+
+/// Refuses a --out that is not a folder, a link or a non-file under a name the study writes, and a `cases` that
+/// is not a folder; writes nothing. \throws InputError.
+inline void check_study_folder(const std::string& out) {
+  namespace fs = std::filesystem;
+  io::check_run_folder(out);  // the folder itself, as mpm run checks it
+  std::error_code error;
+  for (const auto& name : study_output_names()) {
+    const auto status = fs::symlink_status(out + "/" + name, error);
+    if (fs::exists(status) && !fs::is_regular_file(status))
+      throw InputError(out + "/" + name, "is a symbolic link or not a regular file, where mpm study writes a file: remove it, or give another --out");
+  }
+  const auto cases = fs::symlink_status(out + "/cases", error);
+  if (fs::exists(cases) && !fs::is_directory(cases))
+    throw InputError(out + "/cases", "is not a folder (a link, a file), where mpm study writes the cases' folders: remove it, or give another --out");
+}
+
+/// Removes what an earlier study wrote into `out`: its files, and in cases/NNNN what the runs wrote (a case folder
+/// left empty is removed; another file in it is kept). \throws OutputFailure.
+inline void clear_study_folder(const std::string& out) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  for (const auto& name : study_output_names())
+    if (fs::remove(out + "/" + name, error), error) throw OutputFailure(out + "/" + name, "cannot remove an earlier study's file: " + error.message());
+  for (const auto& entry : fs::directory_iterator(out + "/cases", error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() != 4 || name.find_first_not_of("0123456789") != std::string::npos || entry.is_symlink() || !entry.is_directory()) continue;
+    io::check_run_folder(entry.path().string());
+    io::clear_run_folder(entry.path().string());
+    fs::remove(entry.path() / "observers_shifted.csv", error);
+    fs::remove(entry.path(), error);  // only when empty
+  }
+}
+
+/// Draws study.gp's pictures in `out` into their hidden temporaries and renames each complete one into place.
+/// \throws OutputFailure naming the picture that gnuplot did not draw whole, with gnuplot's first message.
+inline void draw_pictures(const std::string& out, const std::vector<std::string>& pictures) {
+  std::string reason;
+  for (const auto& picture : pictures) {
+    const int descriptor = cli::create_fresh(out + "/" + io::OutputFile::temporary_path(picture), reason);
+    if (descriptor < 0) throw OutputFailure(out + "/" + picture, reason);
+    ::close(descriptor);
+  }
+  std::FILE* log = std::tmpfile();
+  const int status = log ? cli::run_gnuplot(out, "study.gp", -1, fileno(log)) : 127;
+  const std::string message = reason_line(read_back(log));
+  if (log) std::fclose(log);
+  for (const auto& picture : pictures) {
+    const std::string temporary = out + "/" + io::OutputFile::temporary_path(picture);
+    if (status != 0 || !cli::png_file_complete(temporary) || std::rename(temporary.c_str(), (out + "/" + picture).c_str()) != 0) {
+      ::unlink(temporary.c_str());
+      throw OutputFailure(out + "/" + picture, (status != 0 ? "gnuplot failed (status " + std::to_string(status) + "; is gnuplot installed? make deps)"
+                                                            : std::string("gnuplot left it incomplete")) +
+                                                   (message.empty() ? "" : ": " + message));
+    }
+  }
+}
+
+/// Writes the study's files into `out` and returns their paths. \throws OutputFailure.
+inline std::vector<std::string> write_study(const Study& study, const std::vector<Case>& cases, const std::vector<CaseResult>& results,
+                                            const std::string& out) {
+  std::vector<std::string> written{out + "/study.csv"};
+  io::write_file(written.back(), study_csv(study, cases, results));
+  if (study.refine >= 0) io::write_file(out + "/fits.csv", fits_csv(study, fit_orders(study, cases, results))), written.push_back(out + "/fits.csv");
+  const auto at_t = study.refine >= 0 ? score_curves(study, cases, results, "rms_at_t", false) : std::vector<Curve>{};
+  const auto shifted = study.refine >= 0 ? score_curves(study, cases, results, "rms_at_integrator_time", false) : std::vector<Curve>{};
+  const auto cost = score_curves(study, cases, results, "rms_at_integrator_time", true);
+  std::vector<std::string> pictures;
+  if (!at_t.empty() || !shifted.empty()) pictures.push_back("error.png");
+  if (!cost.empty()) pictures.push_back("cost.png");
+  if (pictures.empty()) return written;
+  std::string refine, tics;
+  if (study.refine >= 0) {
+    refine = study.axes[study.refine].key;
+    for (const auto& value : study.axes[study.refine].values) tics += (tics.empty() ? "(" : ", ") + number_cell(value.number);
+    tics += ")";
+  }
+  io::write_file(out + "/study.gp", study_script(at_t, shifted, cost, refine, tics, io::OutputFile::temporary_path("error.png"),
+                                                 io::OutputFile::temporary_path("cost.png")));
+  written.push_back(out + "/study.gp");
+  draw_pictures(out, pictures);
+  for (const auto& picture : pictures) written.push_back(out + "/" + picture);
+  return written;
+}
+
+/// Writes `message` and a line break on `err`; returns `code`.
+inline int report(std::ostream& err, const std::string& message, int code) {
+  err << message << "\n";
+  return code;
+}
+
+/// `mpm study`: checks, runs and writes the study; returns the exit code (0, 2 or 3), messages on `err`.
+inline int run_study(const StudyRequest& request, std::ostream& out, std::ostream& err) {
+  Study study;
+  std::string folder;
+  bool scored = false;
+  try {
+    study = read_study(request.study_path);
+    scored = check_scene(study, request.program);
+    folder = request.out.empty() ? "runs/" + study.name : request.out;
+    check_study_folder(folder);
+  } catch (const SceneError& error) {
+    return report(err, error.message(), 2);
+  } catch (const InputError& error) {  // the scene's refusal comes whole, its own `error: FILE:LINE: KEY: why`
+    return report(err, error.path == study.path ? std::string(error.what()) : error.message(), 2);
+  } catch (const toml::parse_error& error) {
+    return report(err, "error: " + study.scene + ": mpm run --print-scene: " + std::string(error.description()), 2);
+  }
+  try {
+    std::filesystem::create_directories(folder + "/cases");
+    const io::FolderLock lock(folder);
+    clear_study_folder(folder);
+    const auto cases = expand_cases(study);
+    const unsigned jobs = request.jobs ? request.jobs : std::max(1u, std::thread::hardware_concurrency());
+    const std::string observer = study.observer.value_or("");
+    const auto results = run_cases(
+        cases, jobs, [&](const Case& one) { return run_case(request.program, study.scene, one, folder, observer, scored); }, err);
+    for (const auto& path : write_study(study, cases, results, folder)) out << path << "\n";
+  } catch (const InputError& error) {
+    return report(err, error.message(), 2);
+  } catch (const OutputFailure& error) {
+    return report(err, error.message(), 3);
+  } catch (const std::filesystem::filesystem_error& error) {
+    return report(err, "error: " + error.path1().string() + ": cannot write: " + error.code().message(), 3);
+  }
+  return 0;
+}
+
+TEST_CASE("study: a refusal of its [set] named by the study's line, its folder's links refused") {
+  Study study;
+  study.path = "s.toml";
+  study.set.push_back({"solver.cfl", {"-1", "-1", -1.0}, 7});
+  CHECK(study_refusal(study, "error: --set(1):1: solver.cfl: must be > 0") == "error: s.toml:7: solver.cfl: must be > 0");
+  CHECK(study_refusal(study, "error: x.toml:3: grid.cells: bad") == "error: x.toml:3: grid.cells: bad");
+  CHECK(study_refusal(study, "error: --set(2):1: k: bad") == "error: --set(2):1: k: bad");
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::temp_directory_path() / ("mpm_study_folder_" + std::to_string(::getpid()));
+  fs::create_directories(folder / "cases" / "0003");
+  io::write_file((folder / "cases" / "0003" / "run.json").string(), "{}\n");
+  io::write_file((folder / "cases" / "0003" / "notes.txt").string(), "mine\n");
+  fs::create_directories(folder / "cases" / "0004");
+  io::write_file((folder / "cases" / "0004" / "observers_shifted.csv").string(), "t\n");
+  io::write_file((folder / "study.csv").string(), "old\n");
+  check_study_folder(folder.string());
+  clear_study_folder(folder.string());
+  CHECK(!fs::exists(folder / "study.csv"));
+  CHECK(!fs::exists(folder / "cases" / "0003" / "run.json"));
+  CHECK(fs::exists(folder / "cases" / "0003" / "notes.txt"));  // not the study's: kept, and its folder with it
+  CHECK(!fs::exists(folder / "cases" / "0004"));
+  fs::create_symlink("/etc/passwd", folder / "fits.csv");
+  CHECK_THROWS_AS(check_study_folder(folder.string()), InputError);
+  fs::remove_all(folder);
+}
+
+}  // namespace mpm::study
