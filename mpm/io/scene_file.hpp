@@ -171,9 +171,9 @@ inline void apply_override(SceneFile& scene, const std::string& assignment, int 
   const std::string key = assignment.substr(0, equals);
   const std::vector<std::string> parts = key_parts(key);
   if (parts.empty())
-    throw SceneError(origin, 1, key.substr(0, 64), "not a key: write a dotted path of letters, digits, _ and -, with [n] "
-                                                   "for the n-th [[table]], e.g. solver.cfl or body[0].max (at most " +
-                                                   std::to_string(max_scene_nesting) + " levels)");
+    throw SceneError(origin, 1, key.substr(0, 64),
+                     "not a key: write a dotted path of letters, digits, _ and -, with [n] for the n-th [[table]], "
+                     "e.g. solver.cfl or body[0].max (at most " + std::to_string(max_scene_nesting) + " levels)");
   const std::string value_text = "value = " + assignment.substr(equals + 1);
   toml::table parsed;
   try {

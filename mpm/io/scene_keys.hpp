@@ -125,8 +125,8 @@ inline int read_integer(SceneReader& reader, const std::string& name, const toml
   if (!node.is_integer() && !entry) reader.fail(name, allowed);
   const double value = *number_value(node);
   if ((node.is_integer() || value == std::floor(value)) && range.holds(value)) return static_cast<int>(value);
-  const std::string got = node.is_integer() ? std::to_string(*node.value_exact<int64_t>()) : SceneReader::describe(value);
-  reader.fail(name, allowed + ", got " + got);
+  const auto integer = node.value_exact<int64_t>();
+  reader.fail(name, allowed + ", got " + (integer ? std::to_string(*integer) : SceneReader::describe(value)));
 }
 
 /// The node, nullptr when the scene lacks it, as a value of the member's type M within the key's range or choices.

@@ -100,7 +100,8 @@ inline void print_resolved_scene(const Scene& scene, std::ostream& out) {
       for (const auto& [name, value] : values) {
         if (name.str() != key.name() && key.name() != "<name>") continue;  // constants.<name>: every entry
         std::string line = std::string(name.str()) + " = " + detail::toml_text(value);
-        if (std::string(key.unit) != "-") line += std::string(std::max(1, 40 - int(line.size())), ' ') + "# " + key.unit;
+        const int padding = std::max(1, 40 - static_cast<int>(line.size()));  // units from column 41
+        if (std::string(key.unit) != "-") line += std::string(padding, ' ') + "# " + key.unit;
         out << line << "\n";
       }
     }
