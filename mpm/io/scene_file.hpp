@@ -1,24 +1,17 @@
 /// \file
-/// Reading a scene: a TOML file plus `--set KEY=VALUE` overrides, with every error pointing at
-/// the file and line of the offending key.
-///
-/// A SceneFile holds the parsed table; a SceneReader reads typed values out of it and turns
-/// every problem into a SceneError (`error: FILE:LINE: KEY: what is wrong and what is allowed`).
+/// Reading a scene: a TOML file plus `--set KEY=VALUE` overrides. A SceneReader reads one table of it and
+/// turns every problem into a SceneError at the key's file and line (`error: FILE:LINE: KEY: what`).
 #pragma once
 #include <doctest/doctest.h>
 
-#include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
-#include <cmath>
-#include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <iomanip>
 #include <map>
-#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -33,25 +26,14 @@
 
 namespace mpm::io {
 
+/// The line of a node in its file.
 inline int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
 
-/// Splits "a.b[2].c" into {"a", "b", "[2]", "c"}.
-inline std::vector<std::string> split_key_path(const std::string& path) {
-  std::vector<std::string> parts;
-  std::string current;
-  for (char character : path) {
-    if (character == '.' || character == '[') {
-      if (!current.empty()) parts.push_back(current);
-      current = character == '[' ? "[" : "";
-    } else if (character == ']') {
-      parts.push_back(current + "]");
-      current.clear();
-    } else {
-      current += character;
-    }
-  }
-  if (!current.empty()) parts.push_back(current);
-  return parts;
+/// Words as the messages list them: "a | b | c".
+inline std::string join(const std::vector<std::string>& words) {
+  std::string joined;
+  for (const auto& word : words) joined += (joined.empty() ? "" : " | ") + word;
+  return joined;
 }
 
 struct SceneFile {
@@ -61,25 +43,32 @@ struct SceneFile {
   std::map<std::string, std::string> overridden;
 };
 
-/// The largest scene file read (scenes are a few kB; the bound keeps a hostile file from
-/// exhausting memory inside the TOML parser).
+/// The largest scene file read: a few kB is usual; the bound keeps a hostile file from exhausting memory.
 inline constexpr std::size_t max_scene_bytes = 1 << 20;
 /// The deepest nesting accepted: dotted-key levels (`a.b.c`) and open brackets (`[[`, `{`).
-/// The TOML parser recurses on both, so a key of 200 000 levels would overflow the stack.
 inline constexpr int max_scene_nesting = 64;
 
-/// Refuses TOML text that nests deeper than max_scene_nesting, before the parser sees it. A
-/// lexical scan: strings and comments are skipped, dots are counted between delimiters
-/// (`=`, `,`, brackets, end of line), open brackets are counted until closed.
-inline void check_nesting(std::string_view text, const std::string& name) {
+/// Refuses, before toml++ 3.3 sees it, text it would fail on: nesting beyond max_scene_nesting (its parser
+/// recurses: the stack overflows) and a table header not starting with a key (`[[[1]]]`, `[ ]`: it asserts
+/// or reads on in undefined behaviour). A lexical scan that skips strings and comments.
+inline void check_scene_text(std::string_view text, const std::string& name) {
   int line = 1, depth = 0, dots = 0;
-  auto refuse = [&](const std::string& what) {
-    throw SceneError(name, line, "(syntax)", what + " nest deeper than " + std::to_string(max_scene_nesting) + " levels");
+  bool line_start = true;  // only blanks so far on this line
+  auto refuse = [&](const std::string& what) { throw SceneError(name, line, "(syntax)", what); };
+  auto starts_key = [&](std::size_t k) {  // after `[`: another `[`, blanks, then a bare key's character or a quote
+    if (k < text.size() && text[k] == '[') ++k;
+    while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
+    const char first = k < text.size() ? text[k] : '\n';
+    return std::isalnum(static_cast<unsigned char>(first)) || std::strchr("_-\"'", first) != nullptr;
   };
+  const std::string deeper = " nest deeper than " + std::to_string(max_scene_nesting) + " levels";
   for (std::size_t k = 0; k < text.size(); ++k) {
     const char character = text[k];
+    const bool first_on_line = line_start;
+    line_start = character == '\n' || (line_start && (character == ' ' || character == '\t'));
     if (character == '\n') {
-      ++line, dots = 0;
+      ++line;
+      dots = 0;
     } else if (character == '#') {
       while (k + 1 < text.size() && text[k + 1] != '\n') ++k;
     } else if (character == '"' || character == '\'') {
@@ -90,89 +79,56 @@ inline void check_nesting(std::string_view text, const std::string& name) {
           ++line;
           if (!multiline) break;
         }
-        if (character == '"' && text[k] == '\\') { ++k; continue; }
-        if (text.substr(k, close.size()) == close) { k += close.size() - 1; break; }
+        if (character == '"' && text[k] == '\\') {
+          ++k;
+          continue;
+        }
+        if (text.substr(k, close.size()) == close) {
+          k += close.size() - 1;
+          break;
+        }
       }
     } else if (character == '[' || character == '{') {
-      if (++depth > max_scene_nesting) refuse("brackets");
+      if (character == '[' && first_on_line && !starts_key(k + 1))
+        refuse("a table header must start with a key: write [name] or [[name]]");
+      if (++depth > max_scene_nesting) refuse("brackets" + deeper);
       dots = 0;
     } else if (character == ']' || character == '}') {
-      depth = depth > 0 ? depth - 1 : 0, dots = 0;
+      depth = std::max(depth - 1, 0);
+      dots = 0;
     } else if (character == '=' || character == ',') {
       dots = 0;
     } else if (character == '.' && ++dots > max_scene_nesting) {
-      refuse("dotted keys");
+      refuse("dotted keys" + deeper);
     }
   }
 }
 
-/// Refuses a table header that does not start with a key (`[[[1]]]`, `[[=`, `[ ]`), before the
-/// parser sees it: the Debian TOML parser (toml++ 3.3) assumes a key starts there and, given anything
-/// else, trips an internal assertion (debug builds) or reads on in undefined behaviour (release),
-/// instead of reporting a syntax error. A line whose first non-blank character is `[` is a header
-/// (or a nested array on its own line, which no scene key takes): after `[` or `[[` and blanks, a
-/// bare-key character or a quote must follow.
-inline void check_table_headers(std::string_view text, const std::string& name) {
-  int line = 1;
-  for (std::size_t start = 0; start < text.size(); ++line) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    std::size_t k = text.find_first_not_of(" \t", start);
-    if (k < end && text[k] == '[') {
-      ++k;
-      if (k < end && text[k] == '[') ++k;
-      while (k < end && (text[k] == ' ' || text[k] == '\t')) ++k;
-      const char first = k < end ? text[k] : '\n';
-      const bool starts_key = std::isalnum(static_cast<unsigned char>(first)) || first == '_' || first == '-' ||
-                              first == '"' || first == '\'';
-      if (!starts_key)
-        throw SceneError(name, line, "(syntax)", "a table header must start with a key: write [name] or [[name]]");
-    }
-    start = end + 1;
-  }
-}
-
-/// The text of the scene file `path`, read with read(2) once it is known to be a regular file (a FIFO,
-/// a device, a folder or a file of /proc is refused at once, never waited on or read). \throws SceneError
-/// for the file as a whole (`error: FILE: why`) if it cannot be read or is larger than max_scene_bytes.
+/// The text of the scene file `path`, read once it is known to be a regular file (a FIFO, a device, a folder
+/// or a file of /proc is refused at once). \throws SceneError for the file as a whole (`error: FILE: why`)
+/// if it cannot be read or is larger than max_scene_bytes.
 inline std::string read_scene_text(const std::string& path) {
   std::string why;
   bool missing = false;
   const int descriptor = open_regular_file(path, why, missing);
   if (descriptor < 0) throw SceneError(path, 0, "", why.substr(path.size() + 2));
+  std::FILE* file = ::fdopen(descriptor, "rb");
   std::string text(max_scene_bytes + 1, '\0');
-  std::size_t size = 0;
-  while (size < text.size()) {
-    const ssize_t count = ::read(descriptor, &text[size], text.size() - size);
-    if (count < 0 && errno == EINTR) continue;
-    if (count < 0) why = std::strerror(errno);
-    if (count <= 0) break;
-    size += static_cast<std::size_t>(count);
-  }
-  ::close(descriptor);
+  text.resize(file ? std::fread(&text[0], 1, text.size(), file) : 0);
+  if (!file || std::ferror(file)) why = std::strerror(errno);
+  if (file)
+    std::fclose(file);
+  else
+    ::close(descriptor);
   if (!why.empty()) throw SceneError(path, 0, "", "cannot be read: " + why);
-  if (size > max_scene_bytes)
+  if (text.size() > max_scene_bytes)
     throw SceneError(path, 0, "", "is larger than " + std::to_string(max_scene_bytes) + " bytes; a scene is a few kB");
-  text.resize(size);
   return text;
 }
 
-/// Parses the scene file. \throws SceneError if it cannot be read (see read_scene_text) or on a syntax
-/// error, with its line.
-inline SceneFile parse_scene_file(const std::string& path) {
-  const std::string text = read_scene_text(path);
-  check_nesting(text, path);
-  check_table_headers(text, path);
-  try {
-    return SceneFile{path, toml::parse(std::string_view(text), std::string_view(path)), {}};
-  } catch (const toml::parse_error& error) {
-    throw SceneError(path, static_cast<int>(error.source().begin.line), "(syntax)", std::string(error.description()));
-  }
-}
-
-/// Parses a scene given as text (tests, tools). \throws SceneError on a syntax error.
+/// Parses a scene given as text (`name` locates its errors). \throws SceneError on a syntax error, with its line.
 inline SceneFile parse_scene_text(const std::string& text, const std::string& name) {
-  check_nesting(text, name);
-  check_table_headers(text, name);
+  check_scene_text(text, name);
   try {
     return SceneFile{name, toml::parse(std::string_view(text), std::string_view(name)), {}};
   } catch (const toml::parse_error& error) {
@@ -180,25 +136,29 @@ inline SceneFile parse_scene_text(const std::string& text, const std::string& na
   }
 }
 
-/// True if `key` is a path of bare TOML keys joined by dots, each optionally followed by one
-/// index `[n]` (n of at most 6 digits), the last without an index: `solver.cfl`, `body[0].max`.
-inline bool is_key_path(const std::string& key) {
-  std::size_t k = 0, segments = 0;
+/// Parses the scene file. \throws SceneError if it cannot be read (read_scene_text) or on a syntax error.
+inline SceneFile parse_scene_file(const std::string& path) { return parse_scene_text(read_scene_text(path), path); }
+
+/// The parts of a `--set` key ("body[0].max": "body", "[0]", "max"): bare TOML keys joined by dots, each
+/// optionally followed by one index [n] of at most 6 digits, the last without one. Empty for any other text.
+inline std::vector<std::string> key_parts(const std::string& key) {
+  std::vector<std::string> parts;
   auto bare = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
-  while (true) {
+  for (std::size_t k = 0, names = 1; names <= static_cast<std::size_t>(max_scene_nesting); ++names, ++k) {
     const std::size_t start = k;
     while (k < key.size() && bare(key[k])) ++k;
-    if (k == start || ++segments > static_cast<std::size_t>(max_scene_nesting)) return false;
-    if (k == key.size()) return true;
+    if (k == start) return {};
+    parts.push_back(key.substr(start, k - start));
+    if (k == key.size()) return parts;
     if (key[k] == '[') {
-      const std::size_t digits = ++k;
+      const std::size_t open = k++;
       while (k < key.size() && std::isdigit(static_cast<unsigned char>(key[k]))) ++k;
-      if (k == digits || k - digits > 6 || k >= key.size() || key[k] != ']') return false;
-      if (++k == key.size()) return false;  // the last segment names a key, not a table of an array
+      if (k == open + 1 || k - open > 7 || k + 1 >= key.size() || key[k] != ']') return {};
+      parts.push_back(key.substr(open, ++k - open));
     }
-    if (key[k] != '.') return false;
-    ++k;
+    if (key[k] != '.') return {};
   }
+  return {};
 }
 
 /// Applies one `--set KEY=VALUE`: VALUE is any TOML value (`0.2`, `[160]`, `"lme"`); KEY is a dotted
@@ -209,15 +169,15 @@ inline void apply_override(SceneFile& scene, const std::string& assignment, int 
   if (equals == std::string::npos || equals == 0)
     throw SceneError(origin, 1, assignment.substr(0, 64), "expected KEY=VALUE, e.g. --set solver.cfl=0.2");
   const std::string key = assignment.substr(0, equals);
-  if (!is_key_path(key))
-    throw SceneError(origin, 1, key.substr(0, 64), "not a key: write a dotted path of letters, digits, _ and -, with [n] "
-                                                   "for the n-th [[table]], e.g. solver.cfl or body[0].max (at most " +
-                                                   std::to_string(max_scene_nesting) + " levels)");
+  const std::vector<std::string> parts = key_parts(key);
+  if (parts.empty())
+    throw SceneError(origin, 1, key.substr(0, 64),
+                     "not a key: write a dotted path of letters, digits, _ and -, with [n] for the n-th [[table]], "
+                     "e.g. solver.cfl or body[0].max (at most " + std::to_string(max_scene_nesting) + " levels)");
   const std::string value_text = "value = " + assignment.substr(equals + 1);
   toml::table parsed;
   try {
-    check_nesting(value_text, origin);
-    check_table_headers(value_text, origin);
+    check_scene_text(value_text, origin);
     parsed = toml::parse(std::string_view(value_text), std::string_view(origin));
   } catch (const toml::parse_error& error) {
     throw SceneError(origin, 1, key, "the value is not TOML (" + std::string(error.description()) +
@@ -226,9 +186,8 @@ inline void apply_override(SceneFile& scene, const std::string& assignment, int 
     throw SceneError(origin, 1, key, std::string("the value is not TOML: ") + error.what());
   }
   if (parsed.size() != 1) throw SceneError(origin, 1, key, "give one value only (no newline followed by other keys)");
-  const auto parts = split_key_path(key);
   toml::table* table = &scene.table;
-  std::string path;  // the full path of `table`, normalised like the keys of `overridden`
+  std::string path;  // the path of `table`, as the keys of `overridden` write it
   for (size_t k = 0; k + 1 < parts.size(); ++k) {
     const std::string& part = parts[k];
     path += (path.empty() ? "" : ".") + part;
@@ -251,21 +210,23 @@ inline void apply_override(SceneFile& scene, const std::string& assignment, int 
     if (!table) throw SceneError(origin, 1, key, "'" + part + "' is not a table");
   }
   table->insert_or_assign(parts.back(), *parsed["value"].node());
-  std::string full_key;  // normalised: "body[0].max"
-  for (const auto& part : parts) full_key += (full_key.empty() || part[0] == '[' ? "" : ".") + part;
-  scene.overridden[full_key] = origin;
+  scene.overridden[key] = origin;
 }
 
-/// Reads typed values from one table of the scene, remembering which keys it was asked for so
-/// that unknown keys (usually typos) can be reported.
+/// Reads one table of the scene, remembering which keys it was asked for so that unknown keys (usually
+/// typos) can be reported.
 class SceneReader {
  public:
   SceneReader(const SceneFile& scene, const toml::table& table, std::string prefix)
       : file_(scene.path), overridden_(&scene.overridden), table_(table), prefix_(std::move(prefix)) {}
 
-  bool has(const std::string& key) { known_.insert(key); return table_.contains(key); }
-  /// The key's node (nullptr when absent), for keys of a shape the typed readers below do not read.
-  const toml::node* node(const std::string& key) { known_.insert(key); return table_.get(key); }
+  /// True if the table holds `key`.
+  bool has(const std::string& key) { return node(key) != nullptr; }
+  /// The key's node, nullptr when absent.
+  const toml::node* node(const std::string& key) {
+    known_.insert(key);
+    return table_.get(key);
+  }
 
   /// Where `key` lies: the --set that gave it or created its table, else its line, else its table's (line 1
   /// for a table the scene does not have: its required keys are refused there, by name).
@@ -280,6 +241,7 @@ class SceneReader {
     return {file_, std::max(1, node ? line_of(*node) : line_of(table_))};
   }
 
+  /// \throws SceneError at `key`: what is wrong and what is allowed.
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     const auto [file, line] = location(key);
     throw SceneError(file, line, full(key), what);
@@ -287,15 +249,12 @@ class SceneReader {
 
   /// Fails on the first key of the table that no one asked for.
   void reject_unknown_keys() const {
-    for (const auto& [key, node] : table_) {
-      const std::string name(key.str());
-      if (!known_.count(name)) {
-        std::vector<std::string> allowed(known_.begin(), known_.end());
-        fail(name, "unknown key; allowed here: " + join(allowed));
-      }
-    }
+    for (const auto& [key, node] : table_)
+      if (!known_.count(std::string(key.str())))
+        fail(std::string(key.str()), "unknown key; allowed here: " + join({known_.begin(), known_.end()}));
   }
 
+  /// The key's full name: "solver.cfl", "body[0].min".
   std::string full(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
 
   /// A number as the messages show it ("3e+09", "0.5", "inf", "nan").
@@ -306,12 +265,6 @@ class SceneReader {
   }
 
  private:
-  static std::string join(const std::vector<std::string>& words) {
-    std::string joined;
-    for (const auto& word : words) joined += (joined.empty() ? "" : " | ") + word;
-    return joined;
-  }
-
   std::string file_;
   const std::map<std::string, std::string>* overridden_;
   const toml::table& table_;
@@ -389,12 +342,16 @@ TEST_CASE("Scene file: hostile input is refused with its key: nesting, key paths
   for (int k = 0; k < 63; ++k) fine += "a.";
   CHECK(message_of([&] { parse_scene_text(fine + "b = 1\n", "f.toml"); }) == "no error");
 
-  CHECK(is_key_path("solver.cfl"));
-  CHECK(is_key_path("body[0].max"));
-  CHECK(is_key_path("a-b_c.d9"));
+  CHECK(key_parts("solver.cfl") == std::vector<std::string>{"solver", "cfl"});
+  CHECK(key_parts("body[0].max") == std::vector<std::string>{"body", "[0]", "max"});
+  CHECK(key_parts("a-b_c.d9").size() == 2);
+  std::string levels = "a";
+  for (int k = 1; k < 64; ++k) levels += ".a";
+  CHECK(key_parts(levels).size() == 64);  // 64 levels are allowed, 65 are not
+  CHECK(key_parts(levels + ".a").empty());
   for (const char* bad : {"", ".", "a..b", ".a", "a.", "body[x].max", "body[0]", "body[].max", "body[-1].max", "body[1234567].max",
                           "a b", "a[0][1].b", "\"q\".a"})
-    CHECK_MESSAGE(!is_key_path(bad), bad);
+    CHECK_MESSAGE(key_parts(bad).empty(), bad);
 
   SceneFile scene = parse_scene_text("[t]\nk = 1\n", "h.toml");
   // overrides: keys are checked, and keys inside tables a --set created are located at that --set

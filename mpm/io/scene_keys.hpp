@@ -1,15 +1,16 @@
 /// \file
-/// Every key a scene may hold, declared once: its name, the member of the Scene it fills, its default, its
-/// unit, its range or its choices, and what it means. From this one table come the reading of a scene and
-/// its errors (mpm/io/scene.hpp), `--set`, `mpm run --print-scene` and run.json's resolved scene and units
-/// (mpm/io/scene_resolved.hpp), the key list of `mpm --help` (mpm/cli/help.hpp) and README's key table.
+/// Every key a scene may hold, declared once: its name, the member it fills, its default, unit, range or
+/// choices and meaning. From this table come read_scene (mpm/io/scene.hpp), `--set`, the resolved scene of
+/// --print-scene and run.json (mpm/io/scene_resolved.hpp), `mpm --help`'s key list and README's key table.
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -25,12 +26,16 @@ struct Range {
   bool low_open = false, high_open = false;
   const char* note = "";
 
+  /// True if `value` lies in the range.
   bool holds(double value) const {
     return (low_open ? value > low : value >= low) && (high_open ? value < high : value <= high);
   }
   /// "[0, 0.5)", "(0, 10]"; "[1, 2147483647]" for integers
   std::string text() const {
-    auto show = [](double x) { return x == std::floor(x) && std::abs(x) < 1e18 ? std::to_string(static_cast<long long>(x)) : SceneReader::describe(x); };
+    auto show = [](double x) {
+      const bool integer = x == std::floor(x) && std::abs(x) < 1e18;
+      return integer ? std::to_string(static_cast<long long>(x)) : SceneReader::describe(x);
+    };
     return (low_open ? "(" : "[") + show(low) + ", " + show(high) + (high_open ? ")" : "]");
   }
   /// Why `value` is refused: "must be > 0, got -1.000000", "must be >= 0 (0: no ramp)", "must be in [0, 1]".
@@ -40,9 +45,14 @@ struct Range {
     return "must be in " + text() + note;
   }
 };
-inline Range positive(const char* note = "") { return {0.0, std::numeric_limits<double>::infinity(), true, false, note}; }
-inline Range at_least(double low, const char* note = "") { return {low, std::numeric_limits<double>::infinity(), false, false, note}; }
-inline Range within(double low, double high, const char* note = "", bool high_open = false) { return {low, high, false, high_open, note}; }
+/// (0, inf), [low, inf), [low, high] or [low, high), and the whole numbers from low to high.
+inline Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
+inline Range at_least(double low, const char* note) {
+  return {low, std::numeric_limits<double>::infinity(), false, false, note};
+}
+inline Range within(double low, double high, const char* note = "", bool high_open = false) {
+  return {low, high, false, high_open, note};
+}
 inline Range whole(long long low, long long high) { return {double(low), double(high)}; }
 
 /// A key's default: `required` (none: the scene must give it) or `optional` (none: absent unless given).
@@ -62,14 +72,15 @@ struct SceneKey {
   /// inserts the key's value into `table` (its section of the resolved scene); nothing for an optional key not given
   std::function<void(const Scene&, std::size_t k, toml::table& table)> print;
 
+  /// true for a key absent unless given
   bool is_optional() const { return fallback && !*fallback; }
   /// its table, "" at the top ("body[].min" -> "body")
   std::string section() const {
-    const auto dot = key.find('.');
-    return dot == std::string::npos ? "" : key.substr(0, key.find_first_of(".["));
+    return key.find('.') == std::string::npos ? "" : key.substr(0, key.find_first_of(".["));
   }
-  /// its name in its table ("body[].min" -> "min")
-  std::string name() const { return key.substr(key.find('.') == std::string::npos ? 0 : key.find('.') + 1); }
+  /// its name in its table ("body[].min" -> "min"; npos + 1 is 0: a key at the top is its own name)
+  std::string name() const { return key.substr(key.find('.') + 1); }
+  /// true for a key of an array of tables ("body[].min")
   bool in_array() const { return key.find("[]") != std::string::npos; }
   /// the default's node, in `holder` (an array of `dimension` entries for a per-axis default); nullptr if none
   const toml::node* default_node(toml::table& holder, int dimension) const {
@@ -93,119 +104,97 @@ inline std::optional<double> number_value(const toml::node& node) {
   return std::nullopt;
 }
 
-inline double read_number(SceneReader& reader, const std::string& name, const toml::node& node, const Range& range) {
+/// A finite number within `range`; `entry`: an entry of an array ("must hold numbers only", "entries must be > 0").
+inline double read_number(SceneReader& reader, const std::string& name, const toml::node& node, const Range& range,
+                          bool entry) {
   const auto value = number_value(node);
-  if (!value) reader.fail(name, "must be a number");
-  if (!std::isfinite(*value)) reader.fail(name, "must be a finite number, got " + SceneReader::describe(*value));
-  if (!range.holds(*value)) reader.fail(name, range.refusal(*value));
-  return *value;
+  if (!value) reader.fail(name, entry ? "must hold numbers only" : "must be a number");
+  if (!std::isfinite(*value))
+    reader.fail(name, std::string(entry ? "must hold finite numbers only" : "must be a finite number") + ", got " +
+                          SceneReader::describe(*value));
+  if (range.holds(*value)) return *value;
+  const std::string refusal = range.refusal(*value);
+  reader.fail(name, entry ? "entries " + refusal.substr(0, refusal.find(", got")) : refusal);
 }
 
-/// An integer, checked on the file's 64-bit value whatever its size, and named as written.
-inline int read_integer(SceneReader& reader, const std::string& name, const toml::node& node, const Range& range) {
-  if (!node.is_integer()) reader.fail(name, "must be an integer in " + range.text());
-  const int64_t value = *node.value_exact<int64_t>();
-  if (!(value >= range.low && value <= range.high))
-    reader.fail(name, "must be an integer in " + range.text() + ", got " + std::to_string(value));
-  return static_cast<int>(value);
+/// A whole number within `range`, checked on the file's 64-bit value whatever its size and named as written;
+/// `entry`: an entry of an array, a number (checked before) that may be written as a float (40.0).
+inline int read_integer(SceneReader& reader, const std::string& name, const toml::node& node, const Range& range,
+                        bool entry) {
+  const std::string allowed = (entry ? "entries must be whole numbers in " : "must be an integer in ") + range.text();
+  if (!node.is_integer() && !entry) reader.fail(name, allowed);
+  const double value = *number_value(node);
+  if ((node.is_integer() || value == std::floor(value)) && range.holds(value)) return static_cast<int>(value);
+  const auto integer = node.value_exact<int64_t>();
+  reader.fail(name, allowed + ", got " + (integer ? std::to_string(*integer) : SceneReader::describe(value)));
 }
 
-/// An array of numbers, `size` of them (any number when size < 0).
-inline std::vector<double> read_numbers(SceneReader& reader, const std::string& name, const toml::node& node, int size,
-                                        const Range& range) {
-  const toml::array* array = node.as_array();
-  if (!array) reader.fail(name, "must be an array of numbers, e.g. [1.0]");
-  if (size >= 0 && static_cast<int>(array->size()) != size)
-    reader.fail(name, "has " + std::to_string(array->size()) + " entries; the scene's dimension needs " + std::to_string(size));
-  std::vector<double> values;
-  for (const auto& entry : *array) {
-    const auto value = number_value(entry);
-    if (!value) reader.fail(name, "must hold numbers only");
-    if (!std::isfinite(*value)) reader.fail(name, "must hold finite numbers only, got " + SceneReader::describe(*value));
-    if (!range.holds(*value)) {
-      const std::string refusal = range.refusal(*value);
-      reader.fail(name, "entries " + refusal.substr(0, refusal.find(", got")));  // "entries must be > 0"
-    }
-    values.push_back(*value);
-  }
-  return values;
-}
-
-/// An array of whole numbers ([40] or [40.0]), `size` of them: integers checked on their 64-bit value.
-inline std::vector<int> read_integers(SceneReader& reader, const std::string& name, const toml::node& node, int size,
-                                      const Range& range) {
-  read_numbers(reader, name, node, size, Range{});
-  std::vector<int> values;
-  for (const auto& entry : *node.as_array()) {
-    const double value = *number_value(entry);
-    const std::string written = entry.is_integer() ? std::to_string(*entry.value_exact<int64_t>()) : SceneReader::describe(value);
-    const bool whole = entry.is_integer() || value == std::floor(value);
-    if (!whole || !(value >= range.low && value <= range.high))
-      reader.fail(name, "entries must be whole numbers in " + range.text() + ", got " + written);
-    values.push_back(static_cast<int>(value));
-  }
-  return values;
-}
-
-inline std::string join(const std::vector<std::string>& words) {
-  std::string joined;
-  for (const auto& word : words) joined += (joined.empty() ? "" : " | ") + word;
-  return joined;
-}
-
-inline int read_choice(SceneReader& reader, const std::string& name, const toml::node& node, const std::vector<std::string>& choices) {
-  if (!node.is_string()) reader.fail(name, "must be a string in quotes, one of " + join(choices));
-  const std::string value = *node.value<std::string>();
-  for (std::size_t k = 0; k < choices.size(); ++k)
-    if (choices[k] == value) return static_cast<int>(k);
-  reader.fail(name, "'" + value + "' is not allowed; use one of " + join(choices));
-}
-
-/// The message for a required key the scene does not give.
+/// The node, nullptr when the scene lacks it, as a value of the member's type M within the key's range or choices.
 template <class M>
-std::string missing(const SceneKey& key, int dimension) {
-  if constexpr (std::is_same_v<M, double>) return "missing; a number is required";
-  else if constexpr (std::is_same_v<M, int>) return "missing; an integer in " + key.range.text() + " is required";
-  else if constexpr (std::is_enum_v<M>) return "missing; one of " + join(key.choices) + " is required";
-  else if constexpr (std::is_same_v<M, std::string>) return "missing; a string in quotes is required";
-  else return "missing; an array of " + std::to_string(dimension) + " numbers is required";
-}
-
-/// The node as a value of the member's type M, within the key's range or choices.
-template <class M>
-M convert(SceneReader& reader, const SceneKey& key, const toml::node& node, int dimension) {
+M convert(SceneReader& reader, const SceneKey& key, const toml::node* node, int dimension) {
   const std::string name = key.name();
   const int size = key.fallback && std::string(key.fallback) == "[]" ? -1 : dimension;  // an empty default: any length
-  if constexpr (std::is_same_v<M, double>) return read_number(reader, name, node, key.range);
-  else if constexpr (std::is_same_v<M, int>) return read_integer(reader, name, node, key.range);
-  else if constexpr (std::is_same_v<M, std::vector<double>>) return read_numbers(reader, name, node, size, key.range);
-  else if constexpr (std::is_same_v<M, std::vector<int>>) return read_integers(reader, name, node, size, key.range);
-  else if constexpr (std::is_enum_v<M>) return static_cast<M>(read_choice(reader, name, node, key.choices));
-  else {
+  if constexpr (std::is_same_v<M, double>) {
+    if (!node) reader.fail(name, "missing; a number is required");
+    return read_number(reader, name, *node, key.range, false);
+  } else if constexpr (std::is_same_v<M, int>) {
+    if (!node) reader.fail(name, "missing; an integer in " + key.range.text() + " is required");
+    return read_integer(reader, name, *node, key.range, false);
+  } else if constexpr (std::is_same_v<M, std::vector<double>> || std::is_same_v<M, std::vector<int>>) {
+    constexpr bool integers = std::is_same_v<M, std::vector<int>>;
+    if (!node) reader.fail(name, "missing; an array of " + std::to_string(dimension) + " numbers is required");
+    const toml::array* array = node->as_array();
+    if (!array) reader.fail(name, "must be an array of numbers, e.g. [1.0]");
+    if (size >= 0 && static_cast<int>(array->size()) != size)
+      reader.fail(name, "has " + std::to_string(array->size()) + " entries; the scene's dimension needs " +
+                            std::to_string(size));
+    std::vector<double> numbers;  // all of them numbers before any is checked whole
+    for (const toml::node& entry : *array)
+      numbers.push_back(read_number(reader, name, entry, integers ? Range{} : key.range, true));
+    if constexpr (!integers) {
+      return numbers;
+    } else {
+      std::vector<int> values;
+      for (const toml::node& entry : *array) values.push_back(read_integer(reader, name, entry, key.range, true));
+      return values;
+    }
+  } else if constexpr (std::is_enum_v<M>) {
+    if (!node) reader.fail(name, "missing; one of " + join(key.choices) + " is required");
+    if (!node->is_string()) reader.fail(name, "must be a string in quotes, one of " + join(key.choices));
+    const std::string value = *node->value<std::string>();
+    const auto found = std::find(key.choices.begin(), key.choices.end(), value);
+    if (found == key.choices.end())
+      reader.fail(name, "'" + value + "' is not allowed; use one of " + join(key.choices));
+    return static_cast<M>(found - key.choices.begin());
+  } else {
     static_assert(std::is_same_v<M, std::string>);
-    if (!node.is_string()) reader.fail(name, "must be a string in quotes");
-    return *node.value<std::string>();
+    if (!node) reader.fail(name, "missing; a string in quotes is required");
+    if (!node->is_string()) reader.fail(name, "must be a string in quotes");
+    return *node->value<std::string>();
   }
 }
 
 /// A value as the resolved scene writes it: integers as integers, choices as their words.
 template <class M>
 void insert_value(toml::table& table, const std::string& name, const M& value) {
-  if constexpr (std::is_same_v<M, int>) table.insert(name, static_cast<int64_t>(value));
-  else if constexpr (std::is_enum_v<M>) table.insert(name, name_of(value));
-  else if constexpr (std::is_same_v<M, std::vector<double>> || std::is_same_v<M, std::vector<int>>) {
+  if constexpr (std::is_enum_v<M>) {
+    table.insert(name, name_of(value));
+  } else if constexpr (std::is_same_v<M, std::vector<double>> || std::is_same_v<M, std::vector<int>>) {
     toml::array array;
-    for (const auto entry : value) array.push_back(std::conditional_t<std::is_same_v<M, std::vector<int>>, int64_t, double>(entry));
+    for (const auto entry : value) array.push_back(entry);
     table.insert(name, array);
-  } else table.insert(name, value);
+  } else {
+    table.insert(name, value);
+  }
 }
 
-template <class Owner>
-Owner& owner_of(Scene& scene, std::size_t k) {
+/// The object of type Owner a key of entry k fills: the scene, its RunControl, a body (its own material), a box.
+template <class Owner, class S>
+auto& owner_of(S& scene, std::size_t k) {
   if constexpr (std::is_same_v<Owner, Scene>) return scene;
   else if constexpr (std::is_same_v<Owner, RunControl>) return scene.control;
   else if constexpr (std::is_same_v<Owner, BodySettings>) return scene.bodies.at(k);
-  else if constexpr (std::is_same_v<Owner, MaterialSettings>) return scene.bodies.at(k).material;  // a body's own
+  else if constexpr (std::is_same_v<Owner, MaterialSettings>) return scene.bodies.at(k).material;
   else if constexpr (std::is_same_v<Owner, VelocityBox>) return scene.initial_velocities.at(k);
   else if constexpr (std::is_same_v<Owner, FixedSettings>) return scene.fixed.at(k);
   else return scene.observers.at(k);
@@ -218,20 +207,20 @@ template <class Owner, class M>
 SceneKey key(const std::string& name, M Owner::*member, const char* fallback, const char* unit, const char* meaning,
              Range range = {}) {
   SceneKey key{name, fallback, unit, meaning, range, {}, false, {}, {}};
-  if constexpr (std::is_enum_v<M>) key.choices = choice_names(M{});
+  if constexpr (std::is_enum_v<M>) key.choices.assign(choice_words<M>.begin(), choice_words<M>.end());
   if constexpr (std::is_same_v<M, std::vector<double>> || std::is_same_v<M, std::vector<int>>)
     key.per_axis = fallback && *fallback && *fallback != '[';
   key.read = [member](SceneReader& reader, const SceneKey& key, Scene& scene, std::size_t k) {
     const toml::node* node = reader.node(key.name());
     toml::table holder;
     if (!node && key.is_optional()) return;
-    if (!node) node = key.default_node(holder, scene.dimension);
-    if (!node) reader.fail(key.name(), detail::missing<M>(key, scene.dimension));
-    detail::owner_of<Owner>(scene, k).*member = detail::convert<M>(reader, key, *node, scene.dimension);
+    detail::owner_of<Owner>(scene, k).*member =
+        detail::convert<M>(reader, key, node ? node : key.default_node(holder, scene.dimension), scene.dimension);
   };
-  key.print = [member, name = key.name(), skip_empty = key.is_optional()](const Scene& scene, std::size_t k, toml::table& table) {
-    const M& value = detail::owner_of<Owner>(const_cast<Scene&>(scene), k).*member;  // read only
-    if constexpr (std::is_same_v<M, std::string> || std::is_same_v<M, std::vector<double>>)
+  key.print = [member, name = key.name(), skip_empty = key.is_optional()](const Scene& scene, std::size_t k,
+                                                                          toml::table& table) {
+    const M& value = detail::owner_of<Owner>(scene, k).*member;
+    if constexpr (std::is_same_v<M, std::string>)
       if (skip_empty && value.empty()) return;
     detail::insert_value(table, name, value);
   };
@@ -258,92 +247,99 @@ namespace detail {
 /// product of them exact in 64-bit arithmetic; the budget (scene_budget.hpp) bounds the totals.
 inline constexpr int max_cells_per_axis = 100'000'000;
 
-/// A key of numbers, each a number or a formula of the scene's constants in quotes ("V", "0.05 * L"):
-/// `key = 1.5`, `key = "V"` or `key = [1.5, "a"]`. \throws SceneError naming the key.
-inline std::vector<double> constant_or_formula(SceneReader& reader, const std::string& key,
-                                               const std::map<std::string, double>& constants) {
-  std::vector<const toml::node*> entries;
-  const toml::node* node = reader.node(key);
-  if (const toml::array* array = node->as_array()) {
-    if (array->empty() || array->size() > 2) reader.fail(key, "give one or two values");
-    for (const auto& entry : *array) entries.push_back(&entry);
-  } else {
-    entries.push_back(node);
-  }
-  std::vector<double> values;
+/// exact_parameters.velocity_amplitude or displacement_amplitude: `1.5`, `"V"` or `[1.5, "0.05 * L"]`, each a
+/// number or a formula of the scene's constants in quotes. \throws SceneError naming the key.
+inline void read_amplitudes(SceneReader& reader, const SceneKey& key, Scene& scene, std::size_t) {
+  const toml::node* node = reader.node(key.name());
+  if (!node) return;
+  const toml::array* array = node->as_array();
+  if (array && (array->empty() || array->size() > 2)) reader.fail(key.name(), "give one or two values");
   const FormulaVariables none{0, false};
-  for (const toml::node* entry : entries) {
-    double value = 0.0;
-    if (const auto number = number_value(*entry)) {
-      value = *number;
-    } else if (entry->is_string()) {
-      const std::string text = *entry->value<std::string>();
+  std::vector<double> values;
+  for (std::size_t k = 0; k < (array ? array->size() : 1); ++k) {
+    const toml::node& entry = array ? *array->get(k) : *node;
+    std::optional<double> value = number_value(entry);
+    if (!value && entry.is_string()) {
+      const std::string text = *entry.value<std::string>();
       try {
-        value = Formula(text, constants, none)(nullptr, nullptr, 0.0);
+        value = Formula(text, scene.formulas.constants, none)(nullptr, nullptr, 0.0);
       } catch (const mu::Parser::exception_type& error) {
-        reader.fail(key, formula_problem(error, text, constants, none));
+        reader.fail(key.name(), formula_problem(error, text, scene.formulas.constants, none));
       }
-    } else {
-      reader.fail(key, "must be a number or a formula of the constants in quotes");
     }
-    if (!std::isfinite(value)) reader.fail(key, "must be finite, got " + SceneReader::describe(value));
-    values.push_back(value);
+    if (!value) reader.fail(key.name(), "must be a number or a formula of the constants in quotes");
+    if (!std::isfinite(*value)) reader.fail(key.name(), "must be finite, got " + SceneReader::describe(*value));
+    values.push_back(*value);
   }
-  return values;
+  if (key.name() == "velocity_amplitude") scene.exact_velocity_amplitude = values.at(0);
+  else scene.exact_displacement_amplitude = values;
 }
 
-/// body[].vertices: the polygon's vertices [[x, y], ...], each inside the body's box.
+/// Prints both amplitudes, as numbers (displacement_amplitude's own print does nothing).
+inline void print_amplitudes(const Scene& scene, std::size_t, toml::table& table) {
+  if (scene.exact_velocity_amplitude) table.insert("velocity_amplitude", *scene.exact_velocity_amplitude);
+  if (!scene.exact_displacement_amplitude.empty())
+    insert_value(table, "displacement_amplitude", scene.exact_displacement_amplitude);
+}
+
+/// body[].vertices: the polygon's vertices [[x, y], ...].
 inline void read_vertices(SceneReader& reader, const SceneKey&, Scene& scene, std::size_t k) {
-  BodySettings& body = scene.bodies.at(k);
   const toml::node* node = reader.node("vertices");
   if (!node) return;
   const toml::array* list = node->as_array();
   if (!list || list->size() < 3 || list->size() > 10000)
     reader.fail("vertices", "must be an array of 3 to 10000 points [x, y], e.g. [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]");
-  for (const auto& entry : *list) {
+  for (const toml::node& entry : *list) {
     const toml::array* point = entry.as_array();
     std::array<double, 2> vertex{};
     for (int axis = 0; axis < 2; ++axis) {
       const toml::node* coordinate = point && point->size() == 2 ? point->get(axis) : nullptr;
       const auto value = coordinate ? number_value(*coordinate) : std::nullopt;
-      if (!value || !std::isfinite(*value)) reader.fail("vertices", "every vertex is a point [x, y] of two finite numbers (m)");
+      if (!value || !std::isfinite(*value))
+        reader.fail("vertices", "every vertex is a point [x, y] of two finite numbers (m)");
       vertex[axis] = *value;
     }
-    body.vertices.push_back(vertex);
+    scene.bodies.at(k).vertices.push_back(vertex);
   }
 }
 
+/// Prints a polygon's vertices; nothing for another shape.
 inline void print_vertices(const Scene& scene, std::size_t k, toml::table& table) {
   toml::array vertices;
   for (const auto& vertex : scene.bodies.at(k).vertices) vertices.push_back(toml::array{vertex[0], vertex[1]});
   if (!vertices.empty()) table.insert("vertices", vertices);
 }
 
+/// fixed[].components: the velocity components held, ["x"] or ["x", "y"] (0: x, 1: y).
 inline void read_components(SceneReader& reader, const SceneKey&, Scene& scene, std::size_t k) {
-  const Names axes = scene.dimension == 1 ? Names{"x"} : Names{"x", "y"};
+  std::vector<std::string> axes{"x", "y"};
+  axes.resize(scene.dimension);
   const toml::node* node = reader.node("components");
   if (!node) reader.fail("components", "missing; an array of " + join(axes) + " is required");
   if (!node->is_array()) reader.fail("components", "must be an array of strings, each one of " + join(axes));
-  for (const auto& entry : *node->as_array()) {
+  for (const toml::node& entry : *node->as_array()) {
     const auto value = entry.value<std::string>();
-    if (!value || std::find(axes.begin(), axes.end(), *value) == axes.end()) reader.fail("components", "entries must be one of " + join(axes));
+    if (!value || std::find(axes.begin(), axes.end(), *value) == axes.end())
+      reader.fail("components", "entries must be one of " + join(axes));
     scene.fixed.at(k).components.push_back(*value == "x" ? 0 : 1);
   }
 }
 
+/// Prints the components held as their names.
 inline void print_components(const Scene& scene, std::size_t k, toml::table& table) {
   toml::array names;
   for (int component : scene.fixed.at(k).components) names.push_back(component == 0 ? "x" : "y");
   table.insert("components", names);
 }
 
-/// The formula tables ([constants], [initial_field], [body_force]) are read by read_scene_formulas
-/// (mpm/io/scene_formulas.hpp) and printed as given, their constants resolved to numbers.
+/// Prints [constants] resolved to numbers, the predefined material constants left out ([constants],
+/// [initial_field] and [body_force] are read by read_scene_formulas, mpm/io/scene_formulas.hpp).
 inline void print_constants(const Scene& scene, std::size_t, toml::table& table) {
   for (const auto& [name, value] : scene.formulas.constants)
     if (name != "young_modulus" && name != "poisson_ratio" && name != "density") table.insert(name, value);
 }
 
+/// A print of a formula list (initial_field.velocity, ...) as given, as texts.
 inline auto print_formulas(const std::optional<FormulaList> SceneFormulas::*member, const char* name) {
   return [member, name](const Scene& scene, std::size_t, toml::table& table) {
     const std::optional<FormulaList>& list = scene.formulas.*member;
@@ -354,138 +350,156 @@ inline auto print_formulas(const std::optional<FormulaList> SceneFormulas::*memb
   };
 }
 
-/// exact_parameters.velocity_amplitude and displacement_amplitude: numbers or formulas of the constants.
-inline void read_amplitudes(SceneReader& reader, const SceneKey& key, Scene& scene, std::size_t) {
-  if (!reader.has(key.name())) return;
-  const std::vector<double> values = constant_or_formula(reader, key.name(), scene.formulas.constants);
-  if (key.name() == "velocity_amplitude") scene.exact_velocity_amplitude = values.at(0);
-  else scene.exact_displacement_amplitude = values;
+/// True if output.every is printed: output.times replaces it.
+inline bool every_shown(const Scene& scene, std::size_t) { return scene.control.sample_times.empty(); }
+/// True if body k has a material of its own, printed with it.
+inline bool own_material(const Scene& scene, std::size_t k) {
+  return !(scene.bodies.at(k).material == scene.material());
 }
 
-inline void print_amplitudes(const Scene& scene, std::size_t, toml::table& table) {
-  if (scene.exact_velocity_amplitude) table.insert("velocity_amplitude", *scene.exact_velocity_amplitude);
-  toml::array amplitudes;
-  for (double value : scene.exact_displacement_amplitude) amplitudes.push_back(value);
-  if (!amplitudes.empty()) table.insert("displacement_amplitude", amplitudes);
-}
-
-inline bool every_shown(const Scene& scene, std::size_t) { return scene.control.sample_times.empty(); }  // times replaces every
-inline bool own_material(const Scene& scene, std::size_t k) { return !(scene.bodies.at(k).material == scene.material()); }
+/// The scene's keys, in the order a scene file writes them.
+inline const std::vector<SceneKey> all_keys = {
+    key("title", &Scene::title, "\"untitled\"", "-", "name of the run (printed, written into run.json)"),
+    key("dimension", &Scene::dimension, "1", "-", "1 or 2 (2D is plane strain)", whole(1, 2)),
+    key("exact", &Scene::exact, "\"none\"", "-",
+        "exact solution written beside the observers into exact.csv, drawn by `mpm plot`, evaluated by `mpm exact` "
+        "and `mpm compare`: none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
+        "soil_column (2D column on a roller base under gravity along -y, its height H the top of its bodies; "
+        "mpm/exact/column.hpp) | vibrating_bar (a mode of the dyka_bar's bar; mpm/exact/vibrating_bar.hpp) | "
+        "manufactured_small | manufactured_large (2D square, its body force and initial velocity set by the "
+        "solution; mpm/exact/manufactured.hpp)"),
+    key("exact_parameters.mode", &Scene::exact_mode, "1", "-",
+        "vibrating_bar: the mode n, v(X, 0) = V cos((2n - 1) pi X / 2L)", whole(1, 1000)),
+    custom_key("exact_parameters.velocity_amplitude", optional, "m/s",
+               "vibrating_bar: V, a number or a formula of the constants (\"V\")", read_amplitudes, print_amplitudes),
+    custom_key("exact_parameters.displacement_amplitude", optional, "m",
+               "manufactured_small: A; manufactured_large: [a_x, a_y]; numbers or formulas of the constants",
+               read_amplitudes, [](const Scene&, std::size_t, toml::table&) {}),
+    key("grid.origin", &Scene::origin, "0.0", "m",
+        "lower corner of the box [origin, origin + length] the body's grid spans"),
+    key("grid.length", &Scene::length, required, "m", "size of the box on each axis", positive()),
+    key("grid.cells", &Scene::cells, required, "cells",
+        "cells on each axis; cells must be square (equal length/cells)", whole(1, max_cells_per_axis)),
+    key("grid.margin_min", &Scene::margin_min, "0", "cells",
+        "extra cells below origin on each axis (room to move, supports)", whole(0, max_cells_per_axis)),
+    key("grid.margin_max", &Scene::margin_max, "0", "cells", "extra cells above origin + length on each axis",
+        whole(0, max_cells_per_axis)),
+    key("material.young_modulus", &Scene::young_modulus, required, "Pa",
+        "Young's modulus E of the linear elastic material, Eq. (3)", positive()),
+    key("material.poisson_ratio", &Scene::poisson_ratio, "0.0", "-", "Poisson's ratio nu, in [0, 0.5)",
+        within(0.0, 0.5, "", true)),
+    key("material.density", &Scene::density, required, "kg/m^3", "initial density rho", positive()),
+    key("body[].min", &BodySettings::min, required, "m",
+        "lower corner of a box of whole cells filled with particles; bodies may not overlap (their boxes may touch)"),
+    key("body[].max", &BodySettings::max, required, "m", "upper corner of the box"),
+    key("body[].particles_per_cell", &BodySettings::particles_per_cell, "1", "-", "particles per cell on each axis",
+        whole(1, max_cells_per_axis)),
+    key("body[].velocity", &BodySettings::velocity, "0.0", "m/s", "initial velocity of the body's particles"),
+    key("body[].placement", &BodySettings::placement, "\"uniform\"", "-",
+        "uniform (cell split evenly) | gauss (2x2 Gauss points)"),
+    key("body[].shape", &BodySettings::shape, "\"box\"", "-",
+        "box | ellipse (inscribed in the box [min, max]: a disk in a square box) | polygon (vertices): the particles "
+        "of the box's cells that lie in the shape are kept, each with its share of the cell's mass (2D) | file "
+        "(particles read from file)"),
+    custom_key("body[].vertices", optional, "m",
+               "polygon: its vertices [[x, y], ...], in order, inside [min, max]; a simple polygon (its edges do "
+               "not cross)", read_vertices, print_vertices),
+    key("body[].file", &BodySettings::file, optional, "-",
+        "file: a CSV of the body's particles, x[,y] (m), volume (m^Dim) or mass (kg), optional v_x[,v_y] (m/s), by "
+        "column name; relative to the scene's folder; every particle inside [min, max]"),
+    shown_if(key("body[].young_modulus", &MaterialSettings::young_modulus, optional, "Pa",
+                 "the body's own material: E (default [material]'s); the time step takes the largest sqrt(E/rho); an "
+                 "exact solution refuses a body of another material",
+                 positive()),
+             own_material),
+    shown_if(key("body[].poisson_ratio", &MaterialSettings::poisson_ratio, optional, "-",
+                 "the body's own material: nu in [0, 0.5) (default [material]'s)", within(0.0, 0.5, "", true)),
+             own_material),
+    shown_if(key("body[].density", &MaterialSettings::density, optional, "kg/m^3",
+                 "the body's own material: rho_0, its particles' masses (default [material]'s)", positive()),
+             own_material),
+    key("initial_velocity[].min", &VelocityBox::min, required, "m",
+        "lower corner of a box; particles in it start with `velocity`"),
+    key("initial_velocity[].max", &VelocityBox::max, required, "m", "upper corner of the box"),
+    key("initial_velocity[].velocity", &VelocityBox::velocity, required, "m/s",
+        "their initial velocity (later boxes win)"),
+    key("fixed[].face", &FixedSettings::face, required, "-",
+        "xmin | xmax | ymin | ymax of the box: a rigid wall there and beyond"),
+    custom_key("fixed[].components", required, "-", "velocity components held at zero, e.g. [\"x\"]",
+               read_components, print_components),
+    key("gravity.acceleration", &Scene::gravity, "0.0", "m/s^2", "body force per unit mass"),
+    key("gravity.ramp_period", &Scene::ramp_period, "0.0", "s",
+        "T of the ramp of Eq. (44), full gravity from T/2 on (0: no ramp)", at_least(0.0, " (0: no ramp)")),
+    key("gravity.evaluate_at", &RunControl::body_force_time, "\"step_end\"", "-",
+        "time of a step at which the ramp is read: step_end | step_start"),
+    key("solver.shape", &Scene::shape, "\"linear\"", "-",
+        "shape function: linear | ugimp | lme (Eqs. 34-41) | bspline2 | bspline3 (quadratic, cubic B-splines)"),
+    key("solver.integrator", &Scene::integrator, "\"fe\"", "-",
+        "fe (forward Euler) | npc (Newmark predictor-corrector)"),
+    key("solver.cfl", &RunControl::cfl, "0.5", "-", "Courant number of Eq. (42)",
+        {0.0, 10.0, true, false, ": far beyond any explicit scheme's stability limit"}),
+    key("solver.courant", &RunControl::courant, "\"max\"", "-",
+        "max (Eq. 42 as printed) | sum (the authors' c + |v|)"),
+    key("solver.end_time", &RunControl::end_time, required, "s",
+        "time at which the run ends (the last step lands on it)", positive()),
+    key("solver.lme_gamma", &Scene::lme_gamma, "3.0", "-", "LME locality gamma, beta = gamma / h^2 (Eq. 36)",
+        positive()),
+    key("solver.lme_tol", &Scene::lme_tol, "1e-6", "-",
+        "LME support tolerance, in (0, 1): R = h sqrt(-ln(tol) / gamma)", {0.0, 1.0, true, true, ""}),
+    key("solver.lme_newton_tol", &Scene::lme_newton_tol, "1e-10", "-",
+        "relative tolerance of the LME Newton iteration", positive()),
+    key("solver.lme_max_iterations", &Scene::lme_max_iterations, "100", "-",
+        "most LME Newton iterations before the run fails", whole(1, 1000)),
+    key("solver.lme_beta", &Scene::lme_beta, "\"grid_spacing\"", "-",
+        "grid_spacing | mean_neighbour_distance (the authors' h)"),
+    key("solver.newmark_gamma", &Scene::newmark_gamma, "0.5", "-",
+        "Newmark gamma of the predictor-corrector, in [0, 1]", within(0.0, 1.0)),
+    key("solver.fe_position_velocity", &Scene::fe_position_velocity, "\"updated\"", "-",
+        "updated | start (literal Eqs. 19-22)"),
+    key("solver.npc_position_velocity", &Scene::npc_position_velocity, "\"projected\"", "-",
+        "projected (literal Eq. 33, v_I^k) | corrected (the authors' code, v_I^{k+1}) | predicted"),
+    key("solver.npc_velocity", &Scene::npc_velocity, "\"eq32\"", "-",
+        "eq32 (Eq. 32 as printed: new acceleration only, damped) | average (Eq. 23: Newmark average, undamped)"),
+    key("solver.flip_fraction", &Scene::flip_fraction, "1.0", "-",
+        "forward Euler's PIC/FLIP blend of the particle velocity: 1 FLIP, 0 PIC",
+        within(0.0, 1.0, " (1: FLIP, 0: PIC)")),
+    key("solver.stress_update", &Scene::stress_update, "\"usf\"", "-",
+        "forward Euler's stress update: usf (first, the paper's) | usl (last) | musl (last, from the particle "
+        "velocities projected again); paper/11_stress_update.md"),
+    key("solver.energy_growth_limit", &RunControl::energy_growth_limit, "10.0", "-",
+        "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off",
+        at_least(0.0, " (0: no check)")),
+    custom_key("constants.<name>", optional, "-",
+               "a named constant: a number, or a formula of other constants (pi, young_modulus, poisson_ratio and "
+               "density are predefined); usable in every formula",
+               nullptr, print_constants),
+    custom_key("initial_field.velocity", optional, "m/s",
+               "initial velocity per axis as formulas (muParser, in quotes) of x, X (y, Y) and the constants; "
+               "[[initial_velocity]] boxes win",
+               nullptr, print_formulas(&SceneFormulas::initial_velocity, "velocity")),
+    custom_key("initial_field.stress", optional, "Pa", "initial stress as formulas: [xx] in 1D, [xx, yy, xy] in 2D",
+               nullptr, print_formulas(&SceneFormulas::initial_stress, "stress")),
+    custom_key("body_force.acceleration", optional, "m/s^2",
+               "body force per unit mass per axis as formulas of x, X (y, Y) and t, added to [gravity]", nullptr,
+               print_formulas(&SceneFormulas::body_force, "acceleration")),
+    key("observer[].name", &ObserverSettings::name, required, "-",
+        "column name in observers.csv (letters, digits, _)"),
+    key("observer[].position", &ObserverSettings::position, required, "m",
+        "the particle nearest this point at t = 0 is observed (run.json: `observed`); exact.csv holds the exact "
+        "solution at the point itself, which must lie in the body"),
+    shown_if(key("output.every", &RunControl::sample_every, "1", "steps",
+                 "observers and energy sampled every n steps and at the end", whole(1, 2147483647)),
+             every_shown),
+    key("output.snapshots", &RunControl::snapshot_times, "[]", "s",
+        "times at which every particle is written (CSV, VTK, .pvd); [] writes none"),
+    key("output.times", &RunControl::sample_times, "[]", "s",
+        "times at which observers, energy and exact.csv are sampled, each landed on by a step; replaces every"),
+};
 
 }  // namespace detail
 
 /// The scene's keys, in the order a scene file writes them.
-inline const std::vector<SceneKey>& scene_keys() {
-  using namespace detail;
-  static const std::vector<SceneKey> keys = {
-      key("title", &Scene::title, "\"untitled\"", "-", "name of the run (printed, written into run.json)"),
-      key("dimension", &Scene::dimension, "1", "-", "1 or 2 (2D is plane strain)", whole(1, 2)),
-      key("exact", &Scene::exact, "\"none\"", "-",
-          "exact solution written beside the observers into exact.csv, drawn by `mpm plot`, evaluated by `mpm exact` "
-          "and `mpm compare`: none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
-          "soil_column (2D column on a roller base under gravity along -y, its height H the top of its bodies; "
-          "mpm/exact/column.hpp) | vibrating_bar (a mode of the dyka_bar's bar; mpm/exact/vibrating_bar.hpp) | "
-          "manufactured_small | manufactured_large (2D square, its body force and initial velocity set by the solution; "
-          "mpm/exact/manufactured.hpp)"),
-      key("exact_parameters.mode", &Scene::exact_mode, "1", "-", "vibrating_bar: the mode n, v(X, 0) = V cos((2n - 1) pi X / 2L)",
-          whole(1, 1000)),
-      custom_key("exact_parameters.velocity_amplitude", optional, "m/s",
-                 "vibrating_bar: V, a number or a formula of the constants (\"V\")", read_amplitudes, print_amplitudes),
-      custom_key("exact_parameters.displacement_amplitude", optional, "m",
-                 "manufactured_small: A; manufactured_large: [a_x, a_y]; numbers or formulas of the constants", read_amplitudes,
-                 [](const Scene&, std::size_t, toml::table&) {}),  // printed with velocity_amplitude
-      key("grid.origin", &Scene::origin, "0.0", "m", "lower corner of the box [origin, origin + length] the body's grid spans"),
-      key("grid.length", &Scene::length, required, "m", "size of the box on each axis", positive()),
-      key("grid.cells", &Scene::cells, required, "cells", "cells on each axis; cells must be square (equal length/cells)",
-          whole(1, max_cells_per_axis)),
-      key("grid.margin_min", &Scene::margin_min, "0", "cells", "extra cells below origin on each axis (room to move, supports)",
-          whole(0, max_cells_per_axis)),
-      key("grid.margin_max", &Scene::margin_max, "0", "cells", "extra cells above origin + length on each axis",
-          whole(0, max_cells_per_axis)),
-      key("material.young_modulus", &Scene::young_modulus, required, "Pa", "Young's modulus E of the linear elastic material, Eq. (3)",
-          positive()),
-      key("material.poisson_ratio", &Scene::poisson_ratio, "0.0", "-", "Poisson's ratio nu, in [0, 0.5)", within(0.0, 0.5, "", true)),
-      key("material.density", &Scene::density, required, "kg/m^3", "initial density rho", positive()),
-      key("body[].min", &BodySettings::min, required, "m", "lower corner of a box of whole cells filled with particles; bodies may not overlap (their boxes may touch)"),
-      key("body[].max", &BodySettings::max, required, "m", "upper corner of the box"),
-      key("body[].particles_per_cell", &BodySettings::particles_per_cell, "1", "-", "particles per cell on each axis",
-          whole(1, max_cells_per_axis)),
-      key("body[].velocity", &BodySettings::velocity, "0.0", "m/s", "initial velocity of the body's particles"),
-      key("body[].placement", &BodySettings::placement, "\"uniform\"", "-", "uniform (cell split evenly) | gauss (2x2 Gauss points)"),
-      key("body[].shape", &BodySettings::shape, "\"box\"", "-",
-          "box | ellipse (inscribed in the box [min, max]: a disk in a square box) | polygon (vertices): the particles of "
-          "the box's cells that lie in the shape are kept, each with its share of the cell's mass (2D) | file (particles read from file)"),
-      custom_key("body[].vertices", optional, "m", "polygon: its vertices [[x, y], ...], in order, inside [min, max]; a simple polygon (its edges do not cross)",
-                 read_vertices, print_vertices),
-      key("body[].file", &BodySettings::file, optional, "-",
-          "file: a CSV of the body's particles, x[,y] (m), volume (m^Dim) or mass (kg), optional v_x[,v_y] (m/s), by column "
-          "name; relative to the scene's folder; every particle inside [min, max]"),
-      shown_if(key("body[].young_modulus", &MaterialSettings::young_modulus, optional, "Pa",
-                   "the body's own material: E (default [material]'s); the time step takes the largest sqrt(E/rho); an exact solution refuses a body of another material", positive()), own_material),
-      shown_if(key("body[].poisson_ratio", &MaterialSettings::poisson_ratio, optional, "-",
-                   "the body's own material: nu in [0, 0.5) (default [material]'s)", within(0.0, 0.5, "", true)), own_material),
-      shown_if(key("body[].density", &MaterialSettings::density, optional, "kg/m^3",
-                   "the body's own material: rho_0, its particles' masses (default [material]'s)", positive()), own_material),
-      key("initial_velocity[].min", &VelocityBox::min, required, "m", "lower corner of a box; particles in it start with `velocity`"),
-      key("initial_velocity[].max", &VelocityBox::max, required, "m", "upper corner of the box"),
-      key("initial_velocity[].velocity", &VelocityBox::velocity, required, "m/s", "their initial velocity (later boxes win)"),
-      key("fixed[].face", &FixedSettings::face, required, "-", "xmin | xmax | ymin | ymax of the box: a rigid wall there and beyond"),
-      custom_key("fixed[].components", required, "-", "velocity components held at zero, e.g. [\"x\"]", read_components, print_components),
-      key("gravity.acceleration", &Scene::gravity, "0.0", "m/s^2", "body force per unit mass"),
-      key("gravity.ramp_period", &Scene::ramp_period, "0.0", "s", "T of the ramp of Eq. (44), full gravity from T/2 on (0: no ramp)",
-          at_least(0.0, " (0: no ramp)")),
-      key("gravity.evaluate_at", &RunControl::body_force_time, "\"step_end\"", "-",
-          "time of a step at which the ramp is read: step_end | step_start"),
-      key("solver.shape", &Scene::shape, "\"linear\"", "-",
-          "shape function: linear | ugimp | lme (Eqs. 34-41) | bspline2 | bspline3 (quadratic, cubic B-splines)"),
-      key("solver.integrator", &Scene::integrator, "\"fe\"", "-", "fe (forward Euler) | npc (Newmark predictor-corrector)"),
-      key("solver.cfl", &RunControl::cfl, "0.5", "-", "Courant number of Eq. (42)",
-          {0.0, 10.0, true, false, ": far beyond any explicit scheme's stability limit"}),
-      key("solver.courant", &RunControl::courant, "\"max\"", "-", "max (Eq. 42 as printed) | sum (the authors' c + |v|)"),
-      key("solver.end_time", &RunControl::end_time, required, "s", "time at which the run ends (the last step lands on it)", positive()),
-      key("solver.lme_gamma", &Scene::lme_gamma, "3.0", "-", "LME locality gamma, beta = gamma / h^2 (Eq. 36)", positive()),
-      key("solver.lme_tol", &Scene::lme_tol, "1e-6", "-", "LME support tolerance, in (0, 1): R = h sqrt(-ln(tol) / gamma)",
-          {0.0, 1.0, true, true, ""}),
-      key("solver.lme_newton_tol", &Scene::lme_newton_tol, "1e-10", "-", "relative tolerance of the LME Newton iteration", positive()),
-      key("solver.lme_max_iterations", &Scene::lme_max_iterations, "100", "-", "most LME Newton iterations before the run fails",
-          whole(1, 1000)),
-      key("solver.lme_beta", &Scene::lme_beta, "\"grid_spacing\"", "-", "grid_spacing | mean_neighbour_distance (the authors' h)"),
-      key("solver.newmark_gamma", &Scene::newmark_gamma, "0.5", "-", "Newmark gamma of the predictor-corrector, in [0, 1]",
-          within(0.0, 1.0)),
-      key("solver.fe_position_velocity", &Scene::fe_position_velocity, "\"updated\"", "-", "updated | start (literal Eqs. 19-22)"),
-      key("solver.npc_position_velocity", &Scene::npc_position_velocity, "\"projected\"", "-",
-          "projected (literal Eq. 33, v_I^k) | corrected (the authors' code, v_I^{k+1}) | predicted"),
-      key("solver.npc_velocity", &Scene::npc_velocity, "\"eq32\"", "-",
-          "eq32 (Eq. 32 as printed: new acceleration only, damped) | average (Eq. 23: Newmark average, undamped)"),
-      key("solver.flip_fraction", &Scene::flip_fraction, "1.0", "-", "forward Euler's PIC/FLIP blend of the particle velocity: 1 FLIP, 0 PIC",
-          within(0.0, 1.0, " (1: FLIP, 0: PIC)")),
-      key("solver.stress_update", &Scene::stress_update, "\"usf\"", "-",
-          "forward Euler's stress update: usf (first, the paper's) | usl (last) | musl (last, from the particle velocities "
-          "projected again); paper/11_stress_update.md"),
-      key("solver.energy_growth_limit", &RunControl::energy_growth_limit, "10.0", "-",
-          "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off", at_least(0.0, " (0: no check)")),
-      custom_key("constants.<name>", optional, "-",
-                 "a named constant: a number, or a formula of other constants (pi, young_modulus, poisson_ratio and density "
-                 "are predefined); usable in every formula",
-                 nullptr, print_constants),
-      custom_key("initial_field.velocity", optional, "m/s",
-                 "initial velocity per axis as formulas (muParser, in quotes) of x, X (y, Y) and the constants; [[initial_velocity]] boxes win", nullptr,
-                 print_formulas(&SceneFormulas::initial_velocity, "velocity")),
-      custom_key("initial_field.stress", optional, "Pa", "initial stress as formulas: [xx] in 1D, [xx, yy, xy] in 2D", nullptr,
-                 print_formulas(&SceneFormulas::initial_stress, "stress")),
-      custom_key("body_force.acceleration", optional, "m/s^2",
-                 "body force per unit mass per axis as formulas of x, X (y, Y) and t, added to [gravity]", nullptr,
-                 print_formulas(&SceneFormulas::body_force, "acceleration")),
-      key("observer[].name", &ObserverSettings::name, required, "-", "column name in observers.csv (letters, digits, _)"),
-      key("observer[].position", &ObserverSettings::position, required, "m", "the particle nearest this point at t = 0 is observed (run.json: `observed`); exact.csv holds the exact solution at the point itself, which must lie in the body"),
-      shown_if(key("output.every", &RunControl::sample_every, "1", "steps", "observers and energy sampled every n steps and at the end",
-                   whole(1, 2147483647)), every_shown),
-      key("output.snapshots", &RunControl::snapshot_times, "[]", "s", "times at which every particle is written (CSV, VTK, .pvd); [] writes none"),
-      key("output.times", &RunControl::sample_times, "[]", "s",
-          "times at which observers, energy and exact.csv are sampled, each landed on by a step; replaces every"),
-  };
-  return keys;
-}
+inline const std::vector<SceneKey>& scene_keys() { return detail::all_keys; }
 
 TEST_CASE("Scene keys: ranges, integers of any size and choices are refused with the key's own words") {
   auto message_of = [](const std::string& text, const SceneKey& key) {

@@ -1,15 +1,12 @@
 /// \file
-/// The resolved scene: every key of a validated Scene, defaults filled in, as a TOML table.
-/// `mpm run --print-scene` prints it (in the order of mpm/io/scene_keys.hpp, units as comments) and
-/// run.json carries it as JSON, so a run says exactly what it ran.
+/// The resolved scene: every key of a validated Scene, defaults filled in, as a TOML table. `mpm run
+/// --print-scene` prints it (keys in the order of scene_keys(), units as comments); run.json holds it as JSON.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <charconv>
 #include <cstdio>
-#include <map>
 #include <ostream>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,71 +18,66 @@ namespace mpm::io {
 
 namespace detail {
 
-/// A TOML value as text: floats in their shortest round-trip form (1e-06, 0.5, 200000000000.0).
+/// A TOML value as the scenes write it: floats in their shortest round-trip form (1e-06, 0.5, 200000000000.0),
+/// strings in double quotes, arrays on one line.
 inline std::string toml_text(const toml::node& node) {
+  std::string text;
   if (const auto* array = node.as_array()) {
-    std::string text = "[";
-    for (size_t k = 0; k < array->size(); ++k) text += (k ? ", " : "") + toml_text(*array->get(k));
-    return text + "]";
+    for (const toml::node& entry : *array) text += (text.empty() ? "" : ", ") + toml_text(entry);
+    return "[" + text + "]";
   }
   if (node.is_floating_point()) {
     char buffer[64];
-    const double value = *node.value<double>();
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-    std::string text(buffer, end);
-    if (text.find_first_of(".eni") == std::string::npos) text += ".0";  // 200000000000 -> 200000000000.0
-    return text;
+    text.assign(buffer, std::to_chars(buffer, buffer + sizeof buffer, *node.value<double>()).ptr);
+    return text.find_first_of(".eni") == std::string::npos ? text + ".0" : text;  // 2e11 is 200000000000.0
   }
-  if (node.is_string()) {  // a basic string, as the scenes write them
-    std::string text = "\"";
-    const std::string value = *node.value<std::string>();
-    for (char character : value) {
-      if (character == '"' || character == '\\') text += std::string("\\") + character;
-      else if (character == '\n') text += "\\n";
-      else if (static_cast<unsigned char>(character) < 0x20 || character == 0x7f) {
-        char escaped[8];
-        std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned char>(character));
-        text += escaped;
-      } else text += character;
-    }
-    return text + "\"";
+  if (!node.is_string()) {
+    std::ostringstream out;
+    node.visit([&](auto&& value) { out << value; });
+    return out.str();
   }
-  std::ostringstream out;
-  node.visit([&](auto&& value) { out << value; });
-  return out.str();
+  const std::string value = *node.value<std::string>();
+  for (const char character : value) {
+    char escaped[8] = {character, '\0'};
+    if (character == '"' || character == '\\') std::snprintf(escaped, sizeof escaped, "\\%c", character);
+    if (character == '\n') std::snprintf(escaped, sizeof escaped, "\\n");
+    else if (static_cast<unsigned char>(character) < 0x20 || character == 0x7f)
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned char>(character));
+    text += escaped;
+  }
+  return "\"" + text + "\"";
+}
+
+/// The number of entries of the array of tables `section` ([[body]]) the scene holds.
+inline std::size_t entries_of(const Scene& scene, const std::string& section) {
+  if (section == "body") return scene.bodies.size();
+  if (section == "initial_velocity") return scene.initial_velocities.size();
+  return section == "fixed" ? scene.fixed.size() : scene.observers.size();
 }
 
 }  // namespace detail
 
-/// Every key of the scene with its value, defaults included, by the table of mpm/io/scene_keys.hpp.
+/// Every key of the scene with its value, defaults included, by the table of mpm/io/scene_keys.hpp; an
+/// optional table the scene does not give is absent, an array of tables it does not give is empty.
 inline toml::table resolved_table(const Scene& scene) {
   toml::table table;
-  auto section_of = [&](const SceneKey& key, std::size_t k) -> toml::table& {  // entry k of the key's table, made as needed
-    const std::string section = key.section();
-    if (section.empty()) return table;
-    if (!key.in_array()) {
-      if (!table.contains(section)) table.insert(section, toml::table{});
-      return *table.get(section)->as_table();
-    }
-    if (!table.contains(section)) table.insert(section, toml::array{});
-    toml::array& array = *table.get(section)->as_array();
-    while (array.size() <= k) array.push_back(toml::table{});
-    return *array.get(k)->as_table();
-  };
-  const std::map<std::string, std::size_t> entries{{"body", scene.bodies.size()},
-                                                    {"initial_velocity", scene.initial_velocities.size()},
-                                                    {"fixed", scene.fixed.size()},
-                                                    {"observer", scene.observers.size()}};
   for (const SceneKey& key : scene_keys()) {
-    if (!key.in_array()) {
+    const std::string section = key.section();
+    if (section.empty()) {
+      key.print(scene, 0, table);
+    } else if (!key.in_array()) {
       toml::table values;
       key.print(scene, 0, values);
-      if (!values.empty()) section_of(key, 0).insert(values.begin(), values.end());  // an optional table given, or not
-      continue;
+      if (values.empty()) continue;  // an optional key not given
+      toml::table& entry = *table.insert(section, toml::table{}).first->second.as_table();
+      entry.insert(values.begin(), values.end());
+    } else {
+      toml::array& entries = *table.insert(section, toml::array{}).first->second.as_array();
+      for (std::size_t k = 0; k < detail::entries_of(scene, section); ++k) {
+        if (entries.size() <= k) entries.push_back(toml::table{});
+        key.print(scene, k, *entries.get(k)->as_table());
+      }
     }
-    const std::size_t count = entries.at(key.section());
-    if (count == 0 && !table.contains(key.section())) table.insert(key.section(), toml::array{});
-    for (std::size_t k = 0; k < count; ++k) key.print(scene, k, section_of(key, k));
   }
   return table;
 }
@@ -102,38 +94,32 @@ inline std::string resolved_json(const Scene& scene) {
 inline void print_resolved_scene(const Scene& scene, std::ostream& out) {
   const toml::table table = resolved_table(scene);
   out << "# " << scene.file << " resolved: every key, defaults filled in (mpm run --print-scene)\n";
-  auto print_line = [&](const SceneKey& key, const std::string& name, const toml::node& value) {
-    std::string line = name + " = " + detail::toml_text(value);
-    if (std::string(key.unit) != "-") line += std::string(line.size() < 40 ? 40 - line.size() : 1, ' ') + "# " + key.unit;
-    out << line << "\n";
-  };
-  auto print_key = [&](const SceneKey& key, const toml::table& section) {
-    if (key.name() == "<name>") {  // a table of free names: every entry
-      for (const auto& [name, value] : section) print_line(key, std::string(name.str()), value);
-      return;
+  auto print_keys = [&](const std::string& section, const toml::table& values) {  // the section's keys, in order
+    for (const SceneKey& key : scene_keys()) {
+      if (key.section() != section) continue;
+      for (const auto& [name, value] : values) {
+        if (name.str() != key.name() && key.name() != "<name>") continue;  // constants.<name>: every entry
+        std::string line = std::string(name.str()) + " = " + detail::toml_text(value);
+        const int padding = std::max(1, 40 - static_cast<int>(line.size()));  // units from column 41
+        if (std::string(key.unit) != "-") line += std::string(padding, ' ') + "# " + key.unit;
+        out << line << "\n";
+      }
     }
-    if (const toml::node* value = section.get(key.name())) print_line(key, key.name(), *value);
   };
+  print_keys("", table);
   std::vector<std::string> sections;  // in order of first appearance
-  for (const auto& key : scene_keys()) {
+  for (const SceneKey& key : scene_keys()) {
     const std::string section = key.section();
-    if (section.empty()) print_key(key, table);
-    else if (std::find(sections.begin(), sections.end(), section) == sections.end()) sections.push_back(section);
-  }
-  for (const auto& section : sections) {
-    if (!table.contains(section)) continue;  // an optional table the scene does not give
-    auto print_section = [&](const toml::table& values) {
-      for (const auto& key : scene_keys())
-        if (key.section() == section) print_key(key, values);
-    };
-    if (const auto* array = table.get(section)->as_array()) {
-      for (const auto& entry : *array) {
+    if (section.empty() || !table.contains(section) || (!sections.empty() && sections.back() == section)) continue;
+    sections.push_back(section);
+    if (const toml::array* array = table.get(section)->as_array()) {
+      for (const toml::node& entry : *array) {
         out << "\n[[" << section << "]]\n";
-        print_section(*entry.as_table());
+        print_keys(section, *entry.as_table());
       }
     } else {
       out << "\n[" << section << "]\n";
-      print_section(*table.get(section)->as_table());
+      print_keys(section, *table.get(section)->as_table());
     }
   }
 }

@@ -1,7 +1,6 @@
 /// \file
-/// What a scene says, typed: the settings of a run, each choice an enum. The keys that fill them, with
-/// their defaults, units and ranges, are declared once, in mpm/io/scene_keys.hpp; read_scene
-/// (mpm/io/scene.hpp) reads and validates them.
+/// What a scene says, typed: the settings of a run, each choice an enum. The keys that fill them, with their
+/// defaults, units and ranges, are declared once, in mpm/io/scene_keys.hpp.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -29,29 +28,28 @@ enum class StressUpdate { usf, usl, musl };
 enum class ExactKind { none, dyka_bar, soil_column, vibrating_bar, manufactured_small, manufactured_large };
 enum class WallFace { xmin, xmax, ymin, ymax };
 
-/// The names of a choice, in the order of its enum's values: the words a scene writes.
-using Names = std::vector<std::string>;
-inline const Names& choice_names(ShapeKind) { static const Names names{"linear", "ugimp", "lme", "bspline2", "bspline3"}; return names; }
-inline const Names& choice_names(IntegratorKind) { static const Names names{"fe", "npc"}; return names; }
-inline const Names& choice_names(StressUpdate) { static const Names names{"usf", "usl", "musl"}; return names; }
-inline const Names& choice_names(ExactKind) {
-  static const Names names{"none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"};
-  return names;
-}
-inline const Names& choice_names(WallFace) { static const Names names{"xmin", "xmax", "ymin", "ymax"}; return names; }
-inline const Names& choice_names(BodyShape::Kind) { static const Names names{"box", "ellipse", "polygon", "file"}; return names; }
-inline const Names& choice_names(Placement) { static const Names names{"uniform", "gauss"}; return names; }
-inline const Names& choice_names(BodyForceTime) { static const Names names{"step_end", "step_start"}; return names; }
-inline const Names& choice_names(CourantSpeed) { static const Names names{"max", "sum"}; return names; }
-inline const Names& choice_names(LmeOptions::BetaRule) { static const Names names{"grid_spacing", "mean_neighbour_distance"}; return names; }
-inline const Names& choice_names(EulerPositionVelocity) { static const Names names{"updated", "start"}; return names; }
-inline const Names& choice_names(NewmarkPositionVelocity) { static const Names names{"projected", "corrected", "predicted"}; return names; }
-inline const Names& choice_names(NewmarkParticleVelocity) { static const Names names{"eq32", "average"}; return names; }
+/// The words a scene writes for the choices of an enum, in the order of its values.
+template <class Choice>
+constexpr std::array<const char*, 0> choice_words{};
+template <> inline constexpr std::array choice_words<ShapeKind>{"linear", "ugimp", "lme", "bspline2", "bspline3"};
+template <> inline constexpr std::array choice_words<IntegratorKind>{"fe", "npc"};
+template <> inline constexpr std::array choice_words<StressUpdate>{"usf", "usl", "musl"};
+template <> inline constexpr std::array choice_words<ExactKind>{
+    "none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"};
+template <> inline constexpr std::array choice_words<WallFace>{"xmin", "xmax", "ymin", "ymax"};
+template <> inline constexpr std::array choice_words<BodyShape::Kind>{"box", "ellipse", "polygon", "file"};
+template <> inline constexpr std::array choice_words<Placement>{"uniform", "gauss"};
+template <> inline constexpr std::array choice_words<BodyForceTime>{"step_end", "step_start"};
+template <> inline constexpr std::array choice_words<CourantSpeed>{"max", "sum"};
+template <> inline constexpr std::array choice_words<LmeOptions::BetaRule>{"grid_spacing", "mean_neighbour_distance"};
+template <> inline constexpr std::array choice_words<EulerPositionVelocity>{"updated", "start"};
+template <> inline constexpr std::array choice_words<NewmarkPositionVelocity>{"projected", "corrected", "predicted"};
+template <> inline constexpr std::array choice_words<NewmarkParticleVelocity>{"eq32", "average"};
 
 /// The word a scene writes for a choice ("lme" for ShapeKind::lme).
 template <class Choice>
-const std::string& name_of(Choice choice) {
-  return choice_names(choice).at(static_cast<std::size_t>(choice));
+std::string name_of(Choice choice) {
+  return choice_words<Choice>.at(static_cast<std::size_t>(choice));
 }
 
 /// A linear elastic material, Eq. (3): the scene's [material], or a body's own (its keys young_modulus,
@@ -78,7 +76,8 @@ struct BodySettings {
 inline BodyShape body_shape(const BodySettings& body) {
   BodyShape shape;
   shape.kind = body.shape;
-  for (size_t axis = 0; axis < body.min.size(); ++axis) shape.min[axis] = body.min[axis], shape.max[axis] = body.max[axis];
+  std::copy(body.min.begin(), body.min.end(), shape.min.begin());
+  std::copy(body.max.begin(), body.max.end(), shape.max.begin());
   shape.vertices = body.vertices;
   return shape;
 }
