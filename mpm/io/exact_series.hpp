@@ -92,7 +92,7 @@ class ExactWriter : public Monitor<Dim> {
 
  private:
   Monitor<Dim>& next_;
-  std::vector<ObserverSettings> observers_;
+  const std::vector<ObserverSettings>& observers_;  ///< the scene's, which outlives the run
   std::unique_ptr<SceneExactSolution> solution_;
   std::vector<std::string> columns_;
   std::unique_ptr<OutputFile> out_;  ///< exact.csv
