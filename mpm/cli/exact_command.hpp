@@ -1,12 +1,7 @@
 /// \file
-/// `mpm exact SCENE.toml [--set KEY=VALUE]... --at X[,Y] [--at ...] (--times T0:DT:T1 | --times-file FILE)
-///            [--strain small|finite]`
-/// prints, without running the solver, the exact solution the scene's `exact` key names
-/// (mpm/io/exact_solution.hpp) at every material point asked (its reference position, in the scene's
-/// coordinates) and every time asked, as CSV in SI units: 1D `t,X,u_x,v_x,sigma_xx`; 2D
-/// `t,X,Y,u_x,u_y,v_x,v_y,sigma_xx,sigma_yy,sigma_xy`, one row per time and point (times in the order
-/// given, points in the order of --at). Every option is validated before anything is printed.
-/// Exit codes: 0 done; 2 a bad scene or option (one line on stderr, nothing printed); 3 stdout failed.
+/// `mpm exact SCENE.toml --at X[,Y]... (--times T0:DT:T1 | --times-file FILE) [--set KEY=VALUE]... [--strain S]`:
+/// the scene's exact solution (mpm/io/exact_solution.hpp) at every point and time asked, as CSV, without running
+/// the solver. Every option is validated first. Exit codes: 0 done; 2 a bad scene or option; 3 stdout failed.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -14,49 +9,51 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <sstream>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "mpm/io/exact_solution.hpp"
-#include "mpm/io/scene.hpp"
 #include "mpm/cli/options.hpp"
 #include "mpm/io/csv_file.hpp"
+#include "mpm/io/exact_solution.hpp"
 
 namespace mpm::cli {
 
-/// "X" or "X,Y" with `dimension` entries; nullopt for anything else.
-inline std::optional<std::vector<double>> parse_point(const std::string& text, int dimension) {
-  std::vector<double> point;
+/// The numbers of `text` separated by `separator`, each read whole (parse_number); nullopt if one is not a number.
+inline std::optional<std::vector<double>> parse_numbers(const std::string& text, char separator) {
+  std::vector<double> values;
   std::stringstream stream(text);
-  for (std::string part; std::getline(stream, part, ',');) {
+  for (std::string part; std::getline(stream, part, separator);) {
     const auto value = parse_number(part);
     if (!value) return std::nullopt;
-    point.push_back(*value);
+    values.push_back(*value);
   }
-  if (static_cast<int>(point.size()) != dimension || (!text.empty() && text.back() == ',')) return std::nullopt;
+  if (!text.empty() && text.back() == separator) return std::nullopt;
+  return values;
+}
+
+/// "X" or "X,Y" with `dimension` entries; nullopt for anything else.
+inline std::optional<std::vector<double>> parse_point(const std::string& text, int dimension) {
+  auto point = parse_numbers(text, ',');
+  if (point && static_cast<int>(point->size()) != dimension) return std::nullopt;
   return point;
 }
 
 /// The most times `mpm exact` and `mpm compare` take (a bound on the output and the memory).
 inline constexpr std::size_t most_times = 1'000'000;
 
-/// `T0:DT:T1`: T0, T0 + DT, ... up to T1 (T1 included when (T1 - T0)/DT is whole to 1e-9), each
-/// computed as T0 + k DT. Empty with `error` set when the text is not such a range.
+/// `T0:DT:T1`: T0 + k DT for k = 0, 1, ... up to T1 (included when (T1 - T0)/DT is whole to 1e-9).
+/// Empty with `error` set when the text is not such a range.
 inline std::vector<double> parse_time_range(const std::string& text, std::string& error) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  for (std::string part; std::getline(stream, part, ':');) parts.push_back(part);
-  std::vector<std::optional<double>> values;
-  for (const auto& part : parts) values.push_back(parse_number(part));
-  if (parts.size() != 3 || !values[0] || !values[1] || !values[2] || text.back() == ':') {
+  const auto values = parse_numbers(text, ':');
+  if (!values || values->size() != 3) {
     error = "'" + text + "' is not a range T0:DT:T1 of times in seconds (e.g. 0:1e-6:2e-4)";
     return {};
   }
-  const double first = *values[0], step = *values[1], last = *values[2];
+  const double first = (*values)[0], step = (*values)[1], last = (*values)[2];
   if (first < 0.0 || !(step > 0.0) || last < first) {
     error = "'" + text + "': needs 0 <= T0 <= T1 and DT > 0";
     return {};
@@ -71,26 +68,18 @@ inline std::vector<double> parse_time_range(const std::string& text, std::string
   return times;
 }
 
-/// A file of times, one number (seconds, >= 0) per line; blank lines and lines starting with # are skipped,
-/// and a first line that is not a number is a header. Empty with `error` ("FILE:LINE: ...") on a problem.
+/// A file of times, one number (seconds, >= 0) per line; blank lines and # comments are skipped, and a first line
+/// that is not a number is a header. Empty with `error` ("FILE:LINE: ...") on a problem.
 inline std::vector<double> read_times_file(const std::string& path, std::string& error) {
   io::CsvFile file(path);
   std::vector<double> times;
-  std::string text;
   bool first = true;
-  while (file.next_line(text)) {
+  for (std::string text; file.next_line(text); first = false) {
     const auto value = parse_number(text);
-    if (!value && first) {
-      first = false;
-      continue;
-    }
-    first = false;
-    if (!value || *value < 0.0) {
-      error = file.where() + "'" + text + "' is not a time in seconds >= 0";
-      return {};
-    }
-    if (times.size() == most_times) {
-      error = file.where() + "more than 1000000 times";
+    if (!value && first) continue;
+    const bool time = value && *value >= 0.0;
+    if (!time || times.size() == most_times) {
+      error = file.where() + (time ? "more than 1000000 times" : "'" + text + "' is not a time in seconds >= 0");
       return {};
     }
     times.push_back(*value);
@@ -107,75 +96,55 @@ struct ExactOptions {
   std::string strain = "small";
 };
 
-/// Reads the scene and checks the points and the strain measure against it; on a problem, writes one
-/// line to `err` and returns nullopt. \throws nothing but what reading the scene throws (SceneError).
-inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, std::vector<std::vector<double>>& points, std::ostream& err) {
+/// Reads the scene and checks the strain measure and the points against it; on a problem, writes one line to `err`
+/// and returns nullopt. \throws SceneError for a bad scene, or one that names no exact solution.
+inline std::optional<io::Scene> load_exact_scene(const ExactOptions& options, std::vector<std::vector<double>>& points,
+                                                 std::ostream& err) {
   io::SceneFile file = io::parse_scene_file(options.scene_path);
-  for (size_t k = 0; k < options.overrides.size(); ++k) io::apply_override(file, options.overrides[k], static_cast<int>(k) + 1);
+  for (size_t k = 0; k < options.overrides.size(); ++k)
+    io::apply_override(file, options.overrides[k], static_cast<int>(k) + 1);
   io::Scene scene = io::read_scene(file);
-  if (scene.exact == io::ExactKind::none) {
-    err << "error: " << options.scene_path << ": exact: the scene names no exact solution (exact = \"none\"); give one of "
-        << "dyka_bar, soil_column, vibrating_bar, manufactured_small, manufactured_large (mpm exact --help)\n";
-    return std::nullopt;
-  }
-  if (options.strain != "small" && options.strain != "finite") {
-    err << "error: --strain: '" << options.strain << "' is not allowed; use small | finite\n";
-    return std::nullopt;
-  }
-  if (options.strain == "finite" && !io::has_finite_strain_reference(scene.exact)) {
-    err << "error: --strain: '" << io::name_of(scene.exact) << "' has no finite-strain reference (soil_column and vibrating_bar have one)\n";
-    return std::nullopt;
-  }
-  if (options.points.empty()) {
-    err << "error: --at: missing; give at least one material point, e.g. --at " << (scene.dimension == 1 ? "0.0" : "0.5,9.5") << "\n";
-    return std::nullopt;
-  }
-  if (options.points.size() > 1000) {
-    err << "error: --at: at most 1000 points\n";
-    return std::nullopt;
-  }
   const io::SceneExactSolution bounds(scene, io::StrainMeasure::small);  // cheap for every solution at small strain
-  for (const auto& text : options.points) {
-    const auto point = parse_point(text, scene.dimension);
-    if (!point) {
-      err << "error: --at " << text << ": give " << (scene.dimension == 1 ? "X (m)" : "X,Y (m)") << " for this "
-          << scene.dimension << "D scene\n";
-      return std::nullopt;
-    }
-    const std::string outside = bounds.outside(*point);
-    if (!outside.empty()) {
-      err << "error: --at " << text << ": " << outside << "\n";
-      return std::nullopt;
-    }
-    points.push_back(*point);
+  const std::string where = scene.dimension == 1 ? "X (m) for this 1D scene" : "X,Y (m) for this 2D scene";
+  std::string problem;
+  if (options.strain == "finite" && !io::has_finite_strain_reference(scene.exact))
+    problem = "--strain: '" + io::name_of(scene.exact) +
+              "' has no finite-strain reference (soil_column and "
+              "vibrating_bar have one)";
+  else if (options.points.size() > 1000)
+    problem = "--at: at most 1000 points";
+  for (size_t k = 0; k < options.points.size() && problem.empty(); ++k) {
+    const auto point = parse_point(options.points[k], scene.dimension);
+    const std::string why = point ? bounds.outside(*point) : "give " + where;
+    if (!why.empty()) problem = "--at " + options.points[k] + ": " + why;
+    if (point) points.push_back(*point);
   }
-  return scene;
+  if (problem.empty()) return scene;
+  err << "error: " << problem << "\n";
+  return std::nullopt;
 }
 
-/// The finite-strain vibrating bar keeps the bar's state at each time and steps up to the last: at most
-/// 4000 times and SceneExactSolution::most_finite_strain_steps steps. False, with a line on `err`, beyond.
+/// The finite-strain vibrating bar keeps the bar's state at each time and steps up to the last: at most 4000 times
+/// and SceneExactSolution::most_finite_strain_steps steps. False, with a line on `err`, beyond.
 inline bool finite_strain_times_fit(const io::Scene& scene, const std::string& strain, const std::vector<double>& times,
                                     const std::string& option, std::ostream& err) {
   if (strain != "finite" || scene.exact != io::ExactKind::vibrating_bar) return true;
-  if (times.size() > 4000) {
-    err << "error: " << option << ": at most 4000 times for the finite-strain vibrating bar (it keeps the bar's state at each)\n";
-    return false;
-  }
-  const double last = *std::max_element(times.begin(), times.end());
-  if (io::SceneExactSolution::finite_strain_steps(scene, last) > io::SceneExactSolution::most_finite_strain_steps) {
-    err << "error: " << option << ": the finite-strain vibrating bar would take "
-        << io::SceneReader::describe(io::SceneExactSolution::finite_strain_steps(scene, last)) << " steps to reach t = " << last
-        << " s; at most 2e6 (about " << io::SceneReader::describe(io::SceneExactSolution::most_finite_strain_steps /
-                                                                  io::SceneExactSolution::finite_strain_steps(scene, 1.0))
+  using Solution = io::SceneExactSolution;
+  const double last = *std::max_element(times.begin(), times.end()), steps = Solution::finite_strain_steps(scene, last);
+  if (times.size() > 4000)
+    err << "error: " << option
+        << ": at most 4000 times for the finite-strain vibrating bar (it keeps the bar's state at each)\n";
+  else if (steps > Solution::most_finite_strain_steps)
+    err << "error: " << option << ": the finite-strain vibrating bar would take " << io::SceneReader::describe(steps)
+        << " steps to reach t = " << last << " s; at most 2e6 (about "
+        << io::SceneReader::describe(Solution::most_finite_strain_steps / Solution::finite_strain_steps(scene, 1.0))
         << " s of this bar)\n";
-    return false;
-  }
-  return true;
+  return times.size() <= 4000 && steps <= Solution::most_finite_strain_steps;
 }
 
 /// Times within a million periods of the solution (SceneExactSolution::period); false, with a line on `err`, beyond.
-inline bool times_within_precision(const io::SceneExactSolution& solution, const std::vector<double>& times, const std::string& option,
-                                   std::ostream& err) {
+inline bool times_within_precision(const io::SceneExactSolution& solution, const std::vector<double>& times,
+                                   const std::string& option, std::ostream& err) {
   const double last = *std::max_element(times.begin(), times.end());
   if (last <= 1e6 * solution.period()) return true;
   err << "error: " << option << ": t = " << last << " s is more than a million periods (" << solution.period()
@@ -200,28 +169,20 @@ inline void declare_exact_options(CLI::App& app, ExactOptions& options) {
 
 /// The solutions `mpm exact` evaluates, for its help.
 inline const char* exact_solutions =
-    "The solutions (scene key `exact`; their parameters come from the scene, SI units):\n"
-    "    dyka_bar            1D elastic bar [origin, origin + L], free at xmin, fixed at xmax (appendix A.1-A.19):\n"
-    "                        L = grid.length (m), E = material.young_modulus (Pa), rho = material.density (kg/m^3);\n"
-    "                        piecewise-constant initial velocity (m/s) from body.velocity, [initial_field] velocity and\n"
-    "                        [[initial_velocity]] boxes (later boxes win), initial stress (Pa) from [initial_field] stress\n"
-    "                        (default 0); every jump located to 1e-14 L\n"
-    "    soil_column         2D column on a roller base under gravity (paper/07_exact_column.md): H = the top of its\n"
-    "                        bodies above grid.origin (m; the grid may reach higher), M = E(1 - nu)/((1 + nu)(1 - 2 nu))\n"
-    "                        (Pa), rho, g = -gravity.acceleration[1] (m/s^2), the\n"
-    "                        ramp of Eq. (44) with T = gravity.ramp_period (s; 0: none); 200 modes; sigma_xx =\n"
-    "                        nu/(1 - nu) sigma_yy. --strain finite: the static settlement at finite (logarithmic)\n"
-    "                        strain under full gravity, at every t (v = 0)\n"
-    "    vibrating_bar       the bar of dyka_bar in its mode n: v(X, 0) = V cos((2n - 1) pi X / 2L), unstressed;\n"
-    "                        n = exact_parameters.mode (default 1), V = exact_parameters.velocity_amplitude (m/s,\n"
-    "                        required). --strain finite: sigma = E ln(stretch), solved by finite differences\n"
-    "                        (512 cells, second order; at most 4000 times)\n"
-    "    manufactured_small  2D square [origin, origin + L]^2, every face held: u = A sin(omega t) (sin kX sin kY,\n"
-    "                        sin 2kX sin kY), k = pi/L, omega = c_p k; A = exact_parameters.displacement_amplitude\n"
-    "                        (m, required, |A| pi/L < 0.01); E, nu, rho of [material]\n"
-    "    manufactured_large  2D square, rollers on every face, each axis stretched on its own at finite strain;\n"
-    "                        [a_x, a_y] = exact_parameters.displacement_amplitude (m, required)\n"
-    "  Both manufactured solutions give the run (mpm run) its body force and initial velocity (mpm/exact/manufactured.hpp).\n";
+    "The solutions (scene key `exact`; SI units; L = grid.length, E, nu, rho of [material]; README's key table):\n"
+    "    dyka_bar            1D bar [origin, origin + L] free at xmin, fixed at xmax (appendix A.1-A.19); its\n"
+    "                        piecewise-constant initial velocity from body.velocity, [initial_field] and\n"
+    "                        [[initial_velocity]] (later boxes win), initial stress (default 0) from [initial_field]\n"
+    "    soil_column         2D column on a roller base (paper/07_exact_column.md), H the top of its bodies above the\n"
+    "                        origin, g = -gravity.acceleration[1] ramped over gravity.ramp_period (Eq. 44; 0: none)\n"
+    "    vibrating_bar       dyka_bar's bar in mode n = exact_parameters.mode (default 1), v(X, 0) = V cos((2n - 1)\n"
+    "                        pi X / 2L) with V = exact_parameters.velocity_amplitude (m/s, required)\n"
+    "    manufactured_small  2D square, faces held, u = A sin(omega t) (sin kX sin kY, sin 2kX sin kY), k = pi/L; A =\n"
+    "                        exact_parameters.displacement_amplitude (m, required, |A| pi/L < 0.01)\n"
+    "    manufactured_large  2D square on rollers, each axis stretched at finite strain; [a_x, a_y] =\n"
+    "                        exact_parameters.displacement_amplitude (m, required)\n"
+    "  --strain finite: soil_column's static settlement at logarithmic strain (v = 0); vibrating_bar's sigma =\n"
+    "  E ln(stretch) by finite differences (512 cells, at most 4000 times).\n";
 
 /// `mpm exact`'s parser, its options bound to `options` and to the times asked (`range` or `times_file`).
 inline std::unique_ptr<CommandParser> exact_parser(ExactOptions& options, std::string& range, std::string& times_file) {
@@ -236,7 +197,8 @@ inline std::unique_ptr<CommandParser> exact_parser(ExactOptions& options, std::s
   declare_exact_options(*app, options);
   const auto not_empty = CLI::Validator([](const std::string& text) { return text.empty() ? "empty" : ""; }, "");
   auto* times = app->add_option("--times", range, "the times T0, T0 + DT, ... <= T1 (s): T0:DT:T1")->check(not_empty);
-  auto* file = app->add_option("--times-file", times_file, "one time (s) per line; # comments and a first header line are skipped")
+  auto* file = app->add_option("--times-file", times_file,
+                               "one time (s) per line; # comments and a first header line are skipped")
                    ->check(not_empty);
   times->excludes(file);
   app->footer(exact_solutions);
@@ -250,33 +212,35 @@ inline std::string exact_usage() {
   return exact_parser(options, range, times_file)->help();
 }
 
-/// `mpm exact`; returns the exit code.
+/// `mpm exact`: the rows for every time (in the order given) and point (in the order of --at); returns the exit code.
 inline int exact_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   ExactOptions options;
-  std::string range, times_file;
-  if (const auto code = parse_arguments(*exact_parser(options, range, times_file), arguments, "exact", out, err)) return *code;
+  std::string range, times_file, problem;
+  if (const auto code = parse_arguments(*exact_parser(options, range, times_file), arguments, "exact", out, err))
+    return *code;
   if (range.empty() && times_file.empty()) {
     err << "error: --times: missing; give --times T0:DT:T1 or --times-file FILE\n";
     return 2;
   }
-  std::string problem;
-  const std::vector<double> times = range.empty() ? read_times_file(times_file, problem) : parse_time_range(range, problem);
+  const std::vector<double> times =
+      range.empty() ? read_times_file(times_file, problem) : parse_time_range(range, problem);
   if (!problem.empty()) {
     err << "error: " << (range.empty() ? "--times-file " : "--times ") << problem << "\n";
     return 2;
   }
-  std::vector<std::vector<double>> points;
   try {
+    std::vector<std::vector<double>> points;
     const auto scene = load_exact_scene(options, points, err);
-    if (!scene) return 2;
-    if (!times_within_precision(io::SceneExactSolution(*scene, io::StrainMeasure::small), times, "--times", err)) return 2;
-    if (!finite_strain_times_fit(*scene, options.strain, times, "--times", err)) return 2;
+    if (!scene ||
+        !times_within_precision(io::SceneExactSolution(*scene, io::StrainMeasure::small), times, "--times", err) ||
+        !finite_strain_times_fit(*scene, options.strain, times, "--times", err))
+      return 2;
     if (static_cast<double>(times.size()) * points.size() > 1e6) {
       err << "error: --times: " << times.size() << " times at " << points.size() << " points: at most 1000000 rows\n";
       return 2;
     }
-    const io::SceneExactSolution solution(*scene, options.strain == "finite" ? io::StrainMeasure::finite : io::StrainMeasure::small,
-                                          times);
+    const auto strain = options.strain == "finite" ? io::StrainMeasure::finite : io::StrainMeasure::small;
+    const io::SceneExactSolution solution(*scene, strain, times);
     const std::vector<std::string> quantities = io::exact_quantities(scene->dimension);
     std::ostringstream text;  // all of it first: nothing is printed if an evaluation fails
     text.precision(15);

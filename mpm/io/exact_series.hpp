@@ -1,39 +1,30 @@
 /// \file
-/// exact.csv: the exact solution the scene names (its `exact` key, mpm/io/exact_solution.hpp), small strain,
-/// at the material point each observer names (its `position`, a reference position; the observed particle is
-/// the one nearest it, whose own reference position run.json gives) and at every sample time, beside observers.csv:
-///   dyka_bar, vibrating_bar  t, then per observer NAME.v_x, NAME.sigma_xx   (paper/06_exact_bar.md, mpm/exact/bar.hpp)
-///   soil_column              t, then per observer NAME.u_y, NAME.sigma_yy   (paper/07_exact_column.md, mpm/exact/column.hpp)
-///   manufactured_*           t, then per observer NAME.v_x, NAME.v_y, NAME.sigma_xx, NAME.sigma_yy, NAME.sigma_xy
-/// The columns carry observers.csv's names, so `mpm plot` draws each beside its computed series.
-/// The exact solutions take their parameters from the scene and the initial particles, never from
-/// the solver's state during the run.
+/// exact.csv beside observers.csv: the scene's small-strain exact solution (mpm/io/exact_solution.hpp) at the
+/// material point each observer names and at every sample time, under observers.csv's names (NAME.v_x, ...), so
+/// that `mpm plot` draws each beside its computed series. Its parameters come from the scene and the initial particles.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iomanip>
 #include <memory>
+#include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "mpm/exact/bar.hpp"
 #include "mpm/io/exact_solution.hpp"
 #include "mpm/io/run_writer.hpp"
-#include "mpm/io/scene.hpp"
 #include "mpm/simulation.hpp"
 
 namespace mpm::io {
 
-/// The Dyka bar's initial data from the initial particles: each particle's domain
-/// [X_p - l_p, X_p + l_p] (from the bar's free end) carries its initial velocity, unstressed;
-/// neighbouring domains of equal velocity are merged.
+/// The Dyka bar's initial data from the initial particles: each particle's domain [X_p - l_p, X_p + l_p] (from the
+/// bar's free end) carries its initial velocity, unstressed; neighbouring domains of equal velocity are merged.
 template <int Dim>
 std::vector<exact::BarPiece> bar_pieces(const Scene& scene, const Particles<Dim>& initial) {
   std::vector<int> order(initial.size());
-  for (int p = 0; p < initial.size(); ++p) order[p] = p;
+  std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return initial.reference_position[a][0] < initial.reference_position[b][0]; });
   std::vector<exact::BarPiece> pieces;
@@ -41,7 +32,8 @@ std::vector<exact::BarPiece> bar_pieces(const Scene& scene, const Particles<Dim>
     const double from = initial.reference_position[p][0] - initial.half_length[p][0] - scene.origin[0];
     const double to = initial.reference_position[p][0] + initial.half_length[p][0] - scene.origin[0];
     const double velocity = initial.velocity[p][0];
-    if (!pieces.empty() && pieces.back().velocity == velocity && std::abs(pieces.back().to - from) < 1e-9 * scene.spacing)
+    if (!pieces.empty() && pieces.back().velocity == velocity &&
+        std::abs(pieces.back().to - from) < 1e-9 * scene.spacing)
       pieces.back().to = to;
     else
       pieces.push_back({from, to, velocity, 0.0});
@@ -49,37 +41,38 @@ std::vector<exact::BarPiece> bar_pieces(const Scene& scene, const Particles<Dim>
   return pieces;
 }
 
-/// Writes exact.csv at every sample, then passes everything on to the run's writer.
+/// Writes exact.csv at every sample (none when the scene names no exact solution), then passes everything on.
 template <int Dim>
 class ExactWriter : public Monitor<Dim> {
  public:
-  ExactWriter(const std::string& folder, const Scene& scene, const Particles<Dim>& initial, Monitor<Dim>& next) : next_(next) {
+  ExactWriter(const std::string& folder, const Scene& scene, const Particles<Dim>& initial, Monitor<Dim>& next)
+      : next_(next), observers_(scene.observers) {
     if (scene.exact == ExactKind::none) return;
-    for (const auto& observer : scene.observers) reference_.push_back(observer.position);  // the material point named
     std::optional<std::vector<exact::BarPiece>> pieces;
     if (scene.exact == ExactKind::dyka_bar) pieces = bar_pieces(scene, initial);
     solution_ = std::make_unique<SceneExactSolution>(scene, StrainMeasure::small, std::vector<double>{}, pieces);
     columns_ = exact_columns(scene.exact);
     out_ = std::make_unique<OutputFile>(folder + "/exact.csv");
     *out_ << "t";
-    for (const auto& observer : scene.observers)
+    for (const auto& observer : observers_)
       for (const auto& column : columns_) *out_ << "," << observer.name << "." << column;
     *out_ << "\n";
   }
 
-  /// The columns per observer: dyka_bar and vibrating_bar v_x, sigma_xx; soil_column u_y (the settlement,
-  /// beside observers.csv's NAME.u_y), sigma_yy; the manufactured solutions v and sigma.
+  /// The columns per observer: soil_column u_y (the settlement, as observers.csv's) and sigma_yy; the bars v_x and
+  /// sigma_xx; the manufactured solutions v and sigma.
   static std::vector<std::string> exact_columns(ExactKind exact) {
     if (exact == ExactKind::soil_column) return {"u_y", "sigma_yy"};
     if (exact == ExactKind::dyka_bar || exact == ExactKind::vibrating_bar) return {"v_x", "sigma_xx"};
     return {"v_x", "v_y", "sigma_xx", "sigma_yy", "sigma_xy"};
   }
 
+  /// One row of exact.csv at each observer's material point (its `position`, a reference position).
   void sample(long step, double time, const Particles<Dim>& particles, const Balances<Dim>& balances) override {
     if (out_) {
       *out_ << time;
-      for (const auto& point : reference_) {
-        const ExactState state = solution_->at(point, time);
+      for (const auto& observer : observers_) {
+        const ExactState state = solution_->at(observer.position, time);
         for (const auto& column : columns_) *out_ << "," << state.quantity(column);
       }
       *out_ << "\n";
@@ -92,15 +85,17 @@ class ExactWriter : public Monitor<Dim> {
   void finish() {
     if (out_) out_->close();
   }
-  void snapshot(int index, double time, const Particles<Dim>& particles) override { next_.snapshot(index, time, particles); }
+  void snapshot(int index, double time, const Particles<Dim>& particles) override {
+    next_.snapshot(index, time, particles);
+  }
   void progress(double time, double end_time) override { next_.progress(time, end_time); }
 
  private:
   Monitor<Dim>& next_;
-  std::vector<std::vector<double>> reference_;  ///< each observer's material point X, in the scene's coordinates
+  const std::vector<ObserverSettings>& observers_;  ///< the scene's, which outlives the run
   std::unique_ptr<SceneExactSolution> solution_;
   std::vector<std::string> columns_;
-  std::unique_ptr<OutputFile> out_;  ///< exact.csv; none when the scene names no exact solution
+  std::unique_ptr<OutputFile> out_;  ///< exact.csv
 };
 
 TEST_CASE("exact.csv: the bar's initial data from the particles, merged where the velocity is equal") {

@@ -1,27 +1,14 @@
 /// \file
-/// The exact solution a scene names (its `exact` key), at any material point and time: what `mpm exact`
-/// prints, what `mpm compare` measures a CSV against and what a run's exact.csv holds.
-///
-/// The solutions themselves live in mpm/exact/ and share no code with the solver; this file only
-/// reads their parameters from the scene (length, material, initial data, gravity, [exact_parameters]).
-/// Every value is in SI units: displacement u since t = 0 (m), velocity v (m/s), Cauchy stress sigma
-/// (Pa, tension positive), at the material point X given by its reference position in the scene's
-/// coordinates (the grid's origin is the scene's, as for observer positions).
-///
-///   dyka_bar            exact::ElasticBar (appendix A.1-A.19): the bar's initial data are the scene's, read
-///                       from body.velocity, [initial_field] and [[initial_velocity]] as pieces (below)
-///   soil_column         exact::SoilColumn (paper/07_exact_column.md); with StrainMeasure::finite the static
-///                       finite-strain settlement exact::SoilColumnLogStrain at every t (v = 0); in both,
-///                       sigma_xx = nu/(1 - nu) sigma_yy (the column is laterally confined, or nu = 0)
-///   vibrating_bar       exact::VibratingBar, mode n and amplitude V of [exact_parameters]; with
-///                       StrainMeasure::finite exact::FiniteStrainBar (512 cells), solved up to the times asked
-///   manufactured_small  exact::ManufacturedSmall on [origin, origin + L]^2, A of [exact_parameters]
-///   manufactured_large  exact::ManufacturedLarge, [a_x, a_y] of [exact_parameters] (finite strain as the solver's)
+/// The exact solution a scene names (its `exact` key) at any material point X (its reference position, in the
+/// scene's coordinates) and time, in SI units: what `mpm exact` prints, `mpm compare` measures against and exact.csv
+/// holds. The solutions live in mpm/exact/ and share no code with the solver; this file reads their parameters.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -42,100 +29,88 @@ namespace mpm::io {
 /// updated-Lagrangian model (soil_column, vibrating_bar).
 enum class StrainMeasure { small, finite };
 
-/// One material point at one time: u (m), v (m/s), Cauchy stress (Pa, tension positive).
-struct ExactState {
-  double u_x = 0.0, u_y = 0.0, v_x = 0.0, v_y = 0.0, sigma_xx = 0.0, sigma_yy = 0.0, sigma_xy = 0.0;
-
-  /// The quantity by its name in exact_quantities(); \throws std::invalid_argument for another name.
-  double quantity(const std::string& name) const {
-    if (name == "u_x") return u_x;
-    if (name == "u_y") return u_y;
-    if (name == "v_x") return v_x;
-    if (name == "v_y") return v_y;
-    if (name == "sigma_xx") return sigma_xx;
-    if (name == "sigma_yy") return sigma_yy;
-    if (name == "sigma_xy") return sigma_xy;
-    throw std::invalid_argument("no quantity '" + name + "'");
-  }
-};
-
-/// The quantities of a dimension, in the order of `mpm exact`'s columns: 1D u_x, v_x, sigma_xx;
-/// 2D u_x, u_y, v_x, v_y, sigma_xx, sigma_yy, sigma_xy.
+/// The quantities of a dimension, in the order of `mpm exact`'s columns.
 inline std::vector<std::string> exact_quantities(int dimension) {
   if (dimension == 1) return {"u_x", "v_x", "sigma_xx"};
   return {"u_x", "u_y", "v_x", "v_y", "sigma_xx", "sigma_yy", "sigma_xy"};
 }
 
+/// One material point at one time: u since t = 0 (m), v (m/s), Cauchy stress (Pa, tension positive).
+struct ExactState {
+  double u_x = 0.0, u_y = 0.0, v_x = 0.0, v_y = 0.0, sigma_xx = 0.0, sigma_yy = 0.0, sigma_xy = 0.0;
+
+  /// The quantity by its name in exact_quantities(); \throws std::invalid_argument for another name.
+  double quantity(const std::string& name) const {
+    static const std::vector<std::string> names = exact_quantities(2);  // in the order of the members
+    const auto found = std::find(names.begin(), names.end(), name);
+    if (found == names.end()) throw std::invalid_argument("no quantity '" + name + "'");
+    return std::array{u_x, u_y, v_x, v_y, sigma_xx, sigma_yy, sigma_xy}[found - names.begin()];
+  }
+};
+
+/// 0 for a displacement (u_...), 1 for a velocity (v_...), 2 for a stress.
+inline int quantity_kind(const std::string& quantity) {
+  return quantity.rfind("u_", 0) == 0 ? 0 : quantity.rfind("v_", 0) == 0 ? 1 : 2;
+}
+
 /// The unit of a quantity of exact_quantities().
 inline std::string quantity_unit(const std::string& quantity) {
-  if (quantity.rfind("u_", 0) == 0) return "m";
-  if (quantity.rfind("v_", 0) == 0) return "m/s";
-  return "Pa";
+  return std::array{"m", "m/s", "Pa"}[quantity_kind(quantity)];
 }
 
 /// True if the scene's exact solution has a finite-strain reference (StrainMeasure::finite).
-inline bool has_finite_strain_reference(ExactKind exact) { return exact == ExactKind::soil_column || exact == ExactKind::vibrating_bar; }
+inline bool has_finite_strain_reference(ExactKind exact) {
+  return exact == ExactKind::soil_column || exact == ExactKind::vibrating_bar;
+}
 
 namespace detail {
 
-/// The dyka_bar's initial data read from the scene as pieces of constant velocity and stress on the bar
-/// [0, L] (measured from the free end, origin): v_0 is the velocity of the body that holds the point, replaced by [initial_field] velocity
-/// where given, replaced by each [[initial_velocity]] box that holds the point (later boxes win, as at the
-/// particles); sigma_0 is [initial_field] stress, else 0. The bar is sampled at the midpoints of 4096
-/// equal intervals and every change between neighbours is located by bisection to 1e-14 L, so each jump
-/// is exact to round-off; a piece shorter than L/4096 between two samples is missed.
-/// \throws SceneError when a formula is not finite, or when the data take more than 1024 values
-/// (not piecewise constant: a smooth field is the vibrating_bar's).
+/// The dyka_bar's initial data as pieces of constant (v_0, sigma_0) on [0, L] from the free end: v_0 the body's,
+/// replaced by [initial_field]'s and then by the last [[initial_velocity]] box holding the point; sigma_0
+/// [initial_field]'s or 0. Sampled at 4096 midpoints, each change located by bisection to 1e-14 L.
+/// \throws SceneError when a formula is not finite, or the data take more than 1024 values (not piecewise constant).
 inline std::vector<exact::BarPiece> scene_bar_pieces(const Scene& scene) {
-  const double origin = scene.origin[0], length = scene.length[0];
-  const SceneFormulas& formulas = scene.formulas;
+  const double length = scene.length[0];
+  const auto& velocity_formula = scene.formulas.initial_velocity;
+  const auto& stress_formula = scene.formulas.initial_stress;
   auto formula_at = [&](const FormulaList& list, double x) {
     const double value = list.components[0](&x, &x, 0.0);
-    if (!std::isfinite(value)) {
-      std::ostringstream what;
-      what << "'" << list.components[0].text() << "' is " << value << " at X = " << x << "; dyka_bar needs finite data";
-      throw SceneError(list.source.file, list.source.line, list.source.key, what.str());
-    }
-    return value;
+    if (std::isfinite(value)) return value;
+    std::ostringstream what;
+    what << "'" << list.components[0].text() << "' is " << value << " at X = " << x << "; dyka_bar needs finite data";
+    throw SceneError(list.source.file, list.source.line, list.source.key, what.str());
   };
-  auto data_at = [&](double X) {  // (v_0, sigma_0) at X from the free end
-    const double x = origin + X;
-    double velocity = 0.0;  // of the body that holds x (the bodies fill the bar; the first wins at a shared end)
+  auto data_at = [&](double X) {  // (v_0, sigma_0) at X from the free end; the first body wins at a shared end
+    const double x = scene.origin[0] + X;
+    double velocity = 0.0;
     for (auto body = scene.bodies.rbegin(); body != scene.bodies.rend(); ++body)
       if (x >= body->min[0] && x <= body->max[0]) velocity = body->velocity[0];
-    if (formulas.initial_velocity) velocity = formula_at(*formulas.initial_velocity, x);
+    if (velocity_formula) velocity = formula_at(*velocity_formula, x);
     for (const auto& box : scene.initial_velocities)
       if (x >= box.min[0] && x <= box.max[0]) velocity = box.velocity[0];
-    const double stress = formulas.initial_stress ? formula_at(*formulas.initial_stress, x) : 0.0;
-    return std::pair{velocity, stress};
+    return std::pair{velocity, stress_formula ? formula_at(*stress_formula, x) : 0.0};
   };
   constexpr int intervals = 4096;
-  constexpr size_t most_pieces = 1024;
   std::vector<exact::BarPiece> pieces;
-  double from = 0.0;
   auto previous = data_at(0.5 * length / intervals);
   for (int i = 1; i <= intervals; ++i) {
-    const double X = (i + 0.5) * length / intervals;
-    const auto current = i < intervals ? data_at(X) : previous;
+    const auto current = i < intervals ? data_at((i + 0.5) * length / intervals) : previous;
     if (i < intervals && current == previous) continue;
-    double jump = length;
-    if (i < intervals) {  // bisection between the midpoints: the value left of lower is `previous`
-      double lower = (i - 0.5) * length / intervals, upper = X;
-      while (upper - lower > 1e-14 * length) {
-        const double middle = 0.5 * (lower + upper);
-        (data_at(middle) == previous ? lower : upper) = middle;
-      }
-      jump = 0.5 * (lower + upper);
+    double lower = (i - 0.5) * length / intervals, upper = (i + 0.5) * length / intervals;
+    while (i < intervals && upper - lower > 1e-14 * length) {  // left of lower the data are `previous`
+      const double middle = 0.5 * (lower + upper);
+      (data_at(middle) == previous ? lower : upper) = middle;
     }
-    pieces.push_back({from, jump, previous.first, previous.second});
-    if (pieces.size() > most_pieces) {
-      const std::string key = formulas.initial_velocity ? "initial_field.velocity" : "initial_field.stress";
-      const FormulaSource& source = formulas.initial_velocity ? formulas.initial_velocity->source : formulas.initial_stress->source;
-      throw SceneError(source.file, source.line, key,
-                       "takes more than 1024 values along the bar: dyka_bar needs piecewise-constant initial data "
-                       "(a smooth field is the vibrating_bar's)");
+    pieces.push_back({pieces.empty() ? 0.0 : pieces.back().to, i < intervals ? 0.5 * (lower + upper) : length,
+                      previous.first, previous.second});
+    if (pieces.size() > 1024) {
+      const std::string what =
+          "takes more than 1024 values along the bar: dyka_bar needs piecewise-constant initial data "
+          "(a smooth field is the vibrating_bar's)";
+      const auto& list = velocity_formula ? velocity_formula : stress_formula;
+      if (!list) throw scene_error(scene, "initial_velocity[0].min", what);
+      throw SceneError(list->source.file, list->source.line, list->source.key, what);
     }
-    from = jump;
     previous = current;
   }
   return pieces;
@@ -146,182 +121,161 @@ inline std::vector<exact::BarPiece> scene_bar_pieces(const Scene& scene) {
 /// The scene's exact solution, built once from the scene and evaluated at any (X, t).
 class SceneExactSolution {
  public:
-  /// `times`: the times that will be asked (read by the finite-strain vibrating bar only, which is solved
-  /// up to them); `pieces`: the dyka_bar's initial data when not the scene's (exact.csv takes them from
-  /// the particles). \throws SceneError if the scene names no exact solution or its data are unusable;
-  /// std::invalid_argument if the strain measure has no reference for this solution.
+  /// `times`: those that will be asked (the finite-strain vibrating bar is solved up to them); `pieces`: the
+  /// dyka_bar's initial data when not the scene's. \throws SceneError for no or an unusable exact solution,
+  /// std::invalid_argument for a strain measure it has no reference for.
   SceneExactSolution(const Scene& scene, StrainMeasure strain, const std::vector<double>& times = {},
                      std::optional<std::vector<exact::BarPiece>> pieces = std::nullopt)
-      : scene_(scene), strain_(strain) {
-    const ExactKind name = scene.exact;
-    if (name == ExactKind::none)
-      throw scene_error(scene, "exact", "the scene names no exact solution (exact = \"none\"); give one of dyka_bar, "
-                                               "soil_column, vibrating_bar, manufactured_small, manufactured_large");
-    if (strain == StrainMeasure::finite && !has_finite_strain_reference(name))
-      throw std::invalid_argument("'" + name_of(name) + "' has no separate finite-strain reference (only soil_column and vibrating_bar)");
-    const double E = scene.young_modulus, rho = scene.density, nu = scene.poisson_ratio;
-    if (name == ExactKind::dyka_bar) {
-      const std::vector<exact::BarPiece> data = pieces ? *pieces : detail::scene_bar_pieces(scene);
-      bar_ = std::make_unique<exact::ElasticBar>(scene.length[0], E, rho, data);
-      double velocity = 0.0;
-      for (const auto& piece : data)
-        velocity = std::max({velocity, std::abs(piece.velocity), std::abs(piece.stress) / bar_->impedance()});
-      scale_velocity_ = velocity;
-      scale_stress_ = bar_->impedance() * velocity;
-      scale_displacement_ = velocity * scene.length[0] / bar_->wave_speed();
-      period_ = 4.0 * scene.length[0] / bar_->wave_speed();
-    } else if (name == ExactKind::soil_column) {
-      const double M = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)), g = -scene.gravity[1], H = column_height(scene);
-      column_ = std::make_unique<exact::SoilColumn>(H, M, rho, g, scene.ramp_period);
-      column_finite_ = std::make_unique<exact::SoilColumnLogStrain>(H, M, rho, g);
-      scale_stress_ = rho * g * H;
-      scale_displacement_ = rho * g * H * H / (2.0 * M);
-      scale_velocity_ = g * H / column_->wave_speed();
-      period_ = 4.0 * H / column_->wave_speed();
-    } else if (name == ExactKind::vibrating_bar) {
-      const double V = *scene.exact_velocity_amplitude;
-      vibrating_ = std::make_unique<exact::VibratingBar>(scene.length[0], E, rho, V, scene.exact_mode);
-      if (strain == StrainMeasure::finite) {
-        times_ = times;
-        std::sort(times_.begin(), times_.end());
-        times_.erase(std::unique(times_.begin(), times_.end()), times_.end());
-        try {
-          vibrating_finite_ = std::make_unique<exact::FiniteStrainBar>(scene.length[0], E, rho, V, finite_strain_cells, times_,
-                                                                       scene.exact_mode);
-        } catch (const std::runtime_error& failure) {
-          throw scene_error(scene, "exact_parameters.velocity_amplitude", failure.what());
-        }
-      }
-      scale_velocity_ = std::abs(V);
-      scale_stress_ = vibrating_->impedance() * std::abs(V);
-      scale_displacement_ = std::abs(V) / vibrating_->angular_frequency();
-      period_ = 4.0 * scene.length[0] / vibrating_->wave_speed();
-    } else {
-      const exact::ManufacturedMaterial material{scene.length[0], E, nu, rho};
-      const std::vector<double>& a = scene.exact_displacement_amplitude;
-      period_ = 2.0 * exact::ManufacturedMaterial::pi / material.angular_frequency();
-      if (name == ExactKind::manufactured_small) {
-        small_ = std::make_unique<exact::ManufacturedSmall>(material, a[0]);
-        scale_velocity_ = small_->velocity_scale();
-        scale_stress_ = small_->stress_scale();
-        scale_displacement_ = std::abs(a[0]);
-      } else {
-        large_ = std::make_unique<exact::ManufacturedLarge>(material, a[0], a[1]);
-        scale_velocity_ = large_->velocity_scale();
-        scale_stress_ = large_->stress_scale();
-        scale_displacement_ = std::max(std::abs(a[0]), std::abs(a[1]));
-      }
-    }
+      : scene_(scene) {
+    if (scene.exact == ExactKind::none)
+      throw scene_error(scene, "exact",
+                        "the scene names no exact solution (exact = \"none\"); give one of dyka_bar, "
+                        "soil_column, vibrating_bar, manufactured_small, manufactured_large");
+    if (strain == StrainMeasure::finite && !has_finite_strain_reference(scene.exact))
+      throw std::invalid_argument("'" + name_of(scene.exact) +
+                                  "' has no separate finite-strain reference (only soil_column and vibrating_bar)");
+    if (scene.exact == ExactKind::dyka_bar) bar(pieces ? *pieces : detail::scene_bar_pieces(scene));
+    if (scene.exact == ExactKind::soil_column) column(strain);
+    if (scene.exact == ExactKind::vibrating_bar) vibrating(strain, times);
+    if (scene.exact == ExactKind::manufactured_small || scene.exact == ExactKind::manufactured_large) manufactured();
   }
 
-  /// The cells of the finite-strain vibrating bar's reference (second order: relative error ~ (k h)^2, 4e-5 for mode 1).
+  /// The cells of the finite-strain vibrating bar's reference (second order: relative error ~ (k h)^2).
   static constexpr int finite_strain_cells = 512;
-
-  /// The time steps the finite-strain vibrating bar's reference takes to reach `last_time`: its step is
-  /// 0.9 (L/cells) sqrt(0.8 rho/E) (mpm/exact/vibrating_bar_finite_strain.hpp). The CLI refuses more than
-  /// most_finite_strain_steps (about 3 s of work).
-  static double finite_strain_steps(const Scene& scene, double last_time) {
-    const double step = 0.9 * scene.length[0] / finite_strain_cells * std::sqrt(0.8 * scene.density / scene.young_modulus);
-    return last_time / step;
-  }
+  /// The most steps the CLI lets the finite-strain vibrating bar take (about 3 s of work).
   static constexpr double most_finite_strain_steps = 2e6;
 
-  /// Empty if the point (scene coordinates, one entry per axis) is a material point of the solution's body,
-  /// the box [origin, origin + length]; else what is wrong.
+  /// The steps the finite-strain vibrating bar takes to reach `last_time`, at its step 0.9 (L/cells) sqrt(0.8 rho/E).
+  static double finite_strain_steps(const Scene& scene, double last_time) {
+    return last_time /
+           (0.9 * scene.length[0] / finite_strain_cells * std::sqrt(0.8 * scene.density / scene.young_modulus));
+  }
+
+  /// Empty if the point (scene coordinates) lies in the solution's body [origin, origin + length]; else why not.
   std::string outside(const std::vector<double>& point) const {
     for (int axis = 0; axis < scene_.dimension; ++axis) {
       const double lower = scene_.origin[axis], upper = scene_.origin[axis] + scene_.length[axis];
       const double tolerance = 1e-9 * scene_.spacing;
-      if (!(point[axis] >= lower - tolerance && point[axis] <= upper + tolerance)) {
-        std::ostringstream what;
-        what << "lies outside the body [" << lower << ", " << upper << "] m on " << (axis == 0 ? "x" : "y")
-             << " (a reference position in the scene's coordinates)";
-        return what.str();
-      }
+      if (point[axis] >= lower - tolerance && point[axis] <= upper + tolerance) continue;
+      std::ostringstream what;
+      what << "lies outside the body [" << lower << ", " << upper << "] m on " << (axis == 0 ? "x" : "y")
+           << " (a reference position in the scene's coordinates)";
+      return what.str();
     }
     return "";
   }
 
-  /// The state of the material point `point` (scene coordinates) at time t >= 0.
+  /// The state of the material point `point` (scene coordinates, clamped into the body) at time t >= 0.
   ExactState at(const std::vector<double>& point, double time) const {
-    ExactState state;
-    const double X = clamped(point, 0), Y = scene_.dimension == 2 ? clamped(point, 1) : 0.0;
-    if (bar_) {
-      state.u_x = bar_->displacement(X, time) + 0.0;  // + 0.0: no -0
-      state.v_x = bar_->velocity(X, time) + 0.0;
-      state.sigma_xx = bar_->stress(X, time) + 0.0;
-    } else if (column_) {
-      const double ratio = scene_.poisson_ratio / (1.0 - scene_.poisson_ratio);
-      if (strain_ == StrainMeasure::small) {
-        state.u_y = column_->displacement(Y, time);
-        state.v_y = column_->velocity(Y, time);
-        state.sigma_yy = column_->stress(Y, time);
-      } else {
-        state.u_y = column_finite_->displacement(Y);
-        state.sigma_yy = column_finite_->stress(Y);
-      }
-      state.sigma_xx = ratio * state.sigma_yy;
-    } else if (vibrating_finite_) {
-      const auto found = std::lower_bound(times_.begin(), times_.end(), time);
-      if (found == times_.end() || *found != time) throw std::logic_error("FiniteStrainBar: a time not given at construction");
-      const int output = static_cast<int>(found - times_.begin());
-      state.u_x = vibrating_finite_->displacement(X, output);
-      state.v_x = vibrating_finite_->velocity(X, output);
-      state.sigma_xx = vibrating_finite_->stress(X, output);
-    } else if (vibrating_) {
-      state.u_x = vibrating_->displacement(X, time);
-      state.v_x = vibrating_->velocity(X, time);
-      state.sigma_xx = vibrating_->stress(X, time);
-    } else {
-      const exact::Pair reference{X, Y};
-      exact::Pair displacement, velocity;
-      exact::PlaneStress stress;
-      if (small_) {
-        displacement = small_->displacement(reference, time), velocity = small_->velocity(reference, time);
-        stress = small_->stress(reference, time);
-      } else {
-        const exact::Pair position = large_->position(reference, time);
-        displacement = {position[0] - X, position[1] - Y}, velocity = large_->velocity(reference, time);
-        stress = large_->stress(reference, time);
-      }
-      state.u_x = displacement[0], state.u_y = displacement[1], state.v_x = velocity[0], state.v_y = velocity[1];
-      state.sigma_xx = stress.xx, state.sigma_yy = stress.yy, state.sigma_xy = stress.xy;
-    }
-    return state;
+    return state_(clamped(point, 0), scene_.dimension == 2 ? clamped(point, 1) : 0.0, time);
   }
 
-  /// The solution's longest period (s): 4L/c of the bars (the round trip of a wave, the first mode's period),
-  /// 4H/c of the column's first mode, 2 pi/omega of the manufactured motions. Beyond a million of them the
-  /// values lose their precision (c t or omega t carries no digit below a millionth of a period): the CLI
-  /// refuses such times.
+  /// The solution's longest period (s): 4L/c of the bars, 4H/c of the column, 2 pi/omega of the manufactured
+  /// motions. Beyond a million of them the values lose their precision: the CLI refuses such times.
   double period() const { return period_; }
 
   /// The scale by which `mpm compare` divides the RMS error of a quantity (same unit):
-  ///   dyka_bar            v: V* = the largest |v_0| or |sigma_0|/Z of the initial data (v0 = 5 m/s for the Dyka
-  ///                       bar, so RMS/scale is the paper's RMS/v0); sigma: Z V*; u: V* L / c
-  ///   soil_column         sigma: rho g H (the base's static stress); u: rho g H^2 / (2M) (the top's static
-  ///                       settlement); v: g H / c (the velocity of a wave carrying the base's static strain)
-  ///   vibrating_bar       v: |V|; sigma: Z |V|; u: |V| / omega
-  ///   manufactured_small  v: A omega; sigma: (lambda + 2G) kappa A; u: |A|
-  ///   manufactured_large  v: omega max|a|; sigma: (lambda + 2G) kappa max(|a_x|, 2|a_y|); u: max|a|
-  double scale(const std::string& quantity) const {
-    if (quantity.rfind("u_", 0) == 0) return scale_displacement_;
-    if (quantity.rfind("v_", 0) == 0) return scale_velocity_;
-    return scale_stress_;
-  }
+  ///   dyka_bar       v: V* = the largest |v_0| or |sigma_0|/Z of the initial data; sigma: Z V*; u: V* L / c
+  ///   soil_column    sigma: rho g H; u: rho g H^2 / (2M), the top's static settlement; v: g H / c
+  ///   vibrating_bar  v: |V|; sigma: Z |V|; u: |V| / omega
+  ///   manufactured   v: omega max|a|; sigma: (lambda + 2G) kappa max(|a_x|, 2|a_y|) (small: A); u: max|a|
+  double scale(const std::string& quantity) const { return scales_[quantity_kind(quantity)]; }
 
  private:
   const Scene& scene_;
-  StrainMeasure strain_;
-  std::vector<double> times_;
-  std::unique_ptr<exact::ElasticBar> bar_;
-  std::unique_ptr<exact::SoilColumn> column_;
-  std::unique_ptr<exact::SoilColumnLogStrain> column_finite_;
-  std::unique_ptr<exact::VibratingBar> vibrating_;
-  std::unique_ptr<exact::FiniteStrainBar> vibrating_finite_;
-  std::unique_ptr<exact::ManufacturedSmall> small_;
-  std::unique_ptr<exact::ManufacturedLarge> large_;
-  double scale_velocity_ = 0.0, scale_stress_ = 0.0, scale_displacement_ = 0.0, period_ = 0.0;
+  std::function<ExactState(double X, double Y, double t)> state_;  ///< X, Y from the origin
+  std::array<double, 3> scales_{};                                 ///< of u, v, sigma: scale()
+  double period_ = 0.0;
+
+  /// A state along x only (the bars).
+  static ExactState axial(double u, double v, double sigma) { return {u, 0.0, v, 0.0, sigma}; }
+
+  /// exact::ElasticBar, appendix A.1-A.19, from the pieces of its initial data.
+  void bar(const std::vector<exact::BarPiece>& data) {
+    const auto bar = std::make_shared<exact::ElasticBar>(scene_.length[0], scene_.young_modulus, scene_.density, data);
+    double velocity = 0.0;
+    for (const auto& piece : data)
+      velocity = std::max({velocity, std::abs(piece.velocity), std::abs(piece.stress) / bar->impedance()});
+    scales_ = {velocity * scene_.length[0] / bar->wave_speed(), velocity, bar->impedance() * velocity};
+    period_ = 4.0 * scene_.length[0] / bar->wave_speed();
+    state_ = [bar](double X, double, double t) {  // + 0.0: no -0
+      return axial(bar->displacement(X, t) + 0.0, bar->velocity(X, t) + 0.0, bar->stress(X, t) + 0.0);
+    };
+  }
+
+  /// exact::SoilColumn (paper/07_exact_column.md) or, finite, the static exact::SoilColumnLogStrain at every t;
+  /// both laterally confined: sigma_xx = nu/(1 - nu) sigma_yy.
+  void column(StrainMeasure strain) {
+    const double E = scene_.young_modulus, rho = scene_.density, nu = scene_.poisson_ratio, H = column_height(scene_);
+    const double M = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)), g = -scene_.gravity[1], ratio = nu / (1.0 - nu);
+    const auto small = std::make_shared<exact::SoilColumn>(H, M, rho, g, scene_.ramp_period);
+    const auto finite = std::make_shared<exact::SoilColumnLogStrain>(H, M, rho, g);
+    scales_ = {rho * g * H * H / (2.0 * M), g * H / small->wave_speed(), rho * g * H};
+    period_ = 4.0 * H / small->wave_speed();
+    state_ = [=](double, double Y, double t) {
+      ExactState state;
+      const bool dynamic = strain == StrainMeasure::small;
+      state.u_y = dynamic ? small->displacement(Y, t) : finite->displacement(Y);
+      state.v_y = dynamic ? small->velocity(Y, t) : 0.0;
+      state.sigma_yy = dynamic ? small->stress(Y, t) : finite->stress(Y);
+      state.sigma_xx = ratio * state.sigma_yy;
+      return state;
+    };
+  }
+
+  /// exact::VibratingBar, mode n and amplitude V of [exact_parameters]; finite: exact::FiniteStrainBar solved up
+  /// to the times that will be asked.
+  void vibrating(StrainMeasure strain, std::vector<double> times) {
+    const double L = scene_.length[0], E = scene_.young_modulus, rho = scene_.density,
+                 V = *scene_.exact_velocity_amplitude;
+    const auto bar = std::make_shared<exact::VibratingBar>(L, E, rho, V, scene_.exact_mode);
+    scales_ = {std::abs(V) / bar->angular_frequency(), std::abs(V), bar->impedance() * std::abs(V)};
+    period_ = 4.0 * L / bar->wave_speed();
+    state_ = [bar](double X, double, double t) {
+      return axial(bar->displacement(X, t), bar->velocity(X, t), bar->stress(X, t));
+    };
+    if (strain == StrainMeasure::small) return;
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    std::shared_ptr<exact::FiniteStrainBar> finite;
+    try {
+      finite = std::make_shared<exact::FiniteStrainBar>(L, E, rho, V, finite_strain_cells, times, scene_.exact_mode);
+    } catch (const std::runtime_error& failure) {
+      throw scene_error(scene_, "exact_parameters.velocity_amplitude", failure.what());
+    }
+    state_ = [finite, times](double X, double, double t) {
+      const auto found = std::lower_bound(times.begin(), times.end(), t);
+      if (found == times.end() || *found != t)
+        throw std::logic_error("FiniteStrainBar: a time not given at construction");
+      const int output = static_cast<int>(found - times.begin());
+      return axial(finite->displacement(X, output), finite->velocity(X, output), finite->stress(X, output));
+    };
+  }
+
+  /// exact::ManufacturedSmall (A of [exact_parameters]) or exact::ManufacturedLarge ([a_x, a_y]) on the square.
+  void manufactured() {
+    const exact::ManufacturedMaterial material{scene_.length[0], scene_.young_modulus, scene_.poisson_ratio,
+                                               scene_.density};
+    const std::vector<double>& a = scene_.exact_displacement_amplitude;
+    period_ = 2.0 * exact::ManufacturedMaterial::pi / material.angular_frequency();
+    auto plane = [](const exact::Pair& u, const exact::Pair& v, const exact::PlaneStress& sigma) {
+      return ExactState{u[0], u[1], v[0], v[1], sigma.xx, sigma.yy, sigma.xy};
+    };
+    if (scene_.exact == ExactKind::manufactured_small) {
+      const auto small = std::make_shared<exact::ManufacturedSmall>(material, a[0]);
+      scales_ = {std::abs(a[0]), small->velocity_scale(), small->stress_scale()};
+      state_ = [small, plane](double X, double Y, double t) {
+        return plane(small->displacement({X, Y}, t), small->velocity({X, Y}, t), small->stress({X, Y}, t));
+      };
+      return;
+    }
+    const auto large = std::make_shared<exact::ManufacturedLarge>(material, a[0], a[1]);
+    scales_ = {std::max(std::abs(a[0]), std::abs(a[1])), large->velocity_scale(), large->stress_scale()};
+    state_ = [large, plane](double X, double Y, double t) {
+      const exact::Pair x = large->position({X, Y}, t);
+      return plane({x[0] - X, x[1] - Y}, large->velocity({X, Y}, t), large->stress({X, Y}, t));
+    };
+  }
 
   /// The coordinate on `axis` from the origin, clamped into [0, length] (outside() has checked it to 1e-9 cells).
   double clamped(const std::vector<double>& point, int axis) const {

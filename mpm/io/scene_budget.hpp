@@ -1,10 +1,7 @@
 /// \file
-/// The size of a run, estimated from its validated scene before anything is allocated, and the
-/// limits it must keep: memory (default: half the machine's memory) and the number of time steps
-/// end_time / dt (default 10^7). A scene beyond them is refused like any other bad input (exit 2),
-/// naming the key that makes it large.
-///
-/// The estimate is arithmetic in double precision on the scene's numbers, so no size can wrap.
+/// The size of a run, estimated in double precision (no size can wrap) from its validated scene before anything
+/// is allocated, and the limits it must keep: memory (default half the machine's) and end_time / dt (default
+/// 10^7). A scene beyond them is refused like any other bad input (exit 2), naming the key that makes it large.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -12,12 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <iomanip>
-#include <limits>
 #include <numeric>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -33,48 +28,23 @@ struct Budget {
   bool force = false;      ///< run even beyond max_steps
 };
 
-/// The machine's physical memory in bytes (sysconf, else MemTotal of /proc/meminfo); 0 if unknown.
-inline double machine_memory() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
-  if (pages > 0 && page_size > 0) return static_cast<double>(pages) * static_cast<double>(page_size);
-  std::ifstream meminfo("/proc/meminfo");
-  std::string name, unit;
-  double kilobytes = 0.0;
-  while (meminfo >> name >> kilobytes >> unit)
-    if (name == "MemTotal:") return kilobytes * 1024.0;
-  return 0.0;
-}
-
-/// Half the machine's memory, or 4 GiB when it cannot be told.
+/// Half the machine's physical memory, or 4 GiB when it cannot be told.
 inline double default_max_memory() {
-  const double memory = machine_memory();
-  return memory > 0.0 ? 0.5 * memory : 4.0 * (1 << 30);
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page_size > 0 ? 0.5 * static_cast<double>(pages) * static_cast<double>(page_size)
+                                    : 4.0 * (1 << 30);
 }
 
-/// Reads `12345`, `512M`, `4G`, `1.5G`, `2T` (powers of 1024; a trailing B or iB is allowed).
-/// \returns nothing unless it is a finite size > 0.
+/// Reads `12345`, `512M`, `4G`, `1.5GB`, `2TiB` (powers of 1024); nothing unless it is a finite size > 0.
 inline std::optional<double> parse_byte_size(const std::string& text) {
-  std::size_t end = 0;
-  double value = 0.0;
-  if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.')) return std::nullopt;
-  try {
-    value = std::stod(text, &end);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  std::string unit = text.substr(end);
-  if (unit.size() > 1 && (unit.substr(1) == "B" || unit.substr(1) == "iB")) unit = unit.substr(0, 1);
-  const std::string units = "KMGT";
-  double scale = 1.0;
-  if (unit == "B") unit.clear();
-  if (!unit.empty()) {
-    const auto power = units.find(unit);
-    if (unit.size() != 1 || power == std::string::npos) return std::nullopt;
-    scale = std::pow(1024.0, static_cast<double>(power + 1));
-  }
-  value *= scale;
-  if (!(value > 0.0) || !std::isfinite(value)) return std::nullopt;
-  return value;
+  std::smatch match;
+  if (!std::regex_match(text, match, std::regex(R"(([0-9.][0-9.eE+-]*)(?:([KMGT])(?:i?B)?|B)?)"))) return std::nullopt;
+  const std::string number = match[1];
+  char* end = nullptr;
+  const double power = match[2].matched ? 1.0 + static_cast<double>(std::string("KMGT").find(match.str(2))) : 0.0;
+  const double bytes = std::strtod(number.c_str(), &end) * std::pow(1024.0, power);
+  if (*end != '\0' || !(bytes > 0.0) || !std::isfinite(bytes)) return std::nullopt;
+  return bytes;
 }
 
 /// What a scene will need, estimated from its numbers alone.
@@ -82,16 +52,20 @@ struct SceneCost {
   double particles = 0.0;           ///< sum over bodies of cells x particles_per_cell
   double nodes = 0.0;               ///< prod over axes of (cells + margins + 1)
   double nodes_per_particle = 0.0;  ///< the stencil capacity of the shape function
-  double particle_bytes = 0.0, node_bytes = 0.0;
-  double stencil_bytes = 0.0;  ///< the stencils, with the shape's copy of them (LME), of the run or its CFL check's body
+  double particle_bytes = 0.0, node_bytes = 0.0, stencil_bytes = 0.0;
   double time_step = 0.0, steps = 0.0;  ///< Eq. (42) at t = 0, and end_time over it
   int largest_body = 0;                 ///< the body with most particles
   double shape_tests = 0.0;             ///< seeds times vertices of the polygon with most (seeding tests each seed)
   int costliest_polygon = -1;           ///< that polygon's body; -1: none
-  /// The process itself (code, libraries, the threads' stacks, the allocator): about 6 MB measured, 16 MiB counted.
+  /// The process itself (code, libraries, the threads' stacks, the allocator), counted generously.
   static constexpr double process_bytes = 16.0 * (1 << 20);
   double bytes() const { return process_bytes + particle_bytes + stencil_bytes + node_bytes; }
 };
+
+/// The most nodes, and stencil entries, the code's 32-bit indices can count.
+inline constexpr double most_index = 2147483647.0;
+/// The most point-in-polygon tests (a seed against an edge, about 1 ns each) that seeding one body may take.
+inline constexpr double most_seeding_tests = 1e10;
 
 /// The particles per cell and axis of the uniform body on which `mpm run` checks a scene's CFL (warning_body() of
 /// mpm/stability.hpp): the scene's largest, at most 4.
@@ -102,7 +76,7 @@ inline int warning_body_ppc(const Scene& scene) {
   return ppc;
 }
 
-/// That body's cells per axis: 16 in 1D; in 2D 6 at 1 particle per cell and axis, 4 at 2 and 2 from 3 (at most 448 unknowns).
+/// That body's cells per axis: 16 in 1D; in 2D 6 at 1 particle per cell and axis, 4 at 2 and 2 from 3.
 inline int warning_body_cells(int dimension, int ppc) { return dimension == 1 ? 16 : ppc == 1 ? 6 : ppc == 2 ? 4 : 2; }
 
 /// That body's particles, whose stencils are as wide as the run's: the run's peak is the larger of the two.
@@ -131,17 +105,29 @@ TEST_CASE("Scene budget: the CFL check's body has 16 x ppc particles in 1D, at m
   CHECK(warning_body_particles(scene) == 36.0);
 }
 
-/// The estimate, an upper bound of the peak resident memory. It counts every per-particle array of Particles three
-/// times (seeding grows the vectors by doubling, and the simulation holds its own copy), the stencils (node, N, grad N
-/// per stencil entry; LME keeps each particle's last nodes and N beside them: 12 bytes more per entry), of the run or
-/// of its CFL check's body if that has more particles, the shape's per-particle state, the nodal fields of GridFields and their copies,
-/// one per chunk of the particle-to-grid scatter beyond the first (mpm/core/parallel.hpp): in 1D, where
-/// a grid of many cells may hold few particles, the copies are most of the memory.
-/// The stencil capacity is 2^d (linear), 3^d (uGIMP, l_p <= h/2), (2R/h + 2)^d (LME, a bound).
+/// The time step of Eq. (42) at t = 0: cfl h over the fastest material's wave speed and the fastest particle's speed.
+inline double initial_time_step(const Scene& scene) {
+  auto norm = [](const std::vector<double>& v) {
+    return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0));
+  };
+  double fastest = 0.0, wave_speed = 0.0;
+  for (const auto& body : scene.bodies) {
+    fastest = std::max(fastest, norm(body.velocity));
+    for (const auto& particle : body.particles) fastest = std::max(fastest, std::hypot(particle.v_x, particle.v_y));
+    wave_speed = std::max(wave_speed, std::sqrt(body.material.young_modulus / body.material.density));
+  }
+  for (const auto& box : scene.initial_velocities) fastest = std::max(fastest, norm(box.velocity));
+  const bool maximum = scene.control.courant == CourantSpeed::maximum;
+  return scene.control.cfl * scene.spacing / (maximum ? std::max(fastest, wave_speed) : fastest + wave_speed);
+}
+
+/// The estimate, an upper bound of the peak resident memory: the particles' arrays thrice (seeding doubles vectors;
+/// the simulation holds a copy), the stencils of the run or of its CFL check's body if larger, and the nodal fields
+/// with one copy per chunk of the scatter beyond the first (mpm/core/parallel.hpp; in 1D most of the memory).
 inline SceneCost estimate_cost(const Scene& scene) {
   const int d = scene.dimension;
   SceneCost cost;
-  double per_cell_most = -1.0;
+  double most = -1.0;
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
     const BodySettings& body = scene.bodies[k];
     double count = 1.0;
@@ -149,105 +135,94 @@ inline SceneCost estimate_cost(const Scene& scene) {
       count *= std::round((body.max[axis] - body.min[axis]) / scene.spacing) * body.particles_per_cell[axis];
     if (body.shape == BodyShape::Kind::file) count = static_cast<double>(body.particles.size());
     cost.particles += count;
-    if (count > per_cell_most) per_cell_most = count, cost.largest_body = static_cast<int>(k);
-    if (count * static_cast<double>(body.vertices.size()) > cost.shape_tests)
-      cost.shape_tests = count * static_cast<double>(body.vertices.size()), cost.costliest_polygon = static_cast<int>(k);
+    if (count > most) {
+      most = count;
+      cost.largest_body = static_cast<int>(k);
+    }
+    if (count * static_cast<double>(body.vertices.size()) > cost.shape_tests) {
+      cost.shape_tests = count * static_cast<double>(body.vertices.size());
+      cost.costliest_polygon = static_cast<int>(k);
+    }
   }
   cost.nodes = 1.0;
   for (int axis = 0; axis < d; ++axis)
     cost.nodes *= static_cast<double>(scene.cells[axis]) + scene.margin_min[axis] + scene.margin_max[axis] + 1.0;
-  if (scene.shape == ShapeKind::linear) cost.nodes_per_particle = std::pow(2.0, d);
-  else if (scene.shape == ShapeKind::ugimp || scene.shape == ShapeKind::bspline2) cost.nodes_per_particle = std::pow(3.0, d);
-  else if (scene.shape == ShapeKind::bspline3) cost.nodes_per_particle = std::pow(4.0, d);
-  else cost.nodes_per_particle = std::pow(2.0 * std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 2.0, d);
+  const bool lme = scene.shape == ShapeKind::lme;  // stencil capacity: linear 2^d, uGIMP 3^d, LME (2R/h + 2)^d
+  const double width = scene.shape == ShapeKind::linear     ? 2.0
+                       : scene.shape == ShapeKind::bspline3 ? 4.0
+                       : lme ? 2.0 * std::sqrt(-std::log(scene.lme_tol) / scene.lme_gamma) + 2.0
+                             : 3.0;
+  cost.nodes_per_particle = std::pow(width, d);
   const double particle_arrays = 4 + 8 + 8 + 5 * 8.0 * d + 2 * 8.0 * d * d + 8 + 4;  // Particles<Dim>
-  const double entry = 4 + 8 + 8.0 * d + (scene.shape == ShapeKind::lme ? 4 + 8 : 0);  // Stencils<Dim>, LmeShape's last_nodes_, last_values_
+  const double entry = 4 + 8 + 8.0 * d + (lme ? 4 + 8 : 0);  // Stencils<Dim>; LmeShape's last_nodes_, last_values_
   cost.particle_bytes = cost.particles * (3 * particle_arrays + 8.0 * d);
   cost.stencil_bytes = std::max(cost.particles, warning_body_particles(scene)) * (4 + cost.nodes_per_particle * entry);
   const double copies = std::clamp(std::floor(cost.particles / items_per_chunk), 1.0, double(max_chunks)) - 1.0;
-  cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d + copies * (8 + 3 * 8.0 * d));  // GridFields<Dim>: m_I, seven vector fields, copies
-  auto norm = [](const std::vector<double>& v) { return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0)); };
-  double fastest = 0.0;  // the fastest particle at t = 0
-  for (const auto& body : scene.bodies) {
-    fastest = std::max(fastest, norm(body.velocity));
-    for (const auto& particle : body.particles) fastest = std::max(fastest, std::hypot(particle.v_x, particle.v_y));
-  }
-  for (const auto& box : scene.initial_velocities) fastest = std::max(fastest, norm(box.velocity));
-  double wave_speed = 0.0;  // the fastest material's (Eq. 42)
-  for (const auto& body : scene.bodies) wave_speed = std::max(wave_speed, std::sqrt(body.material.young_modulus / body.material.density));
-  const double speed = scene.control.courant == CourantSpeed::maximum ? std::max(fastest, wave_speed) : fastest + wave_speed;
-  cost.time_step = scene.control.cfl * scene.spacing / speed;
+  cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d + copies * (8 + 3 * 8.0 * d));  // GridFields<Dim>: m_I, 7 vectors
+  cost.time_step = initial_time_step(scene);
   cost.steps = std::ceil(scene.control.end_time / cost.time_step);
   return cost;
 }
 
-namespace detail {
-
+/// "2.82 GiB": a size in bytes to 3 digits in powers of 1024.
 inline std::string bytes_text(double bytes) {
   const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
   int unit = 0;
-  while (bytes >= 1024.0 && unit < 6) bytes /= 1024.0, ++unit;
+  for (; bytes >= 1024.0 && unit < 6; ++unit) bytes /= 1024.0;
   std::ostringstream out;
   out << std::setprecision(3) << bytes << " " << units[unit];
   return out.str();
 }
 
-}  // namespace detail
+/// The key that makes a run too large: the largest grid entry when the nodes dominate, lme_gamma for a very wide
+/// LME support, else particles_per_cell or grid.cells of the body with most particles.
+inline std::string largest_key(const Scene& scene, const SceneCost& cost) {
+  if (cost.node_bytes >= cost.particle_bytes + cost.stencil_bytes || cost.nodes > most_index) {
+    auto most = [](const std::vector<int>& values) { return *std::max_element(values.begin(), values.end()); };
+    const int cells = most(scene.cells), low = most(scene.margin_min), high = most(scene.margin_max);
+    return high > std::max(cells, low) ? "grid.margin_max" : low > cells ? "grid.margin_min" : "grid.cells";
+  }
+  if (scene.shape == ShapeKind::lme && cost.nodes_per_particle > 256) return "solver.lme_gamma";
+  const BodySettings& body = scene.bodies[cost.largest_body];
+  double per_cell = 1.0, cells = 1.0;
+  for (int axis = 0; axis < scene.dimension; ++axis) {
+    per_cell *= body.particles_per_cell[axis];
+    cells *= std::round((body.max[axis] - body.min[axis]) / scene.spacing);
+  }
+  return per_cell > cells ? "body[" + std::to_string(cost.largest_body) + "].particles_per_cell" : "grid.cells";
+}
 
-/// The most point-in-polygon tests (a seed against an edge, about 1 ns each) that seeding one body may take.
-inline constexpr double most_seeding_tests = 1e10;
-
-/// Refuses a scene whose estimated size exceeds the budget or the code's 32-bit indices, or whose polygon takes
-/// more than most_seeding_tests to seed.
-/// \throws SceneError naming the key that makes the run large: the largest grid entry when the
-/// nodes dominate, lme_gamma for a very wide LME support, else particles_per_cell or grid.cells of
-/// the body with most particles; the polygon's vertices; solver.end_time for too many time steps.
+/// Refuses a scene whose estimated size exceeds the budget or the 32-bit indices, whose polygon takes more than
+/// most_seeding_tests to seed, or whose time steps exceed the limit. \throws SceneError naming the key to change.
 inline void check_budget(const Scene& scene, const Budget& budget) {
   const SceneCost cost = estimate_cost(scene);
   const double max_bytes = budget.max_bytes > 0.0 ? budget.max_bytes : default_max_memory();
-  const double most_index = std::numeric_limits<int>::max();
   const bool too_big = cost.bytes() > max_bytes;
-  const bool too_many = cost.nodes > most_index || cost.particles * cost.nodes_per_particle > most_index;
-  if (too_big || too_many) {
-    std::ostringstream what;
-    what << std::setprecision(3) << "the scene needs " << cost.particles << " particles, " << cost.nodes << " nodes and "
-         << cost.nodes_per_particle << " stencil nodes per particle, about " << detail::bytes_text(cost.bytes());
+  std::ostringstream what;
+  what << std::setprecision(3);
+  if (too_big || cost.nodes > most_index || cost.particles * cost.nodes_per_particle > most_index) {
+    what << "the scene needs " << cost.particles << " particles, " << cost.nodes << " nodes and "
+         << cost.nodes_per_particle << " stencil nodes per particle, about " << bytes_text(cost.bytes());
     if (too_big)
-      what << "; the limit is " << detail::bytes_text(max_bytes)
-           << (budget.max_bytes > 0.0 ? " (--max-memory)" : " (half this machine's memory; --max-memory BYTES|<n>G to change it)");
+      what << "; the limit is " << bytes_text(max_bytes)
+           << (budget.max_bytes > 0.0 ? " (--max-memory)"
+                                      : " (half this machine's memory; --max-memory BYTES|<n>G to change it)");
     else
       what << "; the code indexes nodes and stencil entries with 32-bit integers, at most 2^31 - 1 of each";
-    if (cost.node_bytes >= cost.particle_bytes + cost.stencil_bytes || cost.nodes > most_index) {
-      std::string key = "cells";
-      int largest = 0;
-      for (const auto& [name, values] : {std::pair{"cells", &scene.cells}, {"margin_min", &scene.margin_min}, {"margin_max", &scene.margin_max}})
-        for (int value : *values)
-          if (value > largest) largest = value, key = name;
-      throw scene_error(scene, std::string("grid.") + key, what.str());
-    }
-    if (scene.shape == ShapeKind::lme && cost.nodes_per_particle > 256)
-      throw scene_error(scene, "solver.lme_gamma", what.str() + "; a larger lme_gamma narrows the support");
-    const int k = cost.largest_body;
-    const BodySettings& body = scene.bodies[k];
-    double per_cell = 1.0, cells = 1.0;
-    for (int axis = 0; axis < scene.dimension; ++axis)
-      per_cell *= body.particles_per_cell[axis], cells *= std::round((body.max[axis] - body.min[axis]) / scene.spacing);
-    if (per_cell > cells) throw scene_error(scene, "body[" + std::to_string(k) + "].particles_per_cell", what.str());
-    throw scene_error(scene, "grid.cells", what.str());
+    const std::string key = largest_key(scene, cost);
+    throw scene_error(scene, key,
+                      what.str() + (key == "solver.lme_gamma" ? "; a larger lme_gamma narrows the support" : ""));
   }
-  if (cost.shape_tests > most_seeding_tests) {  // seeding tests every seed of a polygon's box against its every edge
-    const BodySettings& body = scene.bodies[cost.costliest_polygon];
-    std::ostringstream what;
-    what << std::setprecision(3) << body.vertices.size() << " vertices over " << cost.shape_tests / body.vertices.size()
-         << " seeds take " << cost.shape_tests << " point-in-polygon tests to seed, more than " << most_seeding_tests
+  if (cost.shape_tests > most_seeding_tests) {
+    const std::size_t vertices = scene.bodies[cost.costliest_polygon].vertices.size();
+    what << vertices << " vertices over " << cost.shape_tests / static_cast<double>(vertices) << " seeds take "
+         << cost.shape_tests << " point-in-polygon tests to seed, more than " << most_seeding_tests
          << " (about 10 s); give fewer vertices, or fewer particles_per_cell";
     throw scene_error(scene, "body[" + std::to_string(cost.costliest_polygon) + "].vertices", what.str());
   }
-  // Beyond 2^50 steps t + dt == t may hold in double precision and time would stop: never run.
-  const bool endless = !(cost.steps <= std::pow(2.0, 50));
+  const bool endless = !(cost.steps <= std::pow(2.0, 50));  // t + dt == t may hold beyond: time would stop
   if (endless || (cost.steps > budget.max_steps && !budget.force)) {
-    std::ostringstream what;
-    what << std::setprecision(3) << "end_time / dt = " << scene.control.end_time << " s / " << cost.time_step << " s = " << cost.steps
+    what << "end_time / dt = " << scene.control.end_time << " s / " << cost.time_step << " s = " << cost.steps
          << " time steps (dt of Eq. (42) at t = 0: cfl h / wave or particle speed)";
     if (endless)
       what << "; no run can take that many steps (time would stop advancing in double precision)";

@@ -1,17 +1,11 @@
 /// \file
-/// Warnings for a scene that is valid but suspicious: `warning: FILE:LINE: KEY: what and why`, on
-/// stderr before the run; a warning never stops a run (errors do: mpm/io/scene.hpp).
-///   - an observer outside every [[body]] (the particle nearest to it is observed instead);
-///   - an [[initial_velocity]] box that holds no particle (it sets nothing);
-///   - a CFL above the stability limit of the chosen method, from its own linearised step (mpm/stability.hpp:
-///     the caller computes it and passes it in, so that reading a scene needs no solver);
-///   - LME next to rigid margin nodes behind a fixed face (it gives way there).
-/// uGIMP needs no warning at a wall: its particle domain is clipped at the grid's edge
-/// (mpm/shape/ugimp.hpp), so it runs whether or not there are margin cells.
+/// Warnings for a valid but suspicious scene, `warning: FILE:LINE: KEY: what and why` on stderr before the run;
+/// a warning never stops a run. The CFL limit comes from the caller (mpm/stability.hpp), so that reading a scene
+/// needs no solver.
 #pragma once
 #include <doctest/doctest.h>
 
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -22,91 +16,94 @@
 
 namespace mpm::io {
 
-/// The warnings of a validated scene, one line each; cfl_limit is the method's largest stable CFL (NaN: not known).
-/// Each is located where the scene gives its key (its table's line when it leaves the key to its default).
-inline std::vector<std::string> scene_warnings(const Scene& scene, double cfl_limit = std::numeric_limits<double>::quiet_NaN()) {
+namespace detail {
+
+/// True if the first `dim` coordinates of `x` lie in the box [min - tolerance, max + tolerance].
+template <class Point>
+bool in_box(const Point& x, const std::vector<double>& min, const std::vector<double>& max, int dim,
+            double tolerance = 0.0) {
+  for (int axis = 0; axis < dim; ++axis)
+    if (!(x[axis] >= min[axis] - tolerance && x[axis] <= max[axis] + tolerance)) return false;
+  return true;
+}
+
+/// True if a particle of the scene lies in `box`, or if there are too many particles to look at here.
+inline bool box_holds_particle(const Scene& scene, const VelocityBox& box) {
+  const int dim = scene.dimension;
+  double seeds = 0.0, shape_tests = 0.0;
+  for (const auto& body : scene.bodies) {
+    double count = 1.0;
+    for (int axis = 0; axis < dim; ++axis)
+      count *= (body.max[axis] - body.min[axis]) / scene.spacing * body.particles_per_cell[axis];
+    seeds += count;
+    shape_tests += count * static_cast<double>(body.vertices.size());
+  }
+  if (seeds > 1e7 || shape_tests > most_shape_tests) return true;
+  for (const auto& body : scene.bodies) {
+    for (const auto& particle : body.particles) {  // a body read from a file: its own particles
+      const double x[2] = {particle.x, particle.y};
+      if (in_box(x, box.min, box.max, dim)) return true;
+    }
+    if (body.shape == BodyShape::Kind::file) continue;
+    const BodyShape shape = body_shape(body);
+    auto outside = [&](const auto& x) { return !(in_box(x, box.min, box.max, dim) && shape.holds(x[0], x[dim - 1])); };
+    const auto &min = body.min, &max = body.max;
+    const auto& ppc = body.particles_per_cell;
+    const bool none = dim == 1 ? for_each_seed<1>(Vector<1>(scene.origin[0]), scene.spacing, Vector<1>(min[0]),
+                                                  Vector<1>(max[0]), {ppc[0]}, body.placement, outside)
+                               : for_each_seed<2>(Vector<2>(scene.origin[0], scene.origin[1]), scene.spacing,
+                                                  Vector<2>(min[0], min[1]), Vector<2>(max[0], max[1]),
+                                                  {ppc[0], ppc[1]}, body.placement, outside);
+    if (!none) return true;
+  }
+  return false;
+}
+
+}  // namespace detail
+
+/// The warnings of a validated scene, one line each, located where the scene gives its key (else its table's line):
+/// an observer outside every body, a velocity box that holds no particle, a CFL above `cfl_limit` (the method's
+/// largest stable CFL; NaN: not known), LME next to rigid margin nodes behind a fixed face.
+inline std::vector<std::string> scene_warnings(const Scene& scene,
+                                               double cfl_limit = std::numeric_limits<double>::quiet_NaN()) {
   std::vector<std::string> warnings;
   auto warn = [&](const std::string& key, const std::string& what) {
     warnings.push_back("warning:" + scene_error(scene, key, what).message().substr(std::string("error:").size()));
   };
-  const int dim = scene.dimension;
-  const double tolerance = 1e-9 * scene.spacing;
   for (size_t k = 0; k < scene.observers.size(); ++k) {
-    const auto& position = scene.observers[k].position;
-    bool inside = false;
-    for (const auto& body : scene.bodies) {
-      bool in_body = true;
-      for (int axis = 0; axis < dim; ++axis)
-        in_body = in_body && position[axis] >= body.min[axis] - tolerance && position[axis] <= body.max[axis] + tolerance;
-      inside = inside || in_body;
-    }
-    if (!inside)
+    const auto holds = [&](const BodySettings& body) {
+      return detail::in_box(scene.observers[k].position, body.min, body.max, scene.dimension, 1e-9 * scene.spacing);
+    };
+    if (std::none_of(scene.bodies.begin(), scene.bodies.end(), holds))
       warn("observer[" + std::to_string(k) + "].position",
            "lies outside every [[body]]: the particle nearest to it at t = 0 is observed instead");
   }
-  for (size_t k = 0; k < scene.initial_velocities.size(); ++k) {  // a box that holds no particle sets nothing
-    const VelocityBox& box = scene.initial_velocities[k];
-    bool touched = false;
-    double seeds = 0.0, shape_tests = 0.0;
-    for (const auto& body : scene.bodies) {
-      double count = 1.0;
-      for (int axis = 0; axis < dim; ++axis) count *= (body.max[axis] - body.min[axis]) / scene.spacing * body.particles_per_cell[axis];
-      seeds += count, shape_tests += count * static_cast<double>(body.vertices.size());
-    }
-    if (seeds > 1e7 || shape_tests > detail::most_shape_tests) continue;  // too many particles to look at here: no warning
-    for (const auto& body : scene.bodies) {
-      for (const auto& particle : body.particles) {  // a body read from a file: its own particles
-        const double x[2] = {particle.x, particle.y};
-        bool inside = true;
-        for (int axis = 0; axis < dim; ++axis) inside = inside && x[axis] >= box.min[axis] && x[axis] <= box.max[axis];
-        touched = touched || inside;
-      }
-      if (body.shape == BodyShape::Kind::file) {
-        if (touched) break;
-        continue;
-      }
-      const BodyShape shape = body_shape(body);
-      auto visit = [&](const auto& x) {
-        bool inside = shape.holds(x[0], x[dim - 1]);
-        for (int axis = 0; axis < dim; ++axis) inside = inside && x[axis] >= box.min[axis] && x[axis] <= box.max[axis];
-        touched = touched || inside;
-        return !touched;
-      };
-      if (dim == 1)
-        for_each_seed<1>(Vector<1>(scene.origin[0]), scene.spacing, Vector<1>(body.min[0]), Vector<1>(body.max[0]),
-                         {body.particles_per_cell[0]}, body.placement, visit);
-      else
-        for_each_seed<2>(Vector<2>(scene.origin[0], scene.origin[1]), scene.spacing, Vector<2>(body.min[0], body.min[1]),
-                         Vector<2>(body.max[0], body.max[1]), {body.particles_per_cell[0], body.particles_per_cell[1]}, body.placement, visit);
-      if (touched) break;
-    }
-    if (!touched) warn("initial_velocity[" + std::to_string(k) + "].min", "the box holds no particle: it sets no velocity");
-  }
+  for (size_t k = 0; k < scene.initial_velocities.size(); ++k)
+    if (!detail::box_holds_particle(scene, scene.initial_velocities[k]))
+      warn("initial_velocity[" + std::to_string(k) + "].min", "the box holds no particle: it sets no velocity");
   if (scene.control.cfl > cfl_limit) {  // false when the limit is NaN
     const bool npc = scene.integrator == IntegratorKind::npc;
     char what[400];
-    std::snprintf(what, sizeof what,
-                  "%g is above the stability limit %.3f of %s shapes with %s%s, from the method's own linearised step "
-                  "(`mpm stability`, paper/10_integrator_analysis.md); expect the run to stop with energy growth (exit 3)",
-                  scene.control.cfl, cfl_limit, name_of(scene.shape).c_str(), npc ? "the predictor-corrector" : "forward Euler",
-                  npc && scene.npc_velocity == NewmarkParticleVelocity::average ? " (Newmark average)" : "");
+    std::snprintf(
+        what, sizeof what,
+        "%g is above the stability limit %.3f of %s shapes with %s%s, from the method's own linearised step "
+        "(`mpm stability`, paper/10_integrator_analysis.md); expect the run to stop with energy growth (exit 3)",
+        scene.control.cfl, cfl_limit, name_of(scene.shape).c_str(), npc ? "the predictor-corrector" : "forward Euler",
+        npc && scene.npc_velocity == NewmarkParticleVelocity::average ? " (Newmark average)" : "");
     warn("solver.cfl", what);
   }
-  for (const auto& fixed : scene.fixed) {
-    const int margin = (fixed.upper() ? scene.margin_max : scene.margin_min)[fixed.axis()];
-    const std::string margin_key = std::string("grid.") + (fixed.upper() ? "margin_max" : "margin_min");
-    const std::string& face = name_of(fixed.face);
-    if (scene.shape == ShapeKind::lme && margin > 0)
-      warn(margin_key, "LME next to rigid margin nodes behind the fixed face " + face +
-                           " gives way there (its wide support drags the particles along the held nodes; the soil "
-                           "block at gamma 0.8 settles 0.78 m instead of 0.57 m); with no margin at a fixed face LME "
-                           "interpolates the wall exactly");
-  }
+  for (const auto& fixed : scene.fixed)
+    if (scene.shape == ShapeKind::lme && (fixed.upper() ? scene.margin_max : scene.margin_min)[fixed.axis()] > 0)
+      warn(std::string("grid.") + (fixed.upper() ? "margin_max" : "margin_min"),
+           "LME next to rigid margin nodes behind the fixed face " + name_of(fixed.face) +
+               " gives way there (its wide support drags the particles along the held nodes); with no margin at "
+               "a fixed face LME interpolates the wall exactly");
   return warnings;
 }
 
-/// The warnings of a scene read from `path` with `overrides` (already validated into `scene`, which knows where its keys lie).
-inline std::vector<std::string> scene_warnings(const std::string&, const std::vector<std::string>&, const Scene& scene, double cfl_limit) {
+/// The same, for `mpm run`'s call with the scene's path and overrides (which `scene` already locates).
+inline std::vector<std::string> scene_warnings(const std::string&, const std::vector<std::string>&, const Scene& scene,
+                                               double cfl_limit) {
   return scene_warnings(scene, cfl_limit);
 }
 
