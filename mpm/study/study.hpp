@@ -107,28 +107,12 @@ inline void clear_study_folder(const std::string& out) {
   }
 }
 
-/// Draws study.gp's pictures in `out` into their hidden temporaries and renames each complete one into place.
-/// \throws OutputFailure naming the picture that gnuplot did not draw whole, with gnuplot's first message.
-inline void draw_pictures(const std::string& out, const std::vector<std::string>& pictures) {
-  std::string reason;
-  for (const auto& picture : pictures) {
-    const int descriptor = cli::create_fresh(out + "/" + io::OutputFile::temporary_path(picture), reason);
-    if (descriptor < 0) throw OutputFailure(out + "/" + picture, reason);
-    ::close(descriptor);
-  }
-  std::FILE* log = std::tmpfile();
-  const int status = log ? cli::run_gnuplot(out, "study.gp", -1, fileno(log)) : 127;
-  const std::string message = reason_line(read_back(log));
-  if (log) std::fclose(log);
-  for (const auto& picture : pictures) {
-    const std::string temporary = out + "/" + io::OutputFile::temporary_path(picture);
-    if (status != 0 || !cli::png_file_complete(temporary) || std::rename(temporary.c_str(), (out + "/" + picture).c_str()) != 0) {
-      ::unlink(temporary.c_str());
-      throw OutputFailure(out + "/" + picture, (status != 0 ? "gnuplot failed (status " + std::to_string(status) + "; is gnuplot installed? make deps)"
-                                                            : std::string("gnuplot left it incomplete")) +
-                                                   (message.empty() ? "" : ": " + message));
-    }
-  }
+/// Draws `pictures` (names in `out`) with gnuplot running `script` there; a picture not drawn whole is removed.
+/// \throws OutputFailure naming it, with gnuplot's first message.
+inline void draw_pictures(const std::string& out, const std::string& script, const std::vector<std::string>& pictures) {
+  std::vector<std::string> paths;
+  for (const auto& picture : pictures) paths.push_back(out + "/" + picture);
+  cli::draw_with_gnuplot(out, script, paths);
 }
 
 /// Writes the study's files into `out` and returns their paths. \throws OutputFailure.
@@ -150,10 +134,10 @@ inline std::vector<std::string> write_study(const Study& study, const std::vecto
     for (const auto& value : study.axes[study.refine].values) tics += (tics.empty() ? "(" : ", ") + number_cell(value.number);
     tics += ")";
   }
-  io::write_file(out + "/study.gp", study_script(at_t, shifted, cost, refine, tics, io::OutputFile::temporary_path("error.png"),
-                                                 io::OutputFile::temporary_path("cost.png")));
+  const std::string script = study_script(at_t, shifted, cost, refine, tics, "error.png", "cost.png");
+  io::write_file(out + "/study.gp", script);
   written.push_back(out + "/study.gp");
-  draw_pictures(out, pictures);
+  draw_pictures(out, script, pictures);
   for (const auto& picture : pictures) written.push_back(out + "/" + picture);
   return written;
 }

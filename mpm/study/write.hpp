@@ -147,7 +147,7 @@ inline std::string panel_script(const std::vector<Curve>& curves, const std::str
 }
 
 /// The whole of study.gp: error.png (when `refine_label` is not empty; its x tics `refine_tics`, the refine axis's
-/// values) and cost.png into the temporaries `error_file` and `cost_file`; an empty panel list draws nothing.
+/// values) and cost.png into `error_file` and `cost_file`, names in gnuplot's folder; an empty panel list draws nothing.
 inline std::string study_script(const std::vector<Curve>& at_t, const std::vector<Curve>& shifted, const std::vector<Curve>& cost,
                                 const std::string& refine_label, const std::string& refine_tics, const std::string& error_file,
                                 const std::string& cost_file) {
@@ -155,14 +155,14 @@ inline std::string study_script(const std::vector<Curve>& at_t, const std::vecto
   std::string gp = "set grid lc rgb '#dddddd'\nset logscale xy\nset key outside right top\nset format y '%g'\n"
                    "set autoscale fix\nset offsets graph 0.05, graph 0.05, graph 0.08, graph 0.08\n";  // axes that fit the data
   if (!refine_label.empty() && !(at_t.empty() && shifted.empty())) {
-    gp += "set terminal pngcairo noenhanced size 1300,520 font ',10'\nset output " + cli::gnuplot_quoted(cli::gnuplot_output_path(error_file)) +
+    gp += "set terminal pngcairo noenhanced size 1300,520 font ',10'\nset output " + cli::gnuplot_quoted("./" + error_file) +
           "\nset multiplot layout 1,2\n";
     if (!at_t.empty()) gp += panel_script(at_t, "t", "at the written time t", refine_label, y_label, refine_tics);
     if (!shifted.empty()) gp += panel_script(shifted, "s", "at the time the integrator's velocity approximates", refine_label, y_label, refine_tics);
     gp += "unset multiplot\nunset output\n";
   }
   if (!cost.empty()) {
-    gp += "set terminal pngcairo noenhanced size 900,520 font ',10'\nset output " + cli::gnuplot_quoted(cli::gnuplot_output_path(cost_file)) + "\n";
+    gp += "set terminal pngcairo noenhanced size 900,520 font ',10'\nset output " + cli::gnuplot_quoted("./" + cost_file) + "\n";
     gp += panel_script(cost, "c", "error against cost", "CPU time of the run (s)", y_label + ", integrator's time") + "unset output\n";
   }
   return gp;
