@@ -110,7 +110,7 @@ inline Value value_of(const toml::node& node, const std::string& file, const std
 
 /// True if `key` names a key of a scene (io::scene_keys: `body[0].max` as `body[].max`; any `constants.NAME`).
 inline bool is_scene_key(const std::string& key) {
-  if (!io::is_key_path(key)) return false;
+  if (io::key_parts(key).empty()) return false;
   if (key.rfind("constants.", 0) == 0) return key.find('.', 10) == std::string::npos;
   std::string general;
   for (std::size_t k = 0; k < key.size(); ++k) {
