@@ -19,14 +19,15 @@ struct SceneError : std::runtime_error {
   SceneError(std::string file_, int line_, std::string key_, const std::string& what_is_wrong)
       : std::runtime_error(what_is_wrong), file(std::move(file_)), line(line_), key(std::move(key_)) {}
   std::string file;
-  int line;  ///< 0 for the file as a whole (missing, not a regular file, too large): then key is ""
+  int line;  ///< 0 for a key the file does not write (its default), or the file as a whole (key "")
   std::string key;
 
-  /// `error: FILE:LINE: KEY: what`, or `error: FILE: what` for the file as a whole (line 0, no key).
+  /// `error: FILE:LINE: KEY: what`; `error: FILE: KEY: what` for a key not written; `error: FILE: what`.
   std::string message() const {
     std::ostringstream out;
     out << "error: " << file << ":";
-    if (line > 0 || !key.empty()) out << line << ": " << key << ":";
+    if (line > 0) out << line << ":";
+    if (!key.empty()) out << " " << key << ":";
     out << " " << what();
     return out.str();
   }

@@ -149,7 +149,7 @@ struct Scene {
 /// its default). \returns the SceneError to throw.
 inline SceneError scene_error(const Scene& scene, const std::string& key, const std::string& what) {
   const auto found = scene.locations.find(key);
-  if (found == scene.locations.end()) return SceneError(scene.file, 1, key, what);
+  if (found == scene.locations.end()) return SceneError(scene.file, 0, key, what);  // a default
   return SceneError(found->second.first, found->second.second, key, what);
 }
 
