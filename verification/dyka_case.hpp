@@ -3,6 +3,8 @@
 #pragma once
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <string>
@@ -27,6 +29,11 @@ struct DykaResult {
   double largest_energy_step_increase = 0.0;  ///< the largest rise of that ratio in one step (negative: it fell in every step)
   double largest_speed = 0.0;  ///< max |v_A|, m/s
   double wall_seconds = 0.0;
+  double cpu_seconds = 0.0;    ///< CPU time of the thread that ran it (the runs are one thread each)
+  /// Plateau deviations, in units of |v0|, on the middle half of every interval where the exact v_A is constant
+  /// (the wave has passed A and the next has not come): signed along the exact jump into the plateau, so
+  /// `overshoot` is the largest step beyond the exact level and `undershoot` the largest shortfall (both >= 0).
+  double overshoot = 0.0, undershoot = 0.0;
   double mass_error = 0.0;     ///< largest relative |sum m_I - sum m_p| of the run
   double newton_mean = 0.0, neighbours_mean = 0.0;
   int newton_max = 0;
@@ -55,6 +62,36 @@ struct VelocityRecorder : mpm::Monitor<1> {
 /// gamma = 0.8 v_A changes by 0.54 m/s RMS).
 inline std::vector<std::string> shape_settings(const std::string& shape) { return {"solver.shape=\"" + shape + "\""}; }
 
+/// CPU seconds of the calling thread.
+inline double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
+
+/// Sets result.overshoot and result.undershoot from its series (see DykaResult). A plateau is a run of samples
+/// with one exact value, 0 or +-|v0| (the exact solution's half-way value at a jump is no plateau); its direction
+/// is the sign of the exact jump into it (for the first, of its own value).
+inline void plateau_deviations(DykaResult& result, double speed) {
+  const std::vector<double>& exact = result.exact;
+  for (size_t first = 0; first < exact.size();) {
+    size_t last = first;
+    while (last + 1 < exact.size() && exact[last + 1] == exact[first]) ++last;
+    const double jump = first == 0 ? exact[first] : exact[first] - exact[first - 1];
+    const double level = std::abs(exact[first]) / speed;
+    const bool plateau = level < 1e-9 || std::abs(level - 1.0) < 1e-9;
+    const double direction = !plateau ? 0.0 : jump > 0.0 ? 1.0 : jump < 0.0 ? -1.0 : 0.0;
+    const double begin = result.time[first], end = result.time[last], quarter = 0.25 * (end - begin);
+    for (size_t n = first; n <= last && direction != 0.0; ++n)
+      if (result.time[n] >= begin + quarter && result.time[n] <= end - quarter) {
+        const double deviation = direction * (result.velocity[n] - exact[n]) / speed;
+        result.overshoot = std::max(result.overshoot, deviation);
+        result.undershoot = std::max(result.undershoot, -deviation);
+      }
+    first = last + 1;
+  }
+}
+
 inline DykaResult run_dyka(const std::string& scene_path, const std::string& name, const std::vector<std::string>& overrides,
                            int threads = 1) {
   DykaResult result;
@@ -66,6 +103,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   result.cells = scene.cells[0];
   VelocityRecorder recorder(setup.observed.at(0));
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
   mpm::RunSummary summary;
   try {
     summary = mpm::run_setup<1>(scene, setup, recorder, &summary);
@@ -74,6 +112,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
     result.failure = failure.message();
   }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.cpu_seconds = thread_cpu_seconds() - cpu_start;
   result.steps = summary.steps;
   result.mass_error = summary.largest_mass_error;
   result.newton_mean = summary.shape.newton_iterations_mean();
@@ -95,6 +134,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
     result.largest_speed = std::max(result.largest_speed, std::abs(result.velocity[n]));
   }
   if (!result.failed) result.rms = mpm::rms_error(result.velocity, result.exact);
+  if (!result.failed) plateau_deviations(result, std::abs(v0));
   // Forward Euler's velocity of the row at t_n is v(t_n + dt_n / 2), dt_n the step that starts there (the
   // last row takes the step before it); the recorder samples every step.
   std::vector<double> exact_own_time = result.exact;

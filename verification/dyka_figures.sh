@@ -19,8 +19,7 @@ series() {  # series NAME CAPTION INSET FILES... -- TITLES...
   titles="$*"
   g "out='$figures/$name'; caption='$caption'; files='${files# }'; titles='$titles'; inset=$inset" dyka_series.gp
 }
-series dyka_fig7 "Fig. 7: predictor-corrector against forward Euler (LME γ = 3, 40 cells, CFL 0.5); inset: a jump" 1 \
-  dyka_lme_fe_40 dyka_lme_npc_40 dyka_lme_npcavg_40 dyka_lme_feblend_40 -- FE NPC NPC-average FE+PIC/FLIP-blend
+g "out='$figures/dyka_fig7'" dyka_fig7.gp
 series dyka_fig9 "Fig. 9: shape functions, forward Euler (40 cells, CFL 0.5)" 0 \
   dyka_linear_fe_40 dyka_ugimp_fe_40 dyka_lme_fe_40 -- linear uGIMP LME
 series dyka_fig10 "Fig. 10: shape functions, predictor-corrector (40 cells, CFL 0.5)" 0 \
@@ -32,6 +31,7 @@ below=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f2) above=$(gre
 g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability.gp
 
 # The runs on each mesh's error-cost front (data/dyka_baselines.csv, column pareto), as "40 cells: a, b; 160 cells: ...".
+# The fronts and their ties are also in the Dyka bar's section, "Today's baselines".
 front() {
   tail -n +2 "$data/dyka_baselines.csv" | awk -F, '$7 == 1 { list[$2] = list[$2] (list[$2] == "" ? "" : ", ") $1 } END { for (n in list) print n, list[n] }' |
     sort -n | awk '{ n = $1; $1 = ""; printf "%s%s cells:%s", (NR > 1 ? "; " : ""), n, $0 }'
@@ -43,7 +43,7 @@ front() {
   echo
   echo "![dyka_work_precision](figures/dyka_work_precision.png)"
   echo
-  echo "RMS of v_A against the wall time of each run of the mesh sweep (points left to right: 10 to 2560 cells), measured with one run per core at a time; with points of their own, today's baselines on their meshes (data/dyka_baselines.csv). Ringed: the runs on their mesh's error-cost front, which the Dyka bar's section \"Today's baselines\" above names, mesh by mesh, as the methods most accurate for their cost (no method both more accurate and over 10 % faster): $(front)."
+  echo "RMS of v_A against the CPU time of each run (the thread's, one run per core at a time): the paper's methods over the mesh sweep (points left to right: 10 to 2560 cells, one run each) and today's baselines by family on their meshes (data/dyka_baselines.csv), the runs on 40 and 160 cells repeated 5 times, interleaved (error bars: fastest to slowest). Ringed: the runs on their mesh's error-cost front, no method both more accurate and faster by more than the measured spread (the repeats' ranges apart; a single timing, on 640 and 2560 cells, widened by the largest spread of the 160-cell repeats); the Dyka bar's section \"Today's baselines\" above names them with the ties the spread leaves: $(front)."
   echo
   echo "### Where methods fail: the largest stable CFL (\`dyka_stability\`)"
   echo

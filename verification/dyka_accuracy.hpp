@@ -1,0 +1,153 @@
+// The analysis of the Dyka suite's accuracy figures (Figs. 6-10, dyka_fair): one function per figure, each
+// returning its section of the report, every claim evaluated on every run of its study.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "verification/dyka_report.hpp"
+
+namespace verification::dyka {
+
+/// Every run: mass conservation and whether it reached its end time, per study.
+inline Section all_runs_section(const Runs& runs) {
+  const std::vector<std::pair<std::string, std::string>> studies{
+      {"sweep and large CFLs", "dyka_"}, {"baselines", "dyka_base_"}, {"gammas", "dyka_gamma_"}, {"choices", "dyka_choice_"}, {"energy", "dyka_energy_"}};
+  auto study_of = [&](const std::string& name) {
+    std::string found = studies.front().first;
+    for (const auto& [study, prefix] : studies)
+      if (name.rfind(prefix, 0) == 0) found = study;
+    return found;
+  };
+  double worst_all = 0.0;
+  for (const auto& [name, run] : runs.by_name) worst_all = std::max(worst_all, run.mass_error);
+  DomainClaim mass{"Mass is conserved: the nodal masses sum to the particle mass (Eq. 13 with the partition of unity), every step of every run "
+                   "(largest relative error " + number(worst_all, "%.3g") + ")",
+                   "largest relative error of a step over the study's runs <= 1e-12", {}, true};
+  DomainClaim finished{"Every run reaches its end time (no NaN, no particle off the grid, no energy growth)",
+                       "runs of the study that stopped (0 holds); each stopped run named with the solver's diagnosis", {}, false};
+  for (const auto& [study, prefix] : studies) {
+    double worst = 0.0;
+    int count = 0, stopped = 0;
+    std::string list;
+    for (const auto& [name, run] : runs.by_name)
+      if (study_of(name) == study) {
+        ++count, worst = std::max(worst, run.mass_error);
+        if (run.failed) ++stopped, list += "; `" + name + "` " + stopped_text(run);
+      }
+    const std::string where = study + ", " + std::to_string(count) + " runs";
+    mass.add(where, worst, worst <= 1e-12);
+    finished.add(where + list, stopped, stopped == 0);
+  }
+  return {"All Dyka runs", "", {mass, finished}};
+}
+
+/// The fitted orders of Fig. 6 per band, with and without the coarsest mesh of the band without crossing, as Markdown.
+inline std::string order_table(const Runs& runs) {
+  const auto negligible = band_cells("negligible"), transition = band_cells("transition"), crossing = band_cells("crossing");
+  std::string table = "Fitted orders of convergence (GSL least squares on log RMS against log cells, ± the slope's standard error; "
+                      "no fit on fewer than 3 finished runs), per band of paper/08_test_cases.md, and without the band's coarsest mesh "
+                      "where the band without crossing starts at 10 cells. FE at t + dt/2: forward Euler's velocity compared with the "
+                      "exact solution at the time it approximates:\n\n"
+                      "| shape | integrator | negligible | negligible without " + std::to_string(negligible.front()) +
+                      " | transition | crossing | FE at t + dt/2, negligible | FE at t + dt/2, transition |\n|---|---|---|---|---|---|---|---|\n";
+  auto own = [](const DykaResult& run) { return run.rms_own_time; };
+  for (const auto& shape : shapes)
+    for (const auto& integrator : integrators) {
+      table += "| " + shape + " | " + integrator + " | " + order_text(fit_runs(runs, negligible, shape, integrator)) + " | " +
+               order_text(fit_runs(runs, without_first(negligible), shape, integrator)) + " | " + order_text(fit_runs(runs, transition, shape, integrator)) +
+               " | " + order_text(fit_runs(runs, crossing, shape, integrator)) + " | ";
+      table += integrator == "fe" ? order_text(fit_runs(runs, negligible, shape, "fe", own)) + " | " + order_text(fit_runs(runs, transition, shape, "fe", own)) + " |\n"
+                                  : "- | - |\n";
+    }
+  return table;
+}
+
+/// NPC against FE on every mesh and CFL of the sweep, per shape: RMS_NPC / RMS_FE.
+inline DomainClaim npc_below_fe(const Runs& runs, const std::string& shape, bool own_time) {
+  DomainClaim claim{own_time ? "NPC is more accurate than FE with FE's velocity compared at t + dt/2, the time it approximates (" + shape + ")"
+                             : "The predictor-corrector is more accurate than forward Euler (Fig. 6, " + shape + ")",
+                    own_time ? "RMS_NPC / RMS_FE(t + dt/2) < 1, on every mesh of the sweep at CFL 0.5 and at the large CFLs"
+                             : "RMS_NPC / RMS_FE < 1, on every mesh of the sweep at CFL 0.5 and at the large CFLs",
+                    {}, false};
+  for (const auto& [cells, cfl] : comparison_domain()) {
+    const auto &fe = runs.at(sweep_name(shape, "fe", cells, cfl)), &npc = runs.at(sweep_name(shape, "npc", cells, cfl));
+    const double fe_rms = own_time ? fe.rms_own_time : fe.rms;
+    add_pair(claim, mesh_text(cells, cfl), ", NPC " + rms_text(npc.rms / speed_v0) + " / FE " + rms_text(fe_rms / speed_v0), npc, "NPC", fe, "FE",
+             npc.rms / fe_rms, npc.rms < fe_rms);
+  }
+  return claim;
+}
+
+inline Section fig6_section(const Runs& runs) {
+  Section section{"Fig. 6: error at point A against the number of cells (`dyka_fig6`)", order_table(runs), {}};
+  const auto negligible = band_cells("negligible");
+  DomainClaim falls{"Without grid crossing the error falls under refinement", "fitted order over " + cells_text(negligible) +
+                    " cells > 0 and RMS(160) < RMS(40)", {}, true};
+  for (const auto& shape : shapes)
+    for (const auto& integrator : integrators) {
+      const OrderFit fit = fit_runs(runs, negligible, shape, integrator);
+      const double rms40 = runs.rms(sweep_name(shape, integrator, 40)), rms160 = runs.rms(sweep_name(shape, integrator, 160));
+      falls.add(shape + " " + integrator + ": RMS/v0 " + rms_text(rms40) + " -> " + rms_text(rms160) + ", order " + order_text(fit), fit.order,
+                fit.fitted() && fit.order > 0.0 && rms160 < rms40);
+    }
+  section.claims.push_back(falls);
+  for (const auto& shape : shapes) section.claims.push_back(npc_below_fe(runs, shape, false));
+  const int fine = sweep_cells.back(), coarse = band_cells("transition").back();
+  DomainClaim spoils{"Grid crossing spoils the solution: the error at " + std::to_string(fine) + " cells exceeds the error at " + std::to_string(coarse),
+                     "RMS(" + std::to_string(fine) + ") / RMS(" + std::to_string(coarse) + ") > 1; a stopped run is named, not scored", {}, false};
+  DomainClaim through{"uGIMP and LME stay accurate through grid crossing: their error at " + std::to_string(fine) + " cells is below their error at " +
+                          std::to_string(coarse), "RMS(" + std::to_string(fine) + ") / RMS(" + std::to_string(coarse) + ") < 1", {}, false};
+  DomainClaim better{"uGIMP and LME withstand grid crossing better than linear shape functions (" + std::to_string(fine) + " cells)",
+                     "RMS_shape / RMS_linear < 1; a shape that finishes where linear stops holds, one that stops fails", {}, false};
+  for (const auto& shape : shapes)
+    for (const auto& integrator : integrators) {
+      const auto &f = runs.at(sweep_name(shape, integrator, fine)), &c = runs.at(sweep_name(shape, integrator, coarse));
+      const std::string where = shape + " " + integrator, detail = " " + rms_text(c.rms / speed_v0) + " -> " + rms_text(f.rms / speed_v0);
+      add_pair(spoils, where, detail, f, std::to_string(fine), c, std::to_string(coarse), f.rms / c.rms, f.rms > c.rms);
+      if (shape == "linear") continue;
+      add_pair(through, where, detail, f, std::to_string(fine), c, std::to_string(coarse), f.rms / c.rms, f.rms < c.rms);
+      const auto& linear = runs.at(sweep_name("linear", integrator, fine));
+      if (linear.failed && !f.failed)
+        better.add(shape + " " + integrator + ": " + rms_text(f.rms / speed_v0) + ", linear " + stopped_text(linear), std::nan(""), true);
+      else
+        add_pair(better, shape + " " + integrator, ": " + rms_text(f.rms / speed_v0) + " / linear " + rms_text(linear.rms / speed_v0), f, shape, linear,
+                 "linear", f.rms / linear.rms, f.rms < linear.rms);
+    }
+  section.claims.insert(section.claims.end(), {spoils, better, through});
+  return section;
+}
+
+/// Fig. 7: oscillations measured on the plateaus of v_A (both signs), per shape over the sweep and the large CFLs.
+inline Section fig7_section(const Runs& runs) {
+  Section section{"Fig. 7: predictor-corrector against forward Euler (`dyka_fig7`)",
+                  "Plateau deviation: on the middle half of every interval where the exact v_A is constant (0 or ±v0), the largest step "
+                  "beyond the exact level (overshoot, +) and the largest shortfall (undershoot, −), along the exact jump into the plateau, "
+                  "divided by |v0|. The t = 0 sample is no plateau sample; a damped plateau shows as undershoot.",
+                  {}};
+  auto deviation = [](const DykaResult& run) { return std::max(run.overshoot, run.undershoot); };
+  for (const auto& shape : shapes) {
+    DomainClaim claim{"The predictor-corrector removes the spurious oscillations of forward Euler (" + shape + ")",
+                      "largest plateau deviation NPC / FE < 1 (where: NPC +over/−under, FE +over/−under)", {}, false};
+    for (const auto& [cells, cfl] : comparison_domain()) {
+      const auto &fe = runs.at(sweep_name(shape, "fe", cells, cfl)), &npc = runs.at(sweep_name(shape, "npc", cells, cfl));
+      const std::string detail = ", NPC +" + text(npc.overshoot, "%.3f") + "/−" + text(npc.undershoot, "%.3f") + ", FE +" +
+                                text(fe.overshoot, "%.3f") + "/−" + text(fe.undershoot, "%.3f");
+      add_pair(claim, mesh_text(cells, cfl), detail, npc, "NPC", fe, "FE", deviation(npc) / deviation(fe), deviation(npc) < deviation(fe));
+    }
+    section.claims.push_back(claim);
+  }
+  DomainClaim paper{"paper/08_test_cases.md: NPC stays within 1.0-1.09 v0, FE overshoots to 1.3-1.6 v0",
+                    "plateau overshoot: NPC <= 0.09 and FE >= 0.3, every shape and mesh of the sweep at CFL 0.5 (value: FE's)", {}, false};
+  for (const auto& shape : shapes)
+    for (int cells : sweep_cells) {
+      const auto &fe = runs.at(sweep_name(shape, "fe", cells)), &npc = runs.at(sweep_name(shape, "npc", cells));
+      add_pair(paper, shape + " " + std::to_string(cells), ": NPC +" + text(npc.overshoot, "%.3f") + ", FE", npc, "NPC", fe, "FE", fe.overshoot,
+               npc.overshoot <= 0.09 && fe.overshoot >= 0.3);
+    }
+  section.claims.push_back(paper);
+  return section;
+}
+
+}  // namespace verification::dyka

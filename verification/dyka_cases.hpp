@@ -1,0 +1,189 @@
+// The studies of the Dyka-bar suite as data: which runs each figure needs, by name and scene overrides.
+//
+// sweep:     Fig. 6's mesh sweep, 10 to 2560 cells, linear, uGIMP and LME gamma 3, forward Euler and the
+//            predictor-corrector, CFL 0.5 (also Figs. 7, 9, 10 and the work-precision chart);
+// cfl:       the same methods at CFL 1.0 and 1.3 on 40 and 160 cells (where the comparison of the integrators
+//            might turn with the step);
+// npcavg:    the predictor-corrector with the Newmark average on the meshes without grid crossing (dyka_fair);
+// gamma:     Fig. 8's LME gammas at 40 cells;
+// baselines: today's baselines on 40, 160, 640 cells (the cubic B-spline also 2560);
+// choices:   each choice of paper/09_choices.md switched on its own (dyka_choices.csv);
+// energy:    every shape over 10 periods at 40 cells (the runs of tests/energy.cpp, dyka_energy.csv).
+//
+// The sweep stops at 2560 cells, the first mesh where particles cross cells at 1 particle per cell (crossing
+// ratio 1.27): 5120 cells alone would cost more than the rest of the suite (see the smooth suite for crossing).
+#pragma once
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "verification/dyka_case.hpp"
+
+namespace verification::dyka {
+
+struct CaseSpec {
+  std::string name;
+  std::vector<std::string> overrides;
+};
+
+const std::vector<int> sweep_cells{10, 20, 40, 80, 160, 320, 640, 1280, 2560};
+const std::vector<std::string> shapes{"linear", "ugimp", "lme"}, integrators{"fe", "npc"};
+const std::vector<double> gammas{0.8, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0};
+const std::vector<double> large_cfls{1.0, 1.3};
+const std::vector<int> large_cfl_cells{40, 160};
+constexpr double speed_v0 = 5.0;                   // |v0|, m/s
+constexpr double largest_displacement = 3.298e-5;  // a |v0| / c, m (paper/08_test_cases.md)
+
+inline std::string text(double value, const char* format = "%g") {
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
+/// Grid-crossing ratio of paper/08_test_cases.md: delta = u_max / d_face, d_face = h / (2 ppc), ppc = 1.
+inline double crossing_ratio(int cells) { return largest_displacement / (0.5 * 0.1333 / cells); }
+inline std::string band_of(int cells) {
+  const double delta = crossing_ratio(cells);
+  return delta < 0.1 ? "negligible" : delta < 1.0 ? "transition" : "crossing";
+}
+/// The meshes of the sweep in a band.
+inline std::vector<int> band_cells(const std::string& band) {
+  std::vector<int> cells;
+  for (int n : sweep_cells)
+    if (band_of(n) == band) cells.push_back(n);
+  return cells;
+}
+/// "10-160", "2560", "none"
+inline std::string cells_text(const std::vector<int>& cells) {
+  if (cells.empty()) return "none";
+  return cells.size() == 1 ? std::to_string(cells[0]) : std::to_string(cells.front()) + "-" + std::to_string(cells.back());
+}
+
+inline std::string sweep_name(const std::string& shape, const std::string& integrator, int cells, double cfl = 0.5) {
+  return "dyka_" + (cfl == 0.5 ? std::string() : "cfl" + text(cfl) + "_") + shape + "_" + integrator + "_" + std::to_string(cells);
+}
+/// The fair comparison's variants: "npcavg" (Eq. 23's average), "feblend" (forward Euler with a PIC/FLIP blend).
+inline std::string fair_name(const std::string& shape, const std::string& variant, int cells) {
+  return "dyka_" + shape + "_" + variant + "_" + std::to_string(cells);
+}
+inline std::string gamma_name(const std::string& integrator, double gamma) { return "dyka_gamma_" + integrator + "_" + text(gamma); }
+inline std::string baseline_name(const std::string& method, int cells) { return "dyka_base_" + method + "_" + std::to_string(cells); }
+
+/// A shape on a mesh: room beyond the free end, 4 cells and 1 % of the bar more on fine meshes, where grid crossing
+/// can set the end particle adrift (paper/09_choices.md, 'Grid margins'); LME at gamma 3 unless stated.
+inline std::vector<std::string> mesh_settings(const std::string& shape, int cells) {
+  std::vector<std::string> overrides = shape_settings(shape);
+  overrides.insert(overrides.end(), {"grid.cells=[" + std::to_string(cells) + "]", "grid.margin_min=[" + std::to_string(4 + cells / 100) + "]",
+                                     "solver.lme_gamma=3.0", "output.snapshots=[]"});
+  return overrides;
+}
+inline std::vector<std::string> with(std::vector<std::string> overrides, const std::vector<std::string>& more) {
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  return overrides;
+}
+inline std::string integrator_setting(const std::string& integrator) { return "solver.integrator=\"" + integrator + "\""; }
+
+/// Today's baselines beside the paper's methods (paper/08_test_cases.md, "Today's baselines"). At one particle per
+/// cell the quadratic B-spline is uGIMP, which the report checks on the meshes it runs.
+struct Baseline {
+  std::string method;
+  std::vector<std::string> settings;
+  bool at_crossing;  ///< also run at 2560 cells
+};
+const std::vector<Baseline> baselines{
+    {"bspline2_fe", {"solver.shape=\"bspline2\"", "solver.integrator=\"fe\""}, false},
+    {"bspline2_npc", {"solver.shape=\"bspline2\"", "solver.integrator=\"npc\""}, false},
+    {"bspline3_fe", {"solver.shape=\"bspline3\"", "solver.integrator=\"fe\""}, true},
+    {"bspline3_npc", {"solver.shape=\"bspline3\"", "solver.integrator=\"npc\""}, true},
+    {"linear_usl", {"solver.shape=\"linear\"", "solver.stress_update=\"usl\""}, false},
+    {"linear_musl", {"solver.shape=\"linear\"", "solver.stress_update=\"musl\""}, false},
+    {"bspline2_usl", {"solver.shape=\"bspline2\"", "solver.stress_update=\"usl\""}, false},
+    {"bspline2_musl", {"solver.shape=\"bspline2\"", "solver.stress_update=\"musl\""}, false},
+    {"lme0.8_fe", {"solver.shape=\"lme\"", "solver.integrator=\"fe\"", "solver.lme_gamma=0.8"}, false},
+    {"lme0.8_npc", {"solver.shape=\"lme\"", "solver.integrator=\"npc\"", "solver.lme_gamma=0.8"}, false},
+    {"lme1.5_fe", {"solver.shape=\"lme\"", "solver.integrator=\"fe\"", "solver.lme_gamma=1.5"}, false},
+    {"lme1.5_npc", {"solver.shape=\"lme\"", "solver.integrator=\"npc\"", "solver.lme_gamma=1.5"}, false}};
+const std::vector<int> baseline_cells{40, 160, 640, 2560};
+/// The meshes whose runs are timed 5 times, interleaved, for the error-cost fronts (the others once each).
+const std::vector<int> repeated_cells{40, 160};
+constexpr int timing_repeats = 5;
+
+/// The choices of paper/09_choices.md, each switched on its own on the sweep's run (or on `reference`).
+struct ChoiceCase {
+  std::string choice, shape, integrator;
+  int cells;
+  std::vector<std::string> overrides;
+  std::string reference;  ///< the run it is compared with; empty: the sweep's
+  std::string name() const { return "dyka_choice_" + choice + "_" + shape + "_" + integrator + "_" + std::to_string(cells); }
+  std::string reference_name() const { return reference.empty() ? sweep_name(shape, integrator, cells) : reference; }
+};
+const std::vector<ChoiceCase> choice_cases{
+    {"fe_position_start", "linear", "fe", 40, {"solver.fe_position_velocity=\"start\""}, ""},
+    {"fe_position_start", "lme", "fe", 40, {"solver.fe_position_velocity=\"start\""}, ""},
+    {"no_free_end_margin", "lme", "fe", 40, {"grid.margin_min=[0]"}, ""},
+    {"no_free_end_margin", "lme", "fe", 2560, {"grid.margin_min=[0]"}, ""},
+    {"beta_mean_neighbour_distance", "lme", "fe", 40, {"solver.lme_beta=\"mean_neighbour_distance\""}, ""},
+    {"beta_mean_neighbour_distance", "lme", "npc", 40, {"solver.lme_beta=\"mean_neighbour_distance\""}, ""},
+    {"lme_tol_1e-5", "lme", "npc", 40, {"solver.lme_tol=1e-5"}, ""},
+    {"courant_sum", "linear", "fe", 40, {"solver.courant=\"sum\""}, ""},
+    {"courant_sum", "linear", "npc", 40, {"solver.courant=\"sum\""}, ""},
+    {"default_snapshots", "linear", "fe", 40, {"output.snapshots=[0.0, 1.0e-4, 2.0e-4]"}, ""},
+    {"rigid_support_margin_gamma0.8", "lme", "npc", 40, {"grid.margin_max=[4]", "solver.lme_gamma=0.80"}, gamma_name("npc", 0.8)},
+};
+
+/// Energy over 10 periods (10 x 4L/c = 1.0551 ms) at 40 cells: every shape with both integrators at CFL 0.5, and the
+/// predictor-corrector at CFL 0.1 (its loss falls with the step).
+struct EnergyCase {
+  std::string shape, integrator;
+  double cfl;
+  std::string name() const { return "dyka_energy_" + shape + "_" + integrator + "_cfl" + text(cfl); }
+};
+inline std::vector<EnergyCase> energy_cases() {
+  std::vector<EnergyCase> cases;
+  for (const auto& shape : shapes) {
+    for (const auto& integrator : integrators) cases.push_back({shape, integrator, 0.5});
+    cases.push_back({shape, "npc", 0.1});
+  }
+  return cases;
+}
+
+/// Every run that depends on no other: the sweep, the large CFLs, the Newmark average, the gammas, the baselines,
+/// the choices and the energy runs.
+inline std::vector<CaseSpec> independent_cases() {
+  std::vector<CaseSpec> cases;
+  for (int cells : sweep_cells)
+    for (const auto& shape : shapes)
+      for (const auto& integrator : integrators) cases.push_back({sweep_name(shape, integrator, cells), with(mesh_settings(shape, cells), {integrator_setting(integrator)})});
+  for (double cfl : large_cfls)
+    for (int cells : large_cfl_cells)
+      for (const auto& shape : shapes)
+        for (const auto& integrator : integrators)
+          cases.push_back({sweep_name(shape, integrator, cells, cfl), with(mesh_settings(shape, cells), {integrator_setting(integrator), "solver.cfl=" + text(cfl)})});
+  for (int cells : band_cells("negligible"))
+    for (const auto& shape : shapes)
+      cases.push_back({fair_name(shape, "npcavg", cells), with(mesh_settings(shape, cells), {"solver.integrator=\"npc\"", "solver.npc_velocity=\"average\""})});
+  for (const auto& integrator : integrators)
+    for (double gamma : gammas)
+      cases.push_back({gamma_name(integrator, gamma), {"grid.cells=[40]", "solver.shape=\"lme\"", integrator_setting(integrator),
+                                                       "solver.lme_gamma=" + text(gamma, "%.2f"), "output.snapshots=[]"}});
+  for (const auto& baseline : baselines)
+    for (int cells : baseline_cells)
+      if (cells <= 640 || baseline.at_crossing) cases.push_back({baseline_name(baseline.method, cells), with(mesh_settings("linear", cells), baseline.settings)});
+  for (const auto& c : choice_cases)
+    cases.push_back({c.name(), with(with(mesh_settings(c.shape, c.cells), {integrator_setting(c.integrator)}), c.overrides)});
+  for (const auto& c : energy_cases())
+    cases.push_back({c.name(), with(shape_settings(c.shape), {integrator_setting(c.integrator), "solver.cfl=" + text(c.cfl),
+                                                              "solver.end_time=1.0551e-3", "output.snapshots=[]"})});
+  return cases;
+}
+
+/// Cost weight of a case for the order of the queue (longest first, so that the cores finish together).
+inline double case_weight(const CaseSpec& spec) {
+  int cells = 40;
+  for (const auto& o : spec.overrides)
+    if (o.rfind("grid.cells=[", 0) == 0) cells = std::stoi(o.substr(12));
+  const double shape = spec.name.find("_lme") != std::string::npos ? 6.0 : spec.name.find("_linear_") != std::string::npos ? 1.0 : 2.0;
+  return double(cells) * cells * shape;
+}
+
+}  // namespace verification::dyka

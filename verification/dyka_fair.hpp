@@ -1,0 +1,132 @@
+// The analysis of the Dyka suite's fair comparison of the integrators (dyka_fair), the shape figures (Figs. 8-10),
+// LME's Newton iterations and the energy over 10 periods: one function per figure or table.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "verification/dyka_report.hpp"
+
+namespace verification::dyka {
+
+/// FE against NPC, fairly: FE at its own time (every mesh), the Newmark average and the PIC/FLIP blend calibrated per
+/// shape and mesh to the shape's own NPC energy (the meshes without crossing).
+inline Section fair_section(const Runs& runs) {
+  Section section{"FE against NPC, fairly: FE at its own time, the Newmark average, FE damped like NPC (`dyka_fair`)",
+                  "The blend's FLIP fraction is found per shape and mesh, by bisection, so that shape + FE ends (t = 200 µs) with the "
+                  "energy shape + NPC ends with, to 1e-4 of it (data/dyka_fair.csv: flip_fraction, energy_fe_blend, energy_npc).",
+                  {}};
+  const auto meshes = band_cells("negligible");
+  for (const auto& shape : shapes) section.claims.push_back(npc_below_fe(runs, shape, true));
+  for (const auto& shape : shapes) {
+    DomainClaim average{"NPC as printed (Eq. 32, damped) is more accurate than the undamped Newmark average (" + shape + ")",
+                        "RMS_Eq.32 / RMS_average < 1 on the meshes without crossing", {}, false};
+    DomainClaim blend{"NPC's lower RMS is more than its damping: NPC is more accurate, by more than 1 %, than FE given the same energy loss by a "
+                      "PIC/FLIP blend calibrated on this shape (" + shape + ")",
+                      "RMS_NPC / RMS_FE+blend < 0.99 on the meshes without crossing (where: FLIP fraction; energy at 200 µs blend / NPC)", {}, false};
+    for (int cells : meshes) {
+      const auto &npc = runs.at(sweep_name(shape, "npc", cells)), &avg = runs.at(fair_name(shape, "npcavg", cells));
+      const auto& fe_blend = runs.at(fair_name(shape, "feblend", cells));
+      add_pair(average, mesh_text(cells), ": " + rms_text(npc.rms / speed_v0) + " / " + rms_text(avg.rms / speed_v0), npc, "NPC", avg, "average",
+               npc.rms / avg.rms, npc.rms < avg.rms);
+      add_pair(blend, mesh_text(cells), ": " + rms_text(npc.rms / speed_v0) + " / " + rms_text(fe_blend.rms / speed_v0) + ", FLIP " +
+                          text(runs.flip_fraction.at(fe_blend.name), "%.5f") + ", energy " + text(fe_blend.final_energy_ratio, "%.5f") + " / " +
+                          text(npc.final_energy_ratio, "%.5f"),
+               npc, "NPC", fe_blend, "FE + blend", npc.rms / fe_blend.rms, npc.rms < 0.99 * fe_blend.rms);
+    }
+    section.claims.insert(section.claims.end(), {average, blend});
+  }
+  return section;
+}
+
+/// Fig. 8: the spread of LME's error over gamma at 40 cells, per integrator.
+inline Section fig8_section(const Runs& runs) {
+  DomainClaim claim{"The LME result is sensitive to gamma (40 cells): RMS/v0 varies by more than 5% over gamma in [0.8, 5]",
+                    "(largest - smallest RMS) / smallest over the gammas > 5 %", {}, false};
+  for (const auto& integrator : integrators) {
+    double best = 1e300, worst = 0.0, best_gamma = 0.0;
+    std::string row;
+    bool stopped = false;
+    for (double gamma : gammas) {
+      const auto& run = runs.at(gamma_name(integrator, gamma));
+      stopped = stopped || run.failed;
+      row += (row.empty() ? "" : ", ") + std::string("γ ") + text(gamma) + ": " + (run.failed ? stopped_text(run) : rms_text(run.rms / speed_v0));
+      if (run.rms < best) best = run.rms, best_gamma = gamma;
+      worst = std::max(worst, run.rms);
+    }
+    const double spread = 100.0 * (worst - best) / best;
+    claim.add(integrator + " (" + row + "; best at γ " + text(best_gamma) + ")", stopped ? std::nan("") : spread, !stopped && spread > 5.0);
+  }
+  return {"Fig. 8: sensitivity to gamma (`dyka_fig8`)", "", {claim}};
+}
+
+/// Figs. 9 and 10: the shapes compared on every mesh without crossing, and the theory's bound on the convergence.
+inline Section fig9_10_section(const Runs& runs) {
+  DomainClaim agree{"Without grid crossing the three shape functions give nearly the same v_A (paper/08_test_cases.md: within about 1%)",
+                    "spread of RMS over the shapes, (largest - smallest) / smallest <= 5 %, every mesh with crossing ratio < 1", {}, false};
+  for (const auto& integrator : integrators)
+    for (int cells : sweep_cells) {
+      if (crossing_ratio(cells) >= 1.0) continue;
+      double linear = runs.rms(sweep_name("linear", integrator, cells)), ugimp = runs.rms(sweep_name("ugimp", integrator, cells)),
+             lme = runs.rms(sweep_name("lme", integrator, cells));
+      const double spread = 100.0 * (std::max({linear, ugimp, lme}) - std::min({linear, ugimp, lme})) / std::min({linear, ugimp, lme});
+      agree.add(integrator + " " + std::to_string(cells) + " cells: spread " + text(spread, "%.3g") + " % (linear " + rms_text(linear) + ", uGIMP " +
+                    rms_text(ugimp) + ", LME " + rms_text(lme) + ")",
+                spread, spread <= 5.0);
+    }
+  // A discontinuity smeared over a width ~ sqrt(h) or ringing over a few cells leaves an L2-in-time error that falls at
+  // least like h^(1/4); anything slower than order 0.2 over 10-160 cells, or a 640-cell error above (1/16)^0.2 = 0.574
+  // times the 40-cell one, means the exact solution is not being approached.
+  DomainClaim bound{"Bound: the exact solution is approached under refinement", "order over " + cells_text(band_cells("negligible")) +
+                    " cells >= 0.2 and RMS(640) / RMS(40) <= 0.574", {}, true};
+  for (const auto& shape : shapes)
+    for (const auto& integrator : integrators) {
+      const OrderFit fit = fit_runs(runs, band_cells("negligible"), shape, integrator);
+      const auto &r40 = runs.at(sweep_name(shape, integrator, 40)), &r640 = runs.at(sweep_name(shape, integrator, 640));
+      add_pair(bound, shape + " " + integrator, ": order " + order_text(fit), r640, "640", r40, "40", r640.rms / r40.rms,
+               fit.fitted() && fit.order >= 0.2 && r640.rms <= 0.574 * r40.rms);
+    }
+  return {"Figs. 9 and 10: shape functions compared (`dyka_fig9`: FE, `dyka_fig10`: NPC)", "", {agree, bound}};
+}
+
+/// LME's warm-started Newton iterations, per family of LME runs.
+inline Section newton_section(const Runs& runs) {
+  DomainClaim claim{"Warm-started Newton iterations for lambda stay few (paper/09_choices.md: 2-6)",
+                    "mean iterations per particle-step over the family's runs <= 6 (where: largest)", {}, false};
+  for (const std::string family : {"dyka_lme_fe_", "dyka_lme_npc_", "dyka_cfl", "dyka_gamma_", "dyka_base_lme"}) {
+    double mean = 0.0;
+    int count = 0, largest = 0;
+    for (const auto& [name, run] : runs.by_name)
+      if (name.rfind(family, 0) == 0 && (family != "dyka_cfl" || name.find("_lme_") != std::string::npos))
+        mean += run.newton_mean, ++count, largest = std::max(largest, run.newton_max);
+    if (count == 0) continue;
+    mean /= count;
+    claim.add(family + "* (" + std::to_string(count) + " runs): largest " + std::to_string(largest), mean, mean <= 6.0);
+  }
+  return {"LME Newton iterations", "", {claim}};
+}
+
+/// The energy over 10 periods at 40 cells (data/dyka_energy.csv).
+inline Section energy_section(const Runs& runs) {
+  DomainClaim fe{"Forward Euler conserves energy on average: over 10 periods E/E0 stays within [0.965, 1.035] and ends within 2 % of 1",
+                 "E/E0 at the end (where: its range)", {}, false};
+  DomainClaim npc{"The predictor-corrector (Eq. 32) dissipates: E/E0 rises in no step (by at most 1e-12) and falls over 10 periods",
+                  "E/E0 at the end (where: largest rise in a step)", {}, false};
+  for (const auto& c : energy_cases()) {
+    const auto& run = runs.at(c.name());
+    const std::string label = c.shape + (c.cfl == 0.5 ? "" : " at CFL " + text(c.cfl));
+    if (run.failed) {
+      (c.integrator == "fe" ? fe : npc).add(label + ": " + stopped_text(run), std::nan(""), false);
+    } else if (c.integrator == "fe") {
+      fe.add(label + ": [" + text(run.smallest_energy_ratio, "%.4f") + ", " + text(run.largest_energy_ratio, "%.4f") + "]", run.final_energy_ratio,
+             run.smallest_energy_ratio >= 0.965 && run.largest_energy_ratio <= 1.035 && std::abs(run.final_energy_ratio - 1.0) <= 0.02);
+    } else {
+      npc.add(label + ": " + text(run.largest_energy_step_increase, "%.2g"), run.final_energy_ratio,
+              run.largest_energy_step_increase <= 1e-12 && run.final_energy_ratio < 1.0);
+    }
+  }
+  return {"Energy over 10 periods (40 cells, CFL 0.5 unless stated; data/dyka_energy.csv)", "", {fe, npc}};
+}
+
+}  // namespace verification::dyka
