@@ -10,8 +10,8 @@ w = 12; h = 5.5
 set style fill solid 0.35 noborder
 csv = data."/dyka_stability.csv"
 runs = data."/dyka_stability_runs.csv"
-none(c) = (strcol(c) eq "nan" ? 0.6 : 1/0)
-left = "set title 'stable CFLs per method, as fractions of its step limit (in brackets: free bar; NPC: held bar)' font ',10'; " . \
+none(c) = (strcol(c) eq "nan" ? 0.575 : 1/0)  # below the scan's first CFL, 0.6
+left = "unset datafile missing; set title 'stable CFLs per method, as fractions of its step limit (in brackets: free bar; NPC: held bar)' font ',10'; " . \
   "set ylabel 'CFL / the method''s step limit'; set yrange [0.55:1.09]; set xrange [-0.7:*]; set xtics rotate by -40 font ',8' noenhanced; set boxwidth 0.6; " . \
   "set key outside bottom center horizontal maxrows 3 font ',8' samplen 1.5; " . \
   "plot csv every ::1 using 0:($2 / $12):xtic(sprintf('%s (%.3f)', strcol(1), $12)) with boxes lc rgb '#1f77b4' title 'every run below the top stable (v_0 = 5 m/s)', " . \
