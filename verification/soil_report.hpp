@@ -293,7 +293,7 @@ inline std::vector<Claim> stability_claims(const SoilLookup& get, const SoilOutc
   const bool within = std::abs(largest_stable[1] * ratio - largest_stable[0]) <= step * ratio + 1e-12;
   claims.push_back({"the largest stable CFL of Eq. (42) falls by sqrt(E/M) = " + number(1.0 / ratio, "%.3f") +
                         " from nu = 0 to nu = 0.3 (the same P-wave Courant number; within one step of the sweep, " + number(step, "%g") + ")",
-                    "largest CFL below which every run of the sweep completes 20 s: " + number(largest_stable[0], "%g") + " (nu = 0), " + number(largest_stable[1], "%g") +
+                    "largest CFL completing 20 s: " + number(largest_stable[0], "%g") + " (nu = 0), " + number(largest_stable[1], "%g") +
                         " (nu = 0.3), i.e. P-wave Courant numbers " + number(largest_stable[0], "%.3g") + " and " +
                         number(largest_stable[1] * ratio, "%.3g") + "; every run of the sweep: " + outcomes +
                         (interval ? " (the stable CFLs form an interval)" : " (the stable CFLs do NOT form an interval: a run stopped below a stable one)"),
