@@ -2,10 +2,12 @@
 // scenes/soil_block*.toml with overrides in-process and record
 //   - the vertical displacement u_y(t) = y(t) - Y of the observed top particle at every sample,
 //   - every particle (position, reference position, stress) at the scene's snapshot times,
-//   - the total nodal mass against the total particle mass, every step (RunSummary::largest_mass_error).
+//   - the total nodal mass against the total particle mass, every step (RunSummary::largest_mass_error),
+//   - the cell crossings: how many particles were, at some sample, in a cell other than their initial one.
 // The comparison with the exact column is soil_measures.hpp.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -46,6 +48,8 @@ struct SoilResult {
   double newton_mean = 0.0;     ///< LME: Newton iterations per particle-step on average (0 for other shapes)
   int newton_max = 0;           ///< LME: the most in one particle-step
   double neighbours_mean = 0.0; ///< nodes per particle-step on average
+  int particles_crossed = 0;    ///< particles that were in a cell other than their initial one at some sample
+  double first_crossing = -1.0; ///< the time of the first sample with such a particle (-1: none)
   bool failed = false;
   std::string failure;  ///< the solver's diagnosis when it failed
 };
@@ -62,6 +66,25 @@ struct SoilRecorder : mpm::Monitor<2> {
       potential += particles.mass[p] * gravity * (particles.position[p][1] - particles.reference_position[p][1]);
     result.kinetic_plus_strain.push_back(sums.total());
     result.gravity_potential.push_back(potential);
+    count_crossings(t, particles);
+  }
+
+  /// The cell of a position on the scene's grid (its origin and spacing; the margins do not move the cells' faces).
+  std::array<long, 2> cell_of(const mpm::Vector<2>& x) const {
+    const auto& scene = result.scene;
+    return {static_cast<long>(std::floor((x[0] - scene.origin[0]) / scene.spacing)),
+            static_cast<long>(std::floor((x[1] - scene.origin[1]) / scene.spacing))};
+  }
+
+  /// Marks every particle that is in a cell other than the one of its reference position (at t = 0).
+  void count_crossings(double t, const mpm::Particles<2>& particles) {
+    crossed.resize(particles.size(), false);
+    for (int p = 0; p < particles.size(); ++p) {
+      if (crossed[p] || cell_of(particles.position[p]) == cell_of(particles.reference_position[p])) continue;
+      crossed[p] = true;
+      ++result.particles_crossed;
+      if (result.first_crossing < 0.0) result.first_crossing = t;
+    }
   }
 
   void snapshot(int, double t, const mpm::Particles<2>& particles) override {
@@ -77,6 +100,7 @@ struct SoilRecorder : mpm::Monitor<2> {
   SoilResult& result;
   int observed;
   double gravity;  ///< |g| at full strength, m/s^2
+  std::vector<bool> crossed;  ///< per particle: has it left its initial cell at a sample
 };
 
 /// Runs the scene at `scene_path` with `overrides` (mpm run --set syntax). A SimulationFailure

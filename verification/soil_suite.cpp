@@ -14,11 +14,14 @@
 #include "verification/parallel.hpp"
 #include "verification/claims.hpp"
 #include "verification/soil_data.hpp"
+#include "verification/soil_domain.hpp"
+#include "verification/soil_plane.hpp"
 #include "verification/soil_report.hpp"
 
 namespace {
 
 using verification::Claim;
+using verification::DomainClaim;
 using verification::number;
 using verification::run_name;
 
@@ -91,6 +94,9 @@ std::vector<CaseSpec> all_cases() {
   cases.push_back({"lme3_npc_h2_nu0.3", "soil_block.toml", {"material.poisson_ratio=0.3"}, true});
   cases.push_back({"lme3_npc_h2_nu0.3_wall_margins", "soil_block.toml", join({"material.poisson_ratio=0.3"}, wall_margins)});
   cases.push_back({"lme3_npc_h2_free_sides", "soil_block_free_sides.toml", {}, true});
+  // snapshots over the last period of the column at nu = 0.3 (T1 = 1.19 s), averaged by the equilibrium check (soil_plane.hpp)
+  cases.push_back({"lme3_npc_h2_free_sides_nu0.3", "soil_block_free_sides.toml",
+                   {"material.poisson_ratio=0.3", "output.snapshots=[0,18.8,18.95,19.1,19.25,19.4,19.55,19.7,19.85,20]"}, true});
   for (const auto& method : {"lme0.8", "lme3"})
     cases.push_back({run_name(method, "npc", 2.0) + "_wall_margins", "soil_block.toml", join(method_overrides(method), wall_margins)});
   for (double nu : {0.0, 0.3})
@@ -161,11 +167,11 @@ void write_fig13_table(std::ostream& report, const verification::SoilLookup& get
   report << "\n\"Mean\" and \"swing\" are the time average and the range (max - min) of u over the last four periods "
             "T1 = 4H/c = 1.386 s of the run; \"energy drift\" is the range of kinetic + strain + gravity potential energy "
             "over t >= 10 s, relative to the strain energy; \"sigma_yy RMS\" is over the particles, relative to rho g H, "
-            "against the exact sigma_yy(Y, 20 s). Linear shape functions: after the ramp the energy grows by tens of percent "
-            "under constant gravity and the top particle rises, once the row of particles below the top one has crossed "
-            "y = 8 m during the ramp (on the 1 m grid the growth is small; on the 0.5 m grid, where the top particle itself "
-            "crosses a cell face, it stops the run). This is consistent with the known cell-crossing instability of linear "
-            "MPM, absent with uGIMP and LME; we did not investigate it further. The FEM reference of the paper (the authors' "
+            "against the exact sigma_yy(Y, 20 s). Linear shape functions with forward Euler (USF): after the ramp the energy grows by "
+            "tens of percent under constant gravity and the top particle rises, once the row of particles below the top one has "
+            "crossed y = 8 m during the ramp. Particles cross cell faces in every linear run, with the predictor-corrector, USL "
+            "and MUSL too, whose energy drifts by under 1 % on the same grid: crossing alone does not make the energy grow here "
+            "(the claims on the refinement below count the crossings of every linear run). The FEM reference of the paper (the authors' "
             "code) is not available; the exact solution replaces it.\n\n";
 }
 
@@ -176,8 +182,12 @@ void write_refinement_table(std::ostream& report, const verification::SoilLookup
             "the small-strain exact solution, and mean after the ramp - finite-strain static settlement.";
   if (integrator == "npc")
     report << " Against the small-strain solution the errors do not fall with h: they tend to the model gap, 0.022 m at the top (on "
-              "the 2 m grid the discretisation error, which adds settlement, partly offsets it). Against the finite-strain column they fall.";
-  report << "\n\n| shape | h | RMS | error at 20 s | mean - finite-strain static | steps | wall time | status |\n|---|---|---|---|---|---|---|---|\n";
+              "the 2 m grid the discretisation error, which adds settlement, partly offsets it).";
+  report << " " << verification::refinement_summary(get, methods, refinement, integrator)
+         << " *Floor*: the range of the mean after the ramp as its 4-T1 window's end moves back over one T1; a change of the gap "
+            "within the two runs' floors is not resolved.";
+  report << "\n\n| shape | h | RMS | error at 20 s | mean - finite-strain static | floor | particles crossed | steps | wall time | "
+            "status |\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& method : methods)
     for (double h : refinement) {
       const auto& o = get(run_name(method, integrator, h));
@@ -185,48 +195,16 @@ void write_refinement_table(std::ostream& report, const verification::SoilLookup
       report << "| " << verification::method_label(method) << " | " << number(h, "%g") << " m | " << verification::metres(s.rms_error)
              << " | " << verification::metres(s.final_error) << " | "
              << (o.result.failed ? std::string("-") : verification::metres(s.mean_settlement - s.static_log_strain)) << " | "
+             << (o.result.failed ? std::string("-") : verification::metres(s.mean_floor)) << " | " << o.result.particles_crossed << " | "
              << o.result.steps << " | " << number(o.result.solver_seconds, "%.2f") << " s | "
              << (o.result.failed ? o.result.failure : "ok") << " |\n";
     }
   report << "\n";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const unsigned cores = verification::suite_threads(argc, argv);
-  if (argc != 4 || cores == 0) {
-    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR [--threads N]\n");
-    return 2;
-  }
-  const std::string folder = argv[1], report_path = argv[2], scenes = argv[3];
-  const auto suite_start = std::chrono::steady_clock::now();
-
-  // 1. Every case, in parallel, once every scene with its overrides has been read without error.
-  const auto cases = all_cases();
-  for (const auto& spec : cases) {
-    try {
-      mpm::load_scene(scenes + "/" + spec.scene_file, spec.overrides);
-    } catch (const mpm::SceneError& error) {
-      std::fprintf(stderr, "soil_suite: case %s: %s\n", spec.name.c_str(), error.message().c_str());
-      return 2;
-    }
-  }
-  std::vector<Outcome> outcomes(cases.size());
-  std::vector<std::string> names;
-  for (const auto& spec : cases) names.push_back(spec.name);
-  // Every case on one thread (see verification/parallel.hpp, run_cases, for why).
-  const std::vector<bool> wide(cases.size(), false);
-  verification::run_cases("soil", names, wide, cores, [&](size_t k, int threads) {
-    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides, threads);
-    outcomes[k].settlement = verification::measure_settlement(outcomes[k].result);
-  });
-  std::map<std::string, const Outcome*> by_name;
-  for (const auto& outcome : outcomes) by_name[outcome.result.name] = &outcome;
-  const verification::SoilLookup get = [&](const std::string& name) -> const Outcome& { return *by_name.at(name); };
-  const double runs_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
-
-  // 2. The data of the figures.
+/// The data of the figures: the geometry, every settlement history, Fig. 12's stresses, nu = 0.3, the refinement, the summary.
+void write_figure_data(const std::vector<Outcome>& outcomes, const verification::SoilLookup& get, const std::string& scenes,
+                       const std::string& folder) {
   verification::write_geometry(mpm::load_scene(scenes + "/soil_block.toml", {}), folder);
   for (const auto& outcome : outcomes)
     verification::write_settlement(outcome.result, outcome.settlement, folder + "/soil_settlement_" + outcome.result.name + ".csv");
@@ -247,27 +225,43 @@ int main(int argc, char** argv) {
   for (const auto& method : methods) write_refinement(method, "npc", "soil_refinement_" + method + ".csv");
   for (const auto& method : fe_refined) write_refinement(method, "fe", "soil_refinement_" + method + "_fe.csv");
   verification::write_summary(outcomes, folder + "/soil_summary.csv");
+}
 
-  // 3. The claims, the checks and the report.
-  const auto fig12 = verification::fig12_claims(paper);
-  const auto fig13 = verification::fig13_claims(get, methods);
-  const auto refined = verification::refinement_claims(get, methods, refinement, "npc");
-  const auto refined_fe = verification::refinement_claims(get, fe_refined, refinement, "fe");
-  const auto finest = verification::finest_grid_claims(get, methods, fe_refined, refinement.back());
-  const auto poisson_claims = verification::poisson_claims(poisson, get("lme3_npc_h2_nu0.3_wall_margins"));
-  const auto boundary = verification::boundary_claims(get);
-  const auto stability = verification::stability_claims(get, poisson, sweep_cfl, sweep_name);
-  const auto baselines = verification::baseline_claims(get, methods, stress_updates);
+/// The claims of the report, by kind: the paper's and the theory's as one verdict each, and those over a study's domain.
+struct SuiteClaims {
+  std::vector<Claim> fig12, fig13, baselines, finest, poisson, stability, boundary, runs;
+  std::vector<DomainClaim> refined, refined_fe, crossing, lme3, plane;
+};
+
+SuiteClaims evaluate_claims(const std::vector<CaseSpec>& cases, const std::vector<Outcome>& outcomes, const verification::SoilLookup& get) {
+  SuiteClaims c;
+  const Outcome& paper = get("lme3_npc_h2");
+  const Outcome& poisson = get("lme3_npc_h2_nu0.3");
+  c.fig12 = verification::fig12_claims(paper);
+  c.fig13 = verification::fig13_claims(get, methods);
+  c.baselines = verification::baseline_claims(get, methods, stress_updates);
+  c.refined = {verification::refinement_domain_claim(get, methods, refinement, "npc"),
+               verification::finest_gap_claim(get, methods, refinement.back(), "npc")};
+  c.refined_fe = {verification::refinement_domain_claim(get, fe_refined, refinement, "fe"),
+                  verification::finest_gap_claim(get, fe_refined, refinement.back(), "fe")};
+  c.crossing = verification::crossing_claims(get, refinement);
+  c.lme3 = {verification::lme3_convergence_claim(get, refinement)};
+  c.finest = verification::finest_grid_claims(get, methods, fe_refined, refinement.back());
+  c.poisson = verification::poisson_claims(poisson, get("lme3_npc_h2_nu0.3_wall_margins"));
+  c.boundary = verification::boundary_claims(get);
+  c.plane = verification::plane_claims(get("lme3_npc_h2_free_sides_nu0.3"), verification::stress_tolerance);
+  c.stability = verification::stability_claims(get, poisson, sweep_cfl, sweep_name);
   std::vector<const Outcome*> paper_runs, all_runs;
   for (size_t k = 0; k < cases.size(); ++k) {
     all_runs.push_back(&outcomes[k]);
     if (cases[k].must_complete) paper_runs.push_back(&outcomes[k]);
   }
-  const auto runs = verification::run_claims(paper_runs, all_runs);
-  const double suite_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
+  c.runs = verification::run_claims(paper_runs, all_runs);
+  return c;
+}
 
-  std::ofstream report(report_path);
-  write_introduction(report, paper, outcomes.size(), runs_seconds, suite_seconds, cores, slowest(outcomes));
+/// Figs. 11-13 and today's baselines on the paper's grid.
+void write_paper_sections(std::ostream& report, const verification::SoilLookup& get, const SuiteClaims& c) {
   report << "### Fig. 11: geometry, grid and boundary conditions\n\n"
          << "![Fig. 11](figures/soil_fig11_geometry.png)\n\n"
          << "Drawn from `scenes/soil_block.toml` through the solver's own set-up (`build_setup`): grid lines, the 100 "
@@ -277,47 +271,128 @@ int main(int argc, char** argv) {
          << "Left: sigma_yy on the particles at their current positions, one colour scale. Right: the particles' sigma_yy "
             "against their current height, with the exact sigma_yy(Y, t) drawn at the exact current height Y + u(Y, t) "
             "(and, at 20 s, the finite-strain static column).\n\n";
-  verification::write_claims(report, fig12);
+  verification::write_claims(report, c.fig12);
   report << "### Fig. 13: vertical displacement of the top particle (4.5, 9.5) m\n\n"
          << "![Fig. 13](figures/soil_fig13_settlement.png)\n\n";
   write_fig13_table(report, get);
-  verification::write_claims(report, fig13);
+  verification::write_claims(report, c.fig13);
   report << "### Today's baselines on the paper's 2 m grid: B-splines, USL and MUSL\n\n"
          << "Every run of the Fig. 13 table above, with forward Euler's stress updated last (USL) or by the modified update (MUSL) "
             "beside the default (USF). Cost: the time-step loop's wall time, one timing per run, two runs side by side.\n\n";
-  verification::write_claims(report, baselines);
+  verification::write_claims(report, c.baselines);
+}
+
+/// The refinement with NPC and with forward Euler's stress updates, and the linear runs' crossings against their energy.
+void write_refinement_sections(std::ostream& report, const verification::SoilLookup& get, const SuiteClaims& c) {
   report << "### Beyond the paper: grid refinement (2, 1, 0.5 m cells, 2 x 2 particles per cell, NPC)\n\n"
          << "![refinement](figures/soil_refinement.png)\n\n";
   write_refinement_table(report, get, methods, "npc");
-  verification::write_claims(report, refined);
+  verification::write_domain_claims(report, c.refined);
+  verification::write_domain_claims(report, c.lme3);
   report << "### Beyond the paper: forward Euler's stress updates under refinement (USF, USL, MUSL)\n\n"
          << "The same grids with forward Euler, its stress updated first (USF, the default), last (USL) or by the modified update (MUSL), "
             "with linear shapes and the quadratic B-spline. Cost: the time-step loop's wall time, one timing per run, two runs side by "
             "side.\n\n";
   write_refinement_table(report, get, fe_refined, "fe");
-  verification::write_claims(report, refined_fe);
-  verification::write_claims(report, finest);
+  verification::write_domain_claims(report, c.refined_fe);
+  verification::write_claims(report, c.finest);
+  report << "### Beyond the paper: cell crossing and the energy of linear shapes\n\n"
+         << "Every run with linear shapes (NPC; forward Euler with USF, USL, MUSL) on every grid, with the particles that left "
+            "their initial cell at some sample (every 10 steps) and the energy drift after the ramp.\n\n";
+  verification::write_domain_claims(report, c.crossing);
+}
+
+/// nu = 0.3, the stability sweep, the boundaries and the run-level hard checks.
+void write_other_sections(std::ostream& report, const SuiteClaims& c) {
   report << "### Beyond the paper: nu = 0.3 with lateral rollers\n\n"
          << "![nu = 0.3](figures/soil_poisson.png)\n\n"
          << "The exact column uses the constrained modulus M = E(1-nu)/((1+nu)(1-2nu)) = 6.73 MPa; Eq. (42) still uses "
             "sqrt(E/rho) = 28.9 m/s, slower than the P-wave speed sqrt(M/rho) = 33.5 m/s.\n\n";
-  verification::write_claims(report, poisson_claims);
-  verification::write_claims(report, stability);
+  verification::write_claims(report, c.poisson);
+  verification::write_claims(report, c.stability);
   report << "### Beyond the paper: boundaries\n\n"
          << "LME interpolates only on the boundary of the convex hull of the nodes. With a rigid margin row behind a wall, "
             "the wall's own nodes are inside the hull, where the LME functions of the free nodes beyond "
             "them do not vanish, so the particles next to the wall move with those nodes: the wall yields. The wider the "
             "support (smaller gamma), the more it yields.\n\n";
-  verification::write_claims(report, boundary);
+  verification::write_claims(report, c.boundary);
+  report << "### Beyond the paper: a check that is not one-dimensional (free sides, nu = 0.3)\n\n"
+         << "Every check above is one-dimensional by construction: with lateral rollers (and with free sides at nu = 0) every "
+            "particle of a row moves alike, and the 2D block is the 1D column of the exact solution; they test the 2D kernels "
+            "on a 1D field. With free sides and nu = 0.3 (`scenes/soil_block_free_sides.toml`, LME gamma = 3, NPC, 2 m cells) "
+            "the block spreads sideways, more at the top than at the frictionless base: u_x varies with x and y and sigma_yy "
+            "along each row, and no closed form is known. Two exact statements remain: the rows carry the weight above them "
+            "(equilibrium of the part above a material line whose ends are traction-free), and the mirror symmetry about "
+            "x = W/2.\n\n";
+  verification::write_domain_claims(report, c.plane);
   report << "### Soil block: hard checks of the runs\n\n";
-  verification::write_claims(report, runs);
+  verification::write_claims(report, c.runs);
+}
 
+/// Whether every hard claim holds; each one that does not is printed.
+bool hard_checks_pass(const SuiteClaims& c) {
   std::vector<Claim> every;
-  for (const auto* group : {&fig12, &fig13, &baselines, &refined, &refined_fe, &finest, &poisson_claims, &stability, &boundary, &runs})
+  for (const auto* group : {&c.fig12, &c.fig13, &c.baselines, &c.finest, &c.poisson, &c.stability, &c.boundary, &c.runs})
     every.insert(every.end(), group->begin(), group->end());
-  const bool passed = verification::hard_claims_hold(every);
+  std::vector<DomainClaim> domain;
+  for (const auto* group : {&c.refined, &c.refined_fe, &c.crossing, &c.lme3, &c.plane}) domain.insert(domain.end(), group->begin(), group->end());
   for (const Claim& claim : every)
     if (claim.hard && !claim.holds) std::fprintf(stderr, "soil_suite: hard check failed: %s: %s\n", claim.text.c_str(), claim.measured.c_str());
+  for (const DomainClaim& claim : domain)
+    if (claim.hard && claim.holding() != claim.samples.size())
+      std::fprintf(stderr, "soil_suite: hard check failed: %s: %s\n", claim.statement.c_str(), verification::places(claim, false).c_str());
+  return verification::hard_claims_hold(every) && verification::hard_claims_hold(domain);
+}
+
+/// Every case after each scene with its overrides has been read without error; false (and a message) if one cannot be.
+bool run_all(const std::vector<CaseSpec>& cases, const std::string& scenes, unsigned cores, std::vector<Outcome>& outcomes) {
+  for (const auto& spec : cases) {
+    try {
+      mpm::load_scene(scenes + "/" + spec.scene_file, spec.overrides);
+    } catch (const mpm::SceneError& error) {
+      std::fprintf(stderr, "soil_suite: case %s: %s\n", spec.name.c_str(), error.message().c_str());
+      return false;
+    }
+  }
+  outcomes.assign(cases.size(), Outcome{});
+  std::vector<std::string> names;
+  for (const auto& spec : cases) names.push_back(spec.name);
+  // Every case on one thread (see verification/parallel.hpp, run_cases, for why).
+  const std::vector<bool> wide(cases.size(), false);
+  verification::run_cases("soil", names, wide, cores, [&](size_t k, int threads) {
+    outcomes[k].result = verification::run_soil_case(scenes + "/" + cases[k].scene_file, cases[k].name, cases[k].overrides, threads);
+    outcomes[k].settlement = verification::measure_settlement(outcomes[k].result);
+  });
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const unsigned cores = verification::suite_threads(argc, argv);
+  if (argc != 4 || cores == 0) {
+    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR [--threads N]\n");
+    return 2;
+  }
+  const std::string folder = argv[1], report_path = argv[2], scenes = argv[3];
+  const auto suite_start = std::chrono::steady_clock::now();
+  const auto cases = all_cases();
+  std::vector<Outcome> outcomes;
+  if (!run_all(cases, scenes, cores, outcomes)) return 2;
+  std::map<std::string, const Outcome*> by_name;
+  for (const auto& outcome : outcomes) by_name[outcome.result.name] = &outcome;
+  const verification::SoilLookup get = [&](const std::string& name) -> const Outcome& { return *by_name.at(name); };
+  const double runs_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
+
+  write_figure_data(outcomes, get, scenes, folder);
+  const SuiteClaims claims = evaluate_claims(cases, outcomes, get);
+  const double suite_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
+  std::ofstream report(report_path);
+  write_introduction(report, get("lme3_npc_h2"), outcomes.size(), runs_seconds, suite_seconds, cores, slowest(outcomes));
+  write_paper_sections(report, get, claims);
+  write_refinement_sections(report, get, claims);
+  write_other_sections(report, claims);
+  const bool passed = hard_checks_pass(claims);
   std::printf("soil_suite: %zu runs in %.1f s, hard checks %s\n", outcomes.size(), suite_seconds, passed ? "hold" : "FAILED");
   return passed ? 0 : 1;
 }
