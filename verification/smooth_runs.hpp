@@ -68,24 +68,22 @@ inline void build_references(Runs& runs, const BarScene& bar, unsigned cores) {
 
 inline std::string dyka_name(const Case& c) { return "dyka2_" + c.method.shape + "_" + c.method.integrator + "_" + std::to_string(c.cells); }
 
-/// Runs case k of `runs` on `threads` threads.
-inline void run_case(Runs& runs, std::size_t k, const Scenes& scenes, int threads) {
-  const Case& c = runs.cases[k];
-  if (c.group == Group::manufactured) {
-    runs.results[k] = run_manufactured(scenes.manufactured, {c.method.shape, c.method.integrator, c.cells, c.ppc, c.cfl, c.large}, threads);
-  } else if (c.group == Group::dyka) {
+/// Runs case `c` on `threads` threads (the references from `runs`); a Dyka case also fills `dyka`.
+inline SmoothResult run_case(const Case& c, const Runs& runs, const Scenes& scenes, int threads, DykaResult& dyka) {
+  if (c.group == Group::manufactured)
+    return run_manufactured(scenes.manufactured, {c.method.shape, c.method.integrator, c.cells, c.ppc, c.cfl, c.large}, threads);
+  if (c.group == Group::dyka) {
     std::vector<std::string> overrides = method_settings(c.method.shape, c.method.integrator);
     overrides.insert(overrides.end(), {"grid.cells=[" + std::to_string(c.cells) + "]", "grid.margin_min=[" + std::to_string(4 + c.cells / 100) + "]",
                                        "body[0].particles_per_cell=[" + std::to_string(c.ppc) + "]", "output.snapshots=[]"});
-    runs.dyka[k] = run_dyka(scenes.dyka, dyka_name(c), overrides, threads);
-    runs.results[k].wall_seconds = runs.dyka[k].wall_seconds;
-    runs.results[k].failed = runs.dyka[k].failed;
-    runs.results[k].failure = runs.dyka[k].failure;
-  } else {
-    const bool reference = c.large || c.group == Group::crossing;
-    runs.results[k] = run_bar(scenes.bar, {c.method.shape, c.method.integrator, c.cells, c.ppc, c.cfl, c.amplitude(), {}},
-                              reference ? runs.references.at(c.amplitude()).get() : nullptr, threads);
+    dyka = run_dyka(scenes.dyka, dyka_name(c), overrides, threads);
+    SmoothResult result;
+    result.wall_seconds = dyka.wall_seconds, result.failed = dyka.failed, result.failure = dyka.failure;
+    return result;
   }
+  const bool reference = c.large || c.group == Group::crossing;
+  return run_bar(scenes.bar, {c.method.shape, c.method.integrator, c.cells, c.ppc, c.cfl, c.amplitude(), {}},
+                 reference ? runs.references.at(c.amplitude()).get() : nullptr, threads);
 }
 
 /// Runs every case of `studies`, the most work first, each on one thread (see verification/parallel.hpp, run_cases).
@@ -102,7 +100,7 @@ inline Runs run_all(const std::vector<Axes>& studies, const Scenes& scenes, unsi
   const auto start = std::chrono::steady_clock::now();
   run_cases("smooth", names, std::vector<bool>(runs.cases.size(), false), cores, [&](std::size_t k, int threads) {
     const double cpu_start = thread_cpu_seconds();
-    run_case(runs, k, scenes, threads);
+    runs.results[k] = run_case(runs.cases[k], runs, scenes, threads, runs.dyka[k]);
     runs.results[k].cpu_seconds = thread_cpu_seconds() - cpu_start;
   });
   runs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

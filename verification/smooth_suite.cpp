@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "verification/smooth_bar_claims.hpp"
+#include "verification/smooth_cost.hpp"
 #include "verification/smooth_crossing_claims.hpp"
 #include "verification/smooth_report.hpp"
 
@@ -38,10 +39,10 @@ struct Section {
 };
 
 const char* const timing_note =
-    "No verdict on cost: each run's CPU time (one thread per run) is measured once and written to the CSV files; a "
-    "timing verdict needs at least 5 interleaved repeats of the runs it compares and a margin larger than their "
-    "spread, which this suite does not run, so every comparison at equal CPU time or on an error-cost front is a "
-    "tie here (make bench measures speed).\n\n";
+    "Cost: each run's CPU time (one thread per run, in the CSV files). Its spread is measured on a sample (every method of "
+    "the bar at 64 cells and of the 2D solutions at 16 cells, each run 5 times, interleaved: data/smooth_cpu_spread.csv); a "
+    "run counts as cheaper than another only by a margin larger than that spread, otherwise the two are a tie. Where "
+    "the spread is not measured every cost comparison is a tie.\n\n";
 
 /// Fig. 6 at 2 particles per cell against the Dyka suite's 1 particle per cell: run after both suites, from their
 /// CSV files. Writes the report fragment; its claims are the paper's (soft).
@@ -64,7 +65,15 @@ int fig6_two_particles_report(const std::string& folder, const std::string& repo
             "LME at γ = 0.8 and 1.5 (lme0.8, lme1.5), beside the paper's methods: every one at 160 cells (no crossing); at 1280 cells "
             "(crossing) the B-splines with both integrators, LME γ = 0.8 and 1.5 with the predictor-corrector, and USL and MUSL "
             "(data/dyka_2ppc.csv).\n\n";
-  verification::write_domain_claims(report, fig6_baseline_claims(d));
+  std::vector<DomainClaim> baselines = fig6_baseline_claims(d);
+  const CpuSpread spread = read_spread(folder);
+  for (int cells : {160, 1280}) {
+    std::vector<CostRun> runs;
+    for (const DykaRun& r : d.runs)
+      if (r.ppc == 2 && r.cells == cells) runs.push_back({r.where(), r.method.paper() && r.method.shape != "linear", r.rms, r.cpu});
+    baselines.push_back(front_claim(runs, spread, "Dyka bar, 2 ppc, " + std::to_string(cells) + " cells, RMS/v0"));
+  }
+  verification::write_domain_claims(report, baselines);
   report << timing_note;
   std::printf("smooth_suite: Fig. 6 at 2 particles per cell reported\n");
   return 0;
@@ -99,6 +108,9 @@ int run_suite(const std::string& folder, const std::string& report_path, const S
   write_bar_orders(folder, runs);
   write_manufactured_orders(folder, runs);
   write_dyka_runs(folder, all, runs);
+  const CpuSpread spread = measure_cpu_spread(runs, scenes, spread_sample(), cores);
+  write_spread(folder, spread);
+  const auto bar_fronts = front_claims(runs, spread, Group::bar);
   std::ostringstream onset_table;
   std::vector<Section> sections{
       {"The exact solutions and their references", "", reference_claims(runs, scenes.bar), ""},
@@ -107,6 +119,13 @@ int run_suite(const std::string& folder, const std::string& report_path, const S
       {"The grid-crossing error isolated: " + std::to_string(crossing_cells) + " cells, amplitude swept", "smooth_crossing",
        crossing_claims(runs, folder, onset_table), ""},
       {"2D manufactured solutions, plane strain ν = 0.3", "smooth_manufactured", manufactured_claims(runs), ""}};
+  sections[1].claims.insert(sections[1].claims.end(), bar_fronts.begin(), bar_fronts.begin() + 2);
+  sections[2].claims.insert(sections[2].claims.end(), bar_fronts.begin() + 2, bar_fronts.end());
+  for (Group group : {Group::crossing, Group::manufactured}) {
+    const auto fronts = front_claims(runs, spread, group);
+    auto& claims = sections[group == Group::crossing ? 3 : 4].claims;
+    claims.insert(claims.end(), fronts.begin(), fronts.end());
+  }
   sections[3].after = "Onset per method: the first U/h of the sweep at which the velocity error exceeds twice its no-crossing value (at "
                       "U/h = 0.01), or the run stops. Geometry: the particle next to the free end reaches a cell face at U/h = 1/(2 ppc).\n\n" +
                       onset_table.str();
@@ -124,7 +143,7 @@ int run_suite(const std::string& folder, const std::string& report_path, const S
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   report << "Suite time: " << number(seconds, "%.1f") << " s wall, " << number(cpu, "%.1f") << " s of CPU on " << cores << " threads ("
-         << runs.cases.size() << " runs and the references).\n\n";
+         << runs.cases.size() << " runs, the references, and " << spread.cases * spread.repeats << " runs measuring the CPU spread).\n\n";
   std::printf("smooth_suite: %zu runs in %.1f s wall (runs %.1f s), %.1f s CPU, hard checks %s\n", runs.cases.size(), seconds, runs.seconds, cpu,
               hard ? "passed" : "FAILED");
   return hard ? 0 : 1;
