@@ -21,6 +21,11 @@ inline double onset(const Runs& runs, const Method& method, int ppc) {
   return std::nan("");
 }
 inline std::string onset_text(double value) { return std::isfinite(value) ? number(value, "%g") : "> " + number(crossing_ratios().back(), "%g"); }
+/// The onset as text, " (stopped)" where the run at the onset stopped rather than exceeding twice its error.
+inline std::string onset_text(const Runs& runs, const Method& method, int ppc, double value) {
+  const bool stopped = std::isfinite(value) && runs.at({Group::crossing, false, method, ppc, 0.5, value, crossing_cells}).failed;
+  return onset_text(value) + (stopped ? " (stopped)" : "");
+}
 /// a leaves its no-crossing error later than b (NaN: no onset in the sweep, the latest).
 inline bool later(double a, double b) { return std::isfinite(b) && !(a <= b); }
 
@@ -40,7 +45,7 @@ inline std::vector<DomainClaim> crossing_claims(const Runs& runs, const std::str
       CsvRow row;
       row << m.shape << m.integrator << ppc << base << first[{m.name(), ppc}];
       csv << row.text.str() << "\n";
-      table << " | " << onset_text(first[{m.name(), ppc}]) << " (no-crossing error " << number(base, "%.2g") << ")";
+      table << " | " << onset_text(runs, m, ppc, first[{m.name(), ppc}]) << " (no-crossing error " << number(base, "%.2g") << ")";
     }
     table << " |\n";
   }
@@ -55,7 +60,7 @@ inline std::vector<DomainClaim> crossing_claims(const Runs& runs, const std::str
       if (m.shape != "linear" && (later(first[{m.name(), ppc}], paper) || !std::isfinite(first[{m.name(), ppc}]))) paper = first[{m.name(), ppc}];
     for (const Method& m : methods) {
       const double mine = first[{m.name(), ppc}];
-      const std::string at = m.name() + ", " + std::to_string(ppc) + " ppc: " + onset_text(mine);
+      const std::string at = m.name() + ", " + std::to_string(ppc) + " ppc: " + onset_text(runs, m, ppc, mine);
       if (m.paper() && m.shape != "linear") {
         const double linear = first[{"linear/" + m.integrator, ppc}];
         smooth.add(at + " (linear " + onset_text(linear) + ")", mine, later(mine, linear) || (!std::isfinite(mine) && std::isfinite(linear)));
