@@ -1,0 +1,161 @@
+// Fig. 6 at 2 particles per cell (`dyka_fig6_2ppc`): the smooth suite's Dyka runs at 2 ppc (dyka_2ppc.csv) against the
+// Dyka suite's sweep at 1 ppc (dyka_sweep.csv, CFL 0.5), read after both suites; its claims over every mesh both ran.
+#pragma once
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "verification/smooth_fit.hpp"
+#include "verification/smooth_study.hpp"
+
+namespace verification::smooth {
+
+// The crossing ratio of paper/08_test_cases.md (Grid-crossing bands), u_max / (h / 2 ppc): crossing (ratio >= 1) from
+// 2021 cells at 1 ppc, 1011 at 2.
+constexpr double dyka_speed = 5.0, dyka_largest_displacement = 3.298e-5, dyka_length = 0.1333;
+inline double dyka_crossing_ratio(int cells, int ppc) { return dyka_largest_displacement / (0.5 * dyka_length / cells / ppc); }
+
+/// Rows of a CSV file with a header, as maps from column name to text.
+inline std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  auto split = [](const std::string& line) {
+    std::vector<std::string> fields;
+    std::stringstream stream(line);
+    for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
+    return fields;
+  };
+  std::string line;
+  std::getline(in, line);
+  const auto header = split(line);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const auto fields = split(line);
+    std::map<std::string, std::string> row;
+    for (std::size_t k = 0; k < header.size() && k < fields.size(); ++k) row[header[k]] = fields[k];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// One Dyka run of either suite.
+struct DykaRun {
+  Method method;
+  int ppc = 1, cells = 0;
+  double rms = std::nan("");  ///< RMS / v0; NaN: stopped
+  double cpu = std::nan("");  ///< CPU seconds (2 ppc only)
+  std::string failure;
+  bool stopped() const { return !std::isfinite(rms); }
+  std::string where() const {
+    return method.name() + ", " + std::to_string(ppc) + " ppc, " + std::to_string(cells) + " cells" +
+           (dyka_crossing_ratio(cells, ppc) >= 1.0 ? " (crossing)" : "");
+  }
+};
+
+/// Both suites' Dyka runs at CFL 0.5 (rows of another CFL, where the sweep has a cfl column, are left out).
+struct DykaTable {
+  std::vector<DykaRun> runs;
+  const DykaRun* find(const Method& m, int ppc, int cells) const {
+    for (const DykaRun& r : runs)
+      if (r.method == m && r.ppc == ppc && r.cells == cells) return &r;
+    return nullptr;
+  }
+  /// The meshes of the 2-ppc study (every one its runs use).
+  std::set<int> meshes() const {
+    std::set<int> cells;
+    for (const DykaRun& r : runs)
+      if (r.ppc == 2) cells.insert(r.cells);
+    return cells;
+  }
+};
+inline DykaTable read_dyka_runs(const std::string& folder) {
+  DykaTable table;
+  for (int ppc : {1, 2})
+    for (const auto& row : read_csv(folder + (ppc == 1 ? "/dyka_sweep.csv" : "/dyka_2ppc.csv"))) {
+      if (row.count("cfl") && std::abs(std::stod(row.at("cfl")) - 0.5) > 1e-9) continue;
+      if (row.count("ppc") && std::stoi(row.at("ppc")) != ppc) continue;
+      DykaRun run;
+      run.method = {row.at("shape"), row.at("integrator")}, run.ppc = ppc, run.cells = std::stoi(row.at("cells"));
+      if (row.at("status") == "ok") run.rms = std::stod(row.at("rms_over_v0"));
+      if (row.count("cpu_seconds")) run.cpu = std::stod(row.at("cpu_seconds"));
+      if (row.count("failure")) run.failure = row.at("failure");
+      table.runs.push_back(run);
+    }
+  return table;
+}
+
+/// A stopped run's diagnosis for a table cell: its first 80 characters, no '|'.
+inline std::string diagnosis(const DykaRun& run) {
+  std::string text = run.failure.substr(0, 80) + (run.failure.size() > 80 ? "..." : "");
+  std::replace(text.begin(), text.end(), '|', '/');
+  return text.empty() ? std::string("stopped") : text;
+}
+
+/// dyka_fig6_2ppc.csv: the runs the figure draws, both ppc (the 1-ppc sweep at CFL 0.5 only), one row each.
+inline void write_fig6_runs(const std::string& folder, const DykaTable& d) {
+  std::ofstream out(folder + "/dyka_fig6_2ppc.csv");
+  out << "ppc,shape,integrator,cells,crossing_ratio,rms_over_v0,status\n";
+  for (const DykaRun& r : d.runs)
+    out << r.ppc << "," << r.method.shape << "," << r.method.integrator << "," << r.cells << "," << dyka_crossing_ratio(r.cells, r.ppc) << ","
+        << r.rms << "," << (r.stopped() ? "stopped" : "ok") << "\n";
+}
+
+/// Adds to `claim` the ratio a.rms / b.rms where both ran and finished (a pair with a stopped run is not compared: the
+/// stop is its own outcome, in the "every run finishes" claim).
+inline void add_pair(DomainClaim& claim, const DykaRun* a, const DykaRun* b, const std::string& against) {
+  if (!a || !b || a->stopped() || b->stopped()) return;
+  claim.add(a->where() + ": " + number(a->rms, "%.3g") + ", " + against + " " + number(b->rms, "%.3g"), a->rms / b->rms, a->rms < b->rms);
+}
+
+/// The paper's claims through crossing at 1 and 2 ppc, on every mesh of the 2-ppc study.
+inline std::vector<DomainClaim> fig6_claims(const DykaTable& d) {
+  DomainClaim smooth{"Paper (Fig. 6): uGIMP and LME are more accurate than linear shape functions (they suffer less from grid crossing)",
+                     "RMS/v0 of uGIMP or LME over linear's, same integrator, ppc and mesh, < 1", {}, false};
+  DomainClaim converging{"... and keep converging through crossing: the error on a crossing mesh stays below the method's own at 160 cells",
+                         "RMS/v0 on the crossing mesh over the method's RMS/v0 at 160 cells (no crossing) < 1", {}, false};
+  DomainClaim two{"2 particles per cell are more accurate than 1 (the paper's methods)", "RMS/v0 at 2 ppc over 1 ppc's, same method and mesh, < 1", {}, false};
+  DomainClaim finish{"Every run finishes (the paper's methods on the meshes of the 2-ppc study, 1 and 2 ppc)",
+                     "the run reaches 200 µs (1) or stops (0, its own outcome: never scored against an error)", {}, false};
+  for (int cells : d.meshes())
+    for (const Method& m : paper_methods())
+      for (int ppc : {1, 2}) {
+        const DykaRun* run = d.find(m, ppc, cells);
+        if (!run) continue;
+        finish.add(run->where() + (run->stopped() ? ": " + diagnosis(*run) : ""), run->stopped() ? 0.0 : 1.0, !run->stopped());
+        if (m.shape != "linear") add_pair(smooth, run, d.find({"linear", m.integrator}, ppc, cells), "linear");
+        if (dyka_crossing_ratio(cells, ppc) >= 1.0) add_pair(converging, run, d.find(m, ppc, 160), "at 160 cells");
+        if (ppc == 2) add_pair(two, run, d.find(m, 1, cells), "1 ppc");
+      }
+  return {smooth, converging, two, finish};
+}
+
+/// Today's baselines at 2 ppc against the paper's methods: the most accurate per mesh, each against linear, and stops.
+inline std::vector<DomainClaim> fig6_baseline_claims(const DykaTable& d) {
+  DomainClaim best{"With today's baselines in the comparison, uGIMP or LME γ = 3 is still the most accurate (2 ppc)",
+                   "the smallest RMS/v0 of uGIMP and LME γ = 3 over the smallest of every finished run of the mesh, = 1", {}, false};
+  DomainClaim against{"Today's baseline is more accurate than linear shape functions (2 ppc; USL and MUSL against linear FE)",
+                      "RMS/v0 of the baseline over linear's, same mesh, < 1", {}, false};
+  DomainClaim finish{"Every run of today's baselines finishes (2 ppc)", "the run reaches 200 µs (1) or stops (0, its own outcome)", {}, false};
+  for (int cells : {160, 1280}) {
+    const DykaRun *paper = nullptr, *all = nullptr;
+    for (const Method& m : with_paper(crossing_baselines())) {
+      const DykaRun* run = d.find(m, 2, cells);
+      if (!run || run->stopped()) continue;
+      if (!all || run->rms < all->rms) all = run;
+      if ((m.shape == "ugimp" || m.shape == "lme") && m.paper() && (!paper || run->rms < paper->rms)) paper = run;
+    }
+    if (paper && all)
+      best.add(std::to_string(cells) + " cells: best " + all->method.name() + " " + number(all->rms, "%.3g") + ", paper's best " + paper->method.name() + " " +
+                   number(paper->rms, "%.3g"),
+               paper->rms / all->rms, paper == all);
+    for (const Method& m : crossing_baselines()) {
+      const DykaRun* run = d.find(m, 2, cells);
+      if (!run) continue;
+      finish.add(run->where() + (run->stopped() ? ": " + diagnosis(*run) : ""), run->stopped() ? 0.0 : 1.0, !run->stopped());
+      add_pair(against, run, d.find({"linear", m.integrator == "npc" ? "npc" : "fe"}, 2, cells), "linear");
+    }
+  }
+  return {best, against, finish};
+}
+
+}  // namespace verification::smooth
