@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# benchmarks/summary.sh reads the targets of issue 9 from speed.csv by column name: a regression test
+# benchmarks/summary.sh reads the speed targets from speed.csv by column name: a regression test
 # for the ratio rows, which once read a column that no longer existed and printed "0.00 ... met".
 # A synthetic speed.csv (and no scaling.csv) with values chosen by hand: linear + FE 3.5e7 (met),
 # LME + NPC 9e6 (not met), LME/linear 1.5 in 1D FE (met), 2.5 in 1D NPC (not met), 2.9 and 3.1 in 2D.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bodies beyond boxes (issue 18): an ellipse (a disk) or a polygon cut from a box of whole cells; overlapping
+# Bodies beyond boxes: an ellipse (a disk) or a polygon cut from a box of whole cells; overlapping
 # bodies refused naming both; an [[initial_velocity]] box that holds no particle is a warning.
 # Counts worked by hand (a loop over the seeds, 0.0125 m from the lines of 0.05 m cells at 2 x 2 per cell).
 # Usage: cli_bodies.sh MPM

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The CLI's contract on errors (issue 2, item 9; issue 11):
+# The CLI's contract on errors:
 #   a bad scene or option: one line `error: FILE:LINE: KEY: ...`, exit code 2, no output folder;
 #   a run that fails: one line with step, time, particle, position and cause, exit code 3,
 #   keeping what was written so far.
@@ -40,7 +40,7 @@ grep -q '"status": "failed' "$work/b/run.json" || { echo "FAIL: run.json of a fa
 # An explicit scheme far beyond its stability limit.
 expect 3 "^failure: step [0-9]+, t = .* s: unstable: energy grew" -- run "$scene" --out "$work/c" --set solver.cfl=3.0
 
-# Issue 11: every input validated before anything runs; each reproducer of the issue, with the key
+# Every input validated before anything runs; each bad input below with the key
 # it must name. None may leave an output folder behind.
 bad() {  # bad PATTERN ARGS...: exit 2, the message located and naming its key, no output folder
   local pattern=$1; shift

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `mpm exact` and `mpm compare` (issue 18): their happy paths against closed forms computed here, by
+# `mpm exact` and `mpm compare`: their happy paths against closed forms computed here, by
 # hand in awk, never by the program under test; and their bad inputs: exit 2, one line naming the
 # option or key, nothing on stdout and no file written. Usage: cli_exact_compare.sh MPM
 set -u

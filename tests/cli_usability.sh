@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What a user sees besides errors (issue 11, items 4-6):
+# What a user sees besides errors:
 #   help: `mpm --help`, `mpm run|shape|plot --help` print usage, the scene keys with defaults and units, and
 #     the exit codes; `mpm run --print-scene` prints the resolved scene and runs nothing;
 #   seeing a run: run.json holds the resolved scene, snapshots.pvd lists every snapshot with its time,
@@ -48,7 +48,7 @@ diff <(tail -n +2 "$work/resolved.toml") <(tail -n +2 "$work/out") >/dev/null ||
 expect 0 -- run "$scene" --out "$work/bar"  # the scene sets exact = "dyka_bar" itself
 grep -q '"courant" : "max"' "$work/bar/run.json" || fail "run.json: the resolved scene lacks its defaults"
 grep -q '"exact" : "dyka_bar"' "$work/bar/run.json" || fail "run.json: the resolved scene lacks the exact key"
-# issue 18: the version (git at build time), the command line and the units, in valid JSON
+# The version (git at build time), the command line and the units, in valid JSON
 version=$("$mpm" --version) || fail "mpm --version failed"
 [[ $version =~ ^mpm\ [0-9]+\.[0-9]+\.[0-9]+\+(git\.[0-9a-f]+(-dirty)?|unknown)$ ]] || fail "mpm --version printed '$version'"
 python3 - "$work/bar/run.json" "${version#mpm }" "$scene" "$work/bar" <<'PY' || fail "run.json: version, command line or units"

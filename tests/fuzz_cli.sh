@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A structural fuzzer of the `mpm` command (issue 11): mutates the shipped scenes/*.toml (delete,
+# A structural fuzzer of the `mpm` command: mutates the shipped scenes/*.toml (delete,
 # duplicate, swap or truncate lines, replace values and characters) and adds hostile --set
 # overrides, then runs the real binary on each case and asserts the CLI's contract:
 #   - the exit code is 0, 2 or 3 only: no signal, no timeout (a hang or a run past its budget);
