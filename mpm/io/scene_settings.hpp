@@ -173,7 +173,7 @@ TEST_CASE("Scene settings: choice names follow their enums, and errors after the
   scene.file = "s.toml";
   scene.locations["body[0].vertices"] = {"--set(2)", 1};
   CHECK(scene_error(scene, "body[0].vertices", "bad").message() == "error: --set(2):1: body[0].vertices: bad");
-  CHECK(scene_error(scene, "title", "bad").message() == "error: s.toml:1: title: bad");
+  CHECK(scene_error(scene, "title", "bad").message() == "error: s.toml: title: bad");  // a default: no line to name
   scene.origin = {0.0, 1.0};
   scene.bodies = {BodySettings{{0.0, 1.0}, {1.0, 3.0}, {}, {}, {}, {}, {}, {}, {}, {}}};
   CHECK(column_height(scene) == 2.0);
