@@ -31,7 +31,7 @@ namespace mpm::study {
 
 /// What `mpm study` was asked.
 struct StudyRequest {
-  std::string study_path, out;  ///< out "": runs/<study name>
+  std::string study_path, out;  ///< out "": `runs/STUDY`, STUDY the study file's name
   unsigned jobs = 0;            ///< 0: the machine's cores
   std::string program = "/proc/self/exe";
 };
