@@ -2,6 +2,7 @@
 // Hard claims are bounds the theory gives: one that does not hold fails the suite (exit 1).
 // Soft claims are the paper's: one that does not hold is reported, with its numbers, and nothing more.
 #pragma once
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -38,37 +39,46 @@ struct Sample {
   std::string where;  ///< "linear, 640 cells, CFL 0.5"
   double value = 0.0;
   bool holds = false;
+  bool stopped = false;  ///< a run of the place stopped: its own outcome, not compared
 };
 
 /// A claim evaluated on every place of its study, so that the report says where it holds and where it fails,
-/// never "holds" over a chosen subset. A stopped run is its own outcome: a sample whose `where` says so.
+/// never "holds" over a chosen subset. A stopped run is its own outcome (add_stopped): listed as not compared and
+/// left out of "holds on k of n" -- except in a hard claim, where it fails.
 struct DomainClaim {
   std::string statement;         ///< what is claimed, in words
   std::string measure;           ///< what each sample measures, with the threshold: "RMS_NPC / RMS_FE < 1"
   std::vector<Sample> samples;   ///< every place of the study
   bool hard = false;             ///< a theory bound: failing it anywhere fails the suite
 
-  void add(const std::string& where, double value, bool holds) { samples.push_back({where, value, holds}); }
-  std::size_t holding() const {
-    std::size_t count = 0;
-    for (const Sample& sample : samples) count += sample.holds;
-    return count;
+  void add(const std::string& where, double value, bool holds) { samples.push_back({where, value, holds, false}); }
+  /// A place where a run stopped, named by `where` ("2560 cells: NPC stopped at 156 µs: ...").
+  void add_stopped(const std::string& where) { samples.push_back({where, std::nan(""), false, true}); }
+  /// True if `sample` is compared: no run of it stopped, or the claim is hard (a stop fails a bound).
+  bool compared(const Sample& sample) const { return hard || !sample.stopped; }
+  std::size_t count(bool holds) const {
+    std::size_t n = 0;
+    for (const Sample& sample : samples) n += compared(sample) && sample.holds == holds;
+    return n;
   }
-  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "no samples"
+  std::size_t holding() const { return count(true); }
+  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "no samples"; "; 1 not compared (stopped)" added
   std::string verdict() const {
-    const std::size_t n = samples.size(), k = holding();
-    if (n == 0) return "no samples";
-    if (k == n) return "holds on all " + std::to_string(n);
-    if (k == 0) return "fails on all " + std::to_string(n);
-    return "holds on " + std::to_string(k) + " of " + std::to_string(n);
+    const std::size_t k = count(true), n = k + count(false), stopped = samples.size() - n;
+    std::string text = n == 0 ? "no samples compared"
+                       : k == n ? "holds on all " + std::to_string(n)
+                       : k == 0 ? "fails on all " + std::to_string(n)
+                                : "holds on " + std::to_string(k) + " of " + std::to_string(n);
+    if (stopped > 0) text += "; " + std::to_string(stopped) + " not compared (stopped)";
+    return text;
   }
 };
 
-/// The samples where a claim holds (holds = true) or fails, as "where (value)" joined by "; ", "-" if none.
+/// The compared samples where a claim holds (holds = true) or fails, as "where (value)" joined by "; ", "-" if none.
 inline std::string places(const DomainClaim& claim, bool holds, const char* format = "%.4g") {
   std::string text;
   for (const Sample& sample : claim.samples) {
-    if (sample.holds != holds) continue;
+    if (!claim.compared(sample) || sample.holds != holds) continue;
     char value[64];
     std::snprintf(value, sizeof value, format, sample.value);
     text += (text.empty() ? "" : "; ") + sample.where + " (" + value + ")";
@@ -76,19 +86,28 @@ inline std::string places(const DomainClaim& claim, bool holds, const char* form
   return text.empty() ? "-" : text;
 }
 
-/// A Markdown table of claims over their domains: | claim | measure | holds on | fails on | verdict |.
+/// The samples not compared (stopped runs), as their `where` joined by "; ", "-" if none.
+inline std::string stopped_places(const DomainClaim& claim) {
+  std::string text;
+  for (const Sample& sample : claim.samples)
+    if (!claim.compared(sample)) text += (text.empty() ? "" : "; ") + sample.where;
+  return text.empty() ? "-" : text;
+}
+
+/// A Markdown table of claims over their domains: | claim | measure | holds on | fails on | not compared | verdict |.
 inline void write_domain_claims(std::ostream& out, const std::vector<DomainClaim>& claims) {
-  out << "| claim | measure | holds on | fails on | verdict |\n|---|---|---|---|---|\n";
+  out << "| claim | measure | holds on | fails on | not compared (stopped) | verdict |\n|---|---|---|---|---|---|\n";
   for (const DomainClaim& claim : claims)
     out << "| " << claim.statement << (claim.hard ? " *(hard check)*" : "") << " | " << claim.measure << " | "
-        << places(claim, true) << " | " << places(claim, false) << " | **" << claim.verdict() << "** |\n";
+        << places(claim, true) << " | " << places(claim, false) << " | " << stopped_places(claim) << " | **"
+        << claim.verdict() << "** |\n";
   out << "\n";
 }
 
 /// True when every hard claim holds on every sample (and has at least one).
 inline bool hard_claims_hold(const std::vector<DomainClaim>& claims) {
   for (const DomainClaim& claim : claims)
-    if (claim.hard && (claim.samples.empty() || claim.holding() != claim.samples.size())) return false;
+    if (claim.hard && (claim.samples.empty() || claim.count(false) > 0)) return false;
   return true;
 }
 

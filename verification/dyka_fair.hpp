@@ -56,7 +56,11 @@ inline Section fig8_section(const Runs& runs) {
       worst = std::max(worst, run.rms);
     }
     const double spread = 100.0 * (worst - best) / best;
-    claim.add(integrator + " (" + row + "; best at γ " + text(best_gamma) + ")", stopped ? std::nan("") : spread, !stopped && spread > 5.0);
+    const std::string where = integrator + " (" + row + "; best at γ " + text(best_gamma) + ")";
+    if (stopped)
+      claim.add_stopped(where);
+    else
+      claim.add(where, spread, spread > 5.0);
   }
   return {"Fig. 8: sensitivity to gamma (`dyka_fig8`)", "", {claim}};
 }
@@ -117,7 +121,7 @@ inline Section energy_section(const Runs& runs) {
     const auto& run = runs.at(c.name());
     const std::string label = c.shape + (c.cfl == 0.5 ? "" : " at CFL " + text(c.cfl));
     if (run.failed) {
-      (c.integrator == "fe" ? fe : npc).add(label + ": " + stopped_text(run), std::nan(""), false);
+      (c.integrator == "fe" ? fe : npc).add_stopped(label + ": " + stopped_text(run));
     } else if (c.integrator == "fe") {
       fe.add(label + ": [" + text(run.smallest_energy_ratio, "%.4f") + ", " + text(run.largest_energy_ratio, "%.4f") + "]", run.final_energy_ratio,
              run.smallest_energy_ratio >= 0.965 && run.largest_energy_ratio <= 1.035 && std::abs(run.final_energy_ratio - 1.0) <= 0.02);

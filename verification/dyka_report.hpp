@@ -49,12 +49,12 @@ inline std::vector<MeshCfl> comparison_domain() {
   return domain;
 }
 
-/// A sample comparing two runs of a claim at `where`: a stopped run is named as such (and the sample does not hold),
+/// A sample comparing two runs of a claim at `where`: a stopped run is named as such, a sample not compared,
 /// never scored; otherwise `where` + `detail` (the measured numbers), `value` and `holds` as given.
 inline void add_pair(DomainClaim& claim, const std::string& where, const std::string& detail, const DykaResult& a, const std::string& a_label,
                      const DykaResult& b, const std::string& b_label, double value, bool holds) {
   if (a.failed || b.failed)
-    claim.add(where + ": " + (a.failed ? a_label + " " + stopped_text(a) : b_label + " " + stopped_text(b)), std::nan(""), false);
+    claim.add_stopped(where + ": " + (a.failed ? a_label + " " + stopped_text(a) : b_label + " " + stopped_text(b)));
   else
     claim.add(where + detail, value, holds);
 }

@@ -50,7 +50,7 @@ inline DomainClaim refinement_domain_claim(const SoilLookup& get, const std::vec
         const auto& stopped = coarse.result.failed ? coarse : fine;
         where += "the " + number(stopped.result.scene.spacing, "%g") + " m run stopped at t = " +
                  number(stopped.result.time.empty() ? 0.0 : stopped.result.time.back(), "%.2f") + " s";
-        claim.add(where, NAN, false);
+        claim.add_stopped(where);
         continue;
       }
       const double a = finite_strain_gap(coarse), b = finite_strain_gap(fine);
@@ -99,7 +99,7 @@ inline DomainClaim finest_gap_claim(const SoilLookup& get, const std::vector<std
   for (const auto& method : methods) {
     const auto& o = get(run_name(method, integrator, h));
     if (o.result.failed) {
-      claim.add(method_label(method) + ": stopped at t = " + number(o.result.time.back(), "%.2f") + " s", NAN, false);
+      claim.add_stopped(method_label(method) + ": stopped at t = " + number(o.result.time.back(), "%.2f") + " s");
       continue;
     }
     const double relative = std::abs(finite_strain_gap(o) / o.settlement.static_log_strain);
