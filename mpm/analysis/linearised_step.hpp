@@ -9,11 +9,16 @@
 /// stencils): central differences \f$ (\mathbf S(\epsilon \mathbf e_j) - \mathbf S(-\epsilon \mathbf e_j)) / 2\epsilon \f$
 /// cancel the first; the stencils stay at the rest positions, which is the linearisation of the second.
 /// The step is stable while the spectral radius \f$ \rho(\mathbf S) \le 1 \f$.
+///
+/// The unknowns are measured in the body's own units (state_scales()): in SI units a steel bar's
+/// \f$ \mathbf S \f$ spans 22 orders of magnitude and the eigensolver's round-off alone gives a spectral radius of 2.2
+/// at CFL 0.1; \f$ \mathbf D^{-1} \mathbf S \mathbf D \f$ has the same eigenvalues and no such spread.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "mpm/core/phase_timers.hpp"
@@ -35,6 +40,19 @@ constexpr int linearised_states_per_particle() {
 }
 
 namespace detail {
+
+/// The unit of each unknown of a particle (the diagonal of \f$ \mathbf D \f$): velocity \f$ c \f$, strain 1,
+/// acceleration \f$ c^2 / h \f$, with \f$ c = \max \sqrt{E/\rho_0} \f$ over the materials and h the grid spacing.
+template <int Dim>
+Eigen::VectorXd state_scales(const Model<Dim>& model) {
+  double wave_speed = 0.0;
+  for (const LinearElastic& material : model.materials)
+    wave_speed = std::max(wave_speed, std::sqrt(material.young_modulus / material.density));
+  Eigen::VectorXd scales = Eigen::VectorXd::Ones(linearised_states_per_particle<Dim>());
+  scales.head(Dim).setConstant(wave_speed);
+  scales.tail(Dim).setConstant(wave_speed * wave_speed / model.grid.spacing());
+  return scales;
+}
 
 /// Adds amount to unknown `state` of the particle state (its layout: linearised_states_per_particle()).
 template <int Dim>
@@ -73,7 +91,8 @@ Eigen::VectorXd state_vector(const Particles<Dim>& particles) {
 }  // namespace detail
 
 /// The linearised step matrix of `integrator` with time step dt, for the body `rest` (at rest:
-/// zero velocity, stress and acceleration), its stencils from `shape` at the rest positions and no body force.
+/// zero velocity, stress and acceleration), its stencils from `shape` at the rest positions and no body force;
+/// in the units of detail::state_scales(), i.e. \f$ \mathbf D^{-1} \mathbf S \mathbf D \f$.
 template <int Dim, class Shape, class Integrator>
 Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<Dim>& rest, Shape& shape,
                                        const Integrator& integrator, double dt) {
@@ -89,12 +108,13 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
   PhaseTimers timers;
   const int size = particles.size() * linearised_states_per_particle<Dim>();
   const double perturbation = 1e-6;
+  const Eigen::VectorXd unit = detail::state_scales(model).replicate(particles.size(), 1);
   Eigen::MatrixXd step(size, size);
   for (int column = 0; column < size; ++column) {
     Eigen::VectorXd response[2];
     for (int side = 0; side < 2; ++side) {
       particles = rest;
-      detail::perturb_state(particles, column, side == 0 ? perturbation : -perturbation);
+      detail::perturb_state(particles, column, (side == 0 ? perturbation : -perturbation) * unit[column]);
       for (int p = 0; p < particles.size(); ++p) {  // the stress of the strain, Eq. (3): read by the forces of USL and MUSL
         const LinearElastic& material = model.materials[particles.material[p]];
         particles.stress[p] = material.stress<Dim>(particles.strain[p]);
@@ -103,7 +123,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
       integrator.step(model, stencils, no_body_force, dt, particles, grid, timers);
       response[side] = detail::state_vector(particles);
     }
-    step.col(column) = (response[0] - response[1]) / (2.0 * perturbation);
+    step.col(column) = (response[0] - response[1]).cwiseQuotient(unit) / (2.0 * perturbation);
   }
   return step;
 }
@@ -142,6 +162,27 @@ TEST_CASE("Linearised step: a bar of 4 cells held at both ends, its highest mode
   NewmarkPredictorCorrector predictor_corrector;
   CHECK(spectral_radius(linearised_step_matrix(model, bar, shape, predictor_corrector, 1.40)) <= 1.0 + 1e-9);
   CHECK(spectral_radius(linearised_step_matrix(model, bar, shape, predictor_corrector, 1.43)) > 1.0 + 1e-3);
+}
+
+TEST_CASE("Linearised step: a steel bar in SI units, free at one end, is as stable as the same bar in units of c and h") {
+  // 40 cells of h = L/40 with L = 0.1333 m, E = 200 GPa, rho = 7833 kg/m^3 (the Dyka bar), held at x = L: the
+  // predictor-corrector at CFL 0.1 is stable and at CFL 1.5 is not, in SI units as in units where c = h = 1.
+  // Unscaled, the eigensolver's round-off made the SI bar's radius 2.2 at CFL 0.1.
+  for (const bool si : {true, false}) {
+    const double length = si ? 0.1333 : 40.0, young_modulus = si ? 200e9 : 1.0, density = si ? 7833.0 : 1.0;
+    Model<1> model;
+    model.grid = Grid<1>(Vector<1>(0.0), length / 40.0, {40});
+    model.materials = {LinearElastic{young_modulus, 0.0, density}};
+    model.fixed = {{40, 0}};
+    const double h = model.grid.spacing(), c = std::sqrt(young_modulus / density);
+    Particles<1> bar;
+    for (int cell = 0; cell < 40; ++cell)
+      bar.add(Vector<1>((cell + 0.5) * h), density * h, density, Vector<1>::Zero(), Vector<1>(0.5 * h));
+    LinearShape<1> shape(model.grid);
+    const NewmarkPredictorCorrector predictor_corrector;
+    CHECK(spectral_radius(linearised_step_matrix(model, bar, shape, predictor_corrector, 0.1 * h / c)) <= 1.0 + 1e-6);
+    CHECK(spectral_radius(linearised_step_matrix(model, bar, shape, predictor_corrector, 1.5 * h / c)) > 1.1);
+  }
 }
 
 }  // namespace mpm
