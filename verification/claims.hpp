@@ -40,6 +40,7 @@ struct Sample {
   double value = 0.0;
   bool holds = false;
   bool stopped = false;  ///< a run of the place stopped: its own outcome, not compared
+  bool undecided = false;  ///< within the measurement's resolution (a timing spread, 2 s.e. of an order): neither
 };
 
 /// A claim evaluated on every place of its study, so that the report says where it holds and where it fails,
@@ -54,21 +55,27 @@ struct DomainClaim {
   void add(const std::string& where, double value, bool holds) { samples.push_back({where, value, holds, false}); }
   /// A place where a run stopped, named by `where` ("2560 cells: NPC stopped at 156 µs: ...").
   void add_stopped(const std::string& where) { samples.push_back({where, std::nan(""), false, true}); }
-  /// True if `sample` is compared: no run of it stopped, or the claim is hard (a stop fails a bound).
-  bool compared(const Sample& sample) const { return hard || !sample.stopped; }
+  /// A place decided by less than its measurement resolves (`where` says which: a tie within the timings' spread, an
+  /// order within 2 standard errors of its threshold): listed as undecided, neither holds nor fails.
+  void add_undecided(const std::string& where, double value) { samples.push_back({where, value, false, false, true}); }
+  /// True if `sample` is compared: decided, and no run of it stopped or the claim is hard (a stop fails a bound).
+  bool compared(const Sample& sample) const { return !sample.undecided && (hard || !sample.stopped); }
   std::size_t count(bool holds) const {
     std::size_t n = 0;
     for (const Sample& sample : samples) n += compared(sample) && sample.holds == holds;
     return n;
   }
   std::size_t holding() const { return count(true); }
-  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "no samples"; "; 1 not compared (stopped)" added
+  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "no samples"; "; 1 undecided ...", "; 1 not compared (stopped)" added
   std::string verdict() const {
-    const std::size_t k = count(true), n = k + count(false), stopped = samples.size() - n;
+    std::size_t undecided = 0;
+    for (const Sample& sample : samples) undecided += sample.undecided;
+    const std::size_t k = count(true), n = k + count(false), stopped = samples.size() - n - undecided;
     std::string text = n == 0 ? "no samples compared"
                        : k == n ? "holds on all " + std::to_string(n)
                        : k == 0 ? "fails on all " + std::to_string(n)
                                 : "holds on " + std::to_string(k) + " of " + std::to_string(n);
+    if (undecided > 0) text += "; " + std::to_string(undecided) + " undecided (within the measurement's resolution)";
     if (stopped > 0) text += "; " + std::to_string(stopped) + " not compared (stopped)";
     return text;
   }
@@ -86,17 +93,17 @@ inline std::string places(const DomainClaim& claim, bool holds, const char* form
   return text.empty() ? "-" : text;
 }
 
-/// The samples not compared (stopped runs), as their `where` joined by "; ", "-" if none.
+/// The samples not compared (stopped runs; undecided ones marked so), as their `where` joined by "; ", "-" if none.
 inline std::string stopped_places(const DomainClaim& claim) {
   std::string text;
   for (const Sample& sample : claim.samples)
-    if (!claim.compared(sample)) text += (text.empty() ? "" : "; ") + sample.where;
+    if (!claim.compared(sample)) text += (text.empty() ? "" : "; ") + sample.where + (sample.undecided ? " (undecided)" : "");
   return text.empty() ? "-" : text;
 }
 
 /// A Markdown table of claims over their domains: | claim | measure | holds on | fails on | not compared | verdict |.
 inline void write_domain_claims(std::ostream& out, const std::vector<DomainClaim>& claims) {
-  out << "| claim | measure | holds on | fails on | not compared (stopped) | verdict |\n|---|---|---|---|---|---|\n";
+  out << "| claim | measure | holds on | fails on | not compared (stopped, undecided) | verdict |\n|---|---|---|---|---|---|\n";
   for (const DomainClaim& claim : claims)
     out << "| " << claim.statement << (claim.hard ? " *(hard check)*" : "") << " | " << claim.measure << " | "
         << places(claim, true) << " | " << places(claim, false) << " | " << stopped_places(claim) << " | **"

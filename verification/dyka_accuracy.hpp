@@ -128,15 +128,25 @@ inline Section fig7_section(const Runs& runs) {
                   {}};
   auto deviation = [](const DykaResult& run) { return std::max(run.overshoot, run.undershoot); };
   for (const auto& shape : shapes) {
-    DomainClaim claim{"The predictor-corrector removes the spurious oscillations of forward Euler (" + shape + ")",
+    DomainClaim claim{"The predictor-corrector reduces the plateau deviation of forward Euler (" + shape + ")",
                       "largest plateau deviation NPC / FE < 1 (where: NPC +over/−under, FE +over/−under)", {}, false};
+    // "Removes" is a bound, not a ratio: the paper's own figure for NPC is within 1.0-1.09 v0; 0.05 v0 is taken as
+    // "no oscillation left" (a choice: half of that band).
+    DomainClaim removes{"The predictor-corrector removes the spurious oscillations (" + shape + ")",
+                        "NPC's largest plateau deviation, over- or undershoot, <= 0.05 v0 (value)", {}, false};
     for (const auto& [cells, cfl] : comparison_domain()) {
       const auto &fe = runs.at(sweep_name(shape, "fe", cells, cfl)), &npc = runs.at(sweep_name(shape, "npc", cells, cfl));
       const std::string detail = ", NPC +" + text(npc.overshoot, "%.3f") + "/−" + text(npc.undershoot, "%.3f") + ", FE +" +
                                 text(fe.overshoot, "%.3f") + "/−" + text(fe.undershoot, "%.3f");
       add_pair(claim, mesh_text(cells, cfl), detail, npc, "NPC", fe, "FE", deviation(npc) / deviation(fe), deviation(npc) < deviation(fe));
+      if (npc.failed)
+        removes.add_stopped(mesh_text(cells, cfl) + ": NPC stopped");
+      else
+        removes.add(mesh_text(cells, cfl) + ", NPC +" + text(npc.overshoot, "%.3f") + "/−" + text(npc.undershoot, "%.3f"),
+                    deviation(npc), deviation(npc) <= 0.05);
     }
     section.claims.push_back(claim);
+    section.claims.push_back(removes);
   }
   DomainClaim paper{"paper/08_test_cases.md: NPC stays within 1.0-1.09 v0, FE overshoots to 1.3-1.6 v0",
                     "plateau overshoot: NPC <= 0.09 and FE >= 0.3, every shape and mesh of the sweep at CFL 0.5 (value: FE's)", {}, false};

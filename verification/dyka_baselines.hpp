@@ -104,12 +104,13 @@ inline std::vector<DomainClaim> front_claims(const Runs& runs, const std::vector
                     "CPU time, " + std::to_string(timing_repeats) + " interleaved repeats on " + std::to_string(repeated_cells.front()) + " and " +
                         std::to_string(repeated_cells.back()) + " cells (their ranges apart), one run elsewhere widened by the largest spread of the " +
                         std::to_string(repeated_cells.back()) + "-cell repeats, " +
-                        text(100.0 * largest_spread(runs), "%.1f") + " %; where: the front, then (tie: ...) the methods kept on it by the spread; value: how many on it",
+                        text(100.0 * largest_spread(runs), "%.1f") + " %; where: the front, then (tie: ...) the methods kept on it by the spread; value: how many on it; a mesh where the "
+                        "paper's methods are on it only by the spread is a tie",
                     {}, false};
   for (int cells : baseline_cells) {
     const FrontEntry* most = nullptr;
     std::string on, tied;
-    bool paper_on = false;
+    bool paper_on = false, paper_clear = false;  // clear: on the front with no faster, more accurate method in the spread
     int count = 0;
     for (const auto& e : entries)
       if (e.cells == cells && !e.stopped) {
@@ -119,9 +120,14 @@ inline std::vector<DomainClaim> front_claims(const Runs& runs, const std::vector
         on += (on.empty() ? "" : ", ") + e.method + " " + rms_text(e.rms) + " " + text(1e3 * e.cpu, "%.3g") + " ms";
         if (!e.ties.empty()) tied += (tied.empty() ? "" : "; ") + e.method + " with " + e.ties;
         paper_on = paper_on || paper(e.method);
+        paper_clear = paper_clear || (paper(e.method) && e.ties.empty());
       }
     best.add(mesh_text(cells) + " (" + band_of(cells) + "): " + (most ? most->method : "none"), most ? most->rms : std::nan(""), most && paper(most->method));
-    front.add(mesh_text(cells) + ": " + on + (tied.empty() ? "" : " (tie: " + tied + ")"), count, paper_on);
+    const std::string where = mesh_text(cells) + ": " + on + (tied.empty() ? "" : " (tie: " + tied + ")");
+    if (paper_on && !paper_clear)
+      front.add_undecided(where, count);  // kept on the front only by the spread
+    else
+      front.add(where, count, paper_on);
   }
   return {best, front};
 }

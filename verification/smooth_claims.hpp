@@ -51,7 +51,7 @@ inline std::string stopped_text(const SeriesData& data) {
 /// errors at the finest mesh <= `fall` x at `from` cells), evaluated on each of `patterns`. Value: the velocity order.
 inline DomainClaim convergence_claim(const Runs& runs, const std::vector<Case>& patterns, const std::string& statement, int from, double fall,
                                      bool hard) {
-  DomainClaim claim{statement, "velocity and stress orders (± standard error) >= 0.5 from " + std::to_string(from) +
+  DomainClaim claim{statement, "velocity and stress orders (± standard error) above 0.5 by 2 s.e. from " + std::to_string(from) +
                                    " cells, errors at the finest mesh <= " + number(fall, "%g") + " x at " + std::to_string(from) + "; no run stopped",
                     {}, hard};
   for (const Case& p : patterns) {
@@ -59,8 +59,8 @@ inline DomainClaim convergence_claim(const Runs& runs, const std::vector<Case>& 
     const OrderFit vo = fit_order(v.cells, v.values, from), so = fit_order(s.cells, s.values, from);
     const auto first = std::find(v.cells.begin(), v.cells.end(), from) - v.cells.begin();
     const bool falls = v.values.back() <= fall * v.values[first] && s.values.back() <= fall * s.values[first];
-    claim.add(where(p) + ": v " + vo.text() + ", σ " + so.text() + stopped_text(v), vo.order,
-              v.stopped.empty() && vo.order >= 0.5 && so.order >= 0.5 && falls);
+    add_orders(claim, where(p) + ": v " + vo.text() + ", σ " + so.text() + stopped_text(v), vo.order,
+               orders_against({vo, so}, 0.5), v.stopped.empty() && falls);
   }
   return claim;
 }

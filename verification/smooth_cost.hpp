@@ -78,7 +78,8 @@ struct CostRun {
 };
 
 /// "uGIMP or LME γ = 3 is on the error-cost front", evaluated on each of their finished runs in `runs`: it holds where no
-/// finished run is both more accurate and cheaper by more than the CPU spread (CPU x (1 + spread) below its own).
+/// finished run is both more accurate and cheaper by more than the CPU spread (CPU x (1 + spread) below its own); a tie
+/// where one is more accurate and cheaper only within the spread.
 inline DomainClaim front_claim(const std::vector<CostRun>& runs, const CpuSpread& spread, const std::string& study) {
   DomainClaim claim{"uGIMP or LME γ = 3 is on the error-cost front (" + study + ")",
                     "no finished run both more accurate and cheaper by more than the CPU time's spread, " + spread.text() +
@@ -86,14 +87,20 @@ inline DomainClaim front_claim(const std::vector<CostRun>& runs, const CpuSpread
                     {}, false};
   for (const CostRun& run : runs) {
     if (!run.paper || !std::isfinite(run.error)) continue;
-    const CostRun* beaten_by = nullptr;
+    const CostRun *beaten_by = nullptr, *tied_with = nullptr;  // tied: more accurate, cheaper within the spread
     for (const CostRun& other : runs)
-      if (std::isfinite(other.error) && other.error < run.error && other.cpu * (1.0 + spread.relative) < run.cpu) beaten_by = &other;
+      if (std::isfinite(other.error) && other.error < run.error && other.cpu < run.cpu)
+        (other.cpu * (1.0 + spread.relative) < run.cpu ? beaten_by : tied_with) = &other;
     const std::string cost = " in " + number(1e3 * run.cpu, "%.3g") + " ms";
-    claim.add(run.where + cost + (beaten_by ? "; beaten by " + beaten_by->where + ": " + number(beaten_by->error, "%.3g") + " in " +
-                                                 number(1e3 * beaten_by->cpu, "%.3g") + " ms"
-                                            : ""),
-              run.error, !beaten_by && std::isfinite(spread.relative));
+    auto by = [&](const char* how, const CostRun* other) {
+      return std::string("; ") + how + " " + other->where + ": " + number(other->error, "%.3g") + " in " +
+             number(1e3 * other->cpu, "%.3g") + " ms";
+    };
+    if (!beaten_by && tied_with && std::isfinite(spread.relative))
+      claim.add_undecided(run.where + cost + by("tied with", tied_with), run.error);
+    else
+      claim.add(run.where + cost + (beaten_by ? by("beaten by", beaten_by) : ""), run.error,
+                !beaten_by && std::isfinite(spread.relative));
   }
   return claim;
 }

@@ -3,6 +3,7 @@
 #include <gsl/gsl_fit.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,26 @@ inline OrderFit fit_order(const std::vector<int>& cells, const std::vector<doubl
   fit.order = -slope;
   fit.error = std::sqrt(c11);
   return fit;
+}
+
+/// Whether fitted orders resolve `threshold`: +1 if every one is above it by more than 2 standard errors, -1 if one is
+/// below it by more than 2 (or is no fit), 0 (undecided) otherwise.
+inline int orders_against(std::initializer_list<OrderFit> fits, double threshold) {
+  int side = 1;
+  for (const OrderFit& fit : fits) {
+    if (!fit.valid() || fit.order + 2.0 * fit.error < threshold) return -1;
+    if (fit.order - 2.0 * fit.error <= threshold) side = 0;
+  }
+  return side;
+}
+
+/// Adds a sample of an order claim: holds where `other` holds and the orders resolve their threshold from above, fails
+/// where `other` fails or an order lies below it, undecided (orders within 2 s.e. of it) otherwise.
+inline void add_orders(DomainClaim& claim, const std::string& where, double value, int side, bool other) {
+  if (other && side == 0)
+    claim.add_undecided(where + " — an order within 2 s.e. of the threshold", value);
+  else
+    claim.add(where, value, other && side > 0);
 }
 
 /// An error as report text: "stopped" for NaN.

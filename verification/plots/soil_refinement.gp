@@ -18,7 +18,8 @@ set xtics ("0.5" 0.5, "1" 1, "2" 2)
 set xlabel "cell size h (m)" offset 0,0.3
 set grid
 set format y "10^{%L}"
-# the keys below the panels, over no data
+# the keys below the panels, over no data: the line styles under the left panel, the methods' colours (both panels)
+# under the right one
 set key outside bottom center horizontal maxrows 3 font ",9" samplen 2.5
 offset(m) = 1 + 0.03 * (m - 3.5)
 do for [format in "png pdf"] {
@@ -28,7 +29,7 @@ do for [format in "png pdf"] {
   set title "against the small-strain exact column"
   set ylabel "error of u_y (m)"
   set yrange [1e-3:0.05]
-  plot for [m = 1:6] file(m) using ($6 == 1 ? $1 * offset(m) : NaN):2 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) title word(labels, m), \
+  plot for [m = 1:6] file(m) using ($6 == 1 ? $1 * offset(m) : NaN):2 with linespoints lw 1.5 pt 7 lc rgb word(colours, m) notitle, \
        for [m = 1:6] file(m) using ($6 == 1 ? $1 * offset(m) : NaN):3 with linespoints lw 1.5 dt 2 pt 6 lc rgb word(colours, m) notitle, \
        NaN with linespoints lw 1.5 pt 7 lc rgb "black" title "RMS over 0-20 s", \
        NaN with linespoints lw 1.5 dt 2 pt 6 lc rgb "black" title "|error| at 20 s", \
