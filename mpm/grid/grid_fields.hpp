@@ -1,5 +1,5 @@
 /// \file
-/// Nodal fields, rebuilt from the particles every step and reset at its end (Algorithm, step 9).
+/// Nodal fields, rebuilt from the particles every step: reset() zeroes them at the start of each step.
 /// Allocated once per run: reset() only zeroes them, so the time step allocates nothing.
 #pragma once
 #include <vector>

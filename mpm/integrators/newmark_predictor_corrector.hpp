@@ -1,6 +1,14 @@
 /// \file
-/// The explicit Newmark predictor-corrector (NPC) of the paper, its Algorithm steps 1-9, as the
-/// authors' code runs it (paper/03_predictor_corrector.md). Newmark gamma = 1/2 by default; beta is never used.
+/// The explicit Newmark predictor-corrector (NPC) of the paper, its Algorithm steps 1-9
+/// (paper/03_predictor_corrector.md). Newmark gamma = 1/2 by default; beta is never used. By default the particles
+/// move by Eq. (33) as printed, with v_I^k = p_I^k / m_I (`solver.npc_position_velocity = "projected"`), where the
+/// authors' code moves them with the corrected v_I^{k+1} (`"corrected"`).
+///
+/// The corrector, Eq. (30), matters only when the position update reads the corrected velocity: under the default
+/// nothing reads its output (Eqs. (31)-(32) read f_I / m_I, Eq. (33) reads p_I^k / m_I, the next step rebuilds the
+/// nodes), so with or without it every output is the same to the last bit (tests/corrector.cpp). It stays in the
+/// step, inert under the default, rather than skipped: the step is the paper's algorithm, and `"corrected"` and
+/// `"predicted"` read it.
 ///
 /// The paper motivates it with Newmark's scheme applied to the particles, Eq. (23) for v_p,
 /// Eq. (24) for x_p with its beta, Eq. (25) for a_p, and then builds the explicit predictor and

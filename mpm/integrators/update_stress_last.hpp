@@ -87,40 +87,39 @@ struct UpdateStressLast {
 };
 
 TEST_CASE("USL, MUSL: one step of the worked example by hand, node 2 fixed: each stress from its own nodal velocity") {
-  // The worked example (mpm/transfer/worked_example.hpp), E = 100 Pa, dt = 0.1, node 2 held: p_I = (1.5, -1.5, 0),
-  // v_I^k = (1, -0.6, 0); f_I = (5, -25, 20), node 2's force a reaction; p_I^{k+1} = (2, -4, 0), v_I^{k+1} = (4/3, -1.6, 0),
-  // a_I = (10/3, -10, 0). G2P: v_0 = 1 + 0.1 (0.75 * 10/3 - 0.25 * 10) = 1, v_1 = -1 + 0.1 (0.5 * -10) = -1.5;
-  // x_0 = 0.25 + 0.1 (0.75 * 4/3 - 0.25 * 1.6) = 0.31, x_1 = 1.5 + 0.1 (0.5 * -1.6) = 1.42.
-  // USL: strain rates from v_I^{k+1}: -4/3 - 1.6 = -2.9333 and 1.6, so sigma = 100 * 0.1 * rate = (-29.333, 16).
-  // MUSL: p_I = (0.75 * 2 * 1, 0.25 * 2 * 1 + 0.5 * 4 * -1.5, held) = (1.5, -2.5, 0), v_I = (1, -1, 0): rates -2 and 1,
-  // sigma = (-20, 10). (USF would take v_I^k: rates -1.6 and 0.6, sigma = (-16, 6).)
+  // The first step of scenes/worked_example.toml (mpm/transfer/worked_example.hpp), E = 25 Pa, dt = 0.2, b = 10,
+  // node 2 held: p_I = (1.5, -2.5, 0), v_I^k = (1, -1, 0); no stress yet, so f_I is the weight (15, 25, 20), node 2's
+  // a reaction; p_I^{k+1} = (4.5, 2.5, 0), v_I^{k+1} = (3, 1, 0), a_I = (10, 10, 0). G2P: v_0 = 1 + 0.2 (10) = 3,
+  // v_1 = -1.5 + 0.2 (0.5 * 10) = -0.5; x_0 = 0.25 + 0.2 (0.75 * 3 + 0.25 * 1) = 0.75, x_1 = 1.5 + 0.2 (0.5 * 1) = 1.6.
+  // USL: strain rates from v_I^{k+1}: 1 - 3 = -2 and -1, so sigma = 25 * 0.2 * rate = (-10, -5).
+  // MUSL: p_I = (0.75 * 2 * 3, 0.25 * 2 * 3 + 0.5 * 4 * -0.5, held) = (4.5, 0.5, 0), v_I = (3, 0.2, 0): rates -2.8 and
+  // -0.2, sigma = (-14, -1). (USF takes v_I^k: rates -2 and 1, sigma = (-10, 5), paper/12_worked_example.md.)
   auto step = [](StressLastVelocity velocity) {
     testing::WorkedExample example;
     Model<1> model;
     model.grid = example.grid;
-    model.materials = {LinearElastic{100.0, 0.0, 4.0}};
+    model.materials = {LinearElastic{example.young_modulus, 0.0, example.density}};
     model.fixed = {FixedDof{2, 0}};
-    ParticleBodyForces<1> body_force;
-    body_force.per_unit_mass.assign(2, Vector<1>::Zero());
+    const ParticleBodyForces<1> body_force = testing::WorkedExample::body_force();
     PhaseTimers timers;
     UpdateStressLast integrator;
     integrator.stress_velocity = velocity;
-    integrator.step(model, example.stencils, body_force, 0.1, example.particles, example.fields, timers);
+    integrator.step(model, example.stencils, body_force, example.dt, example.particles, example.fields, timers);
     return example.particles;
   };
   for (auto velocity : {StressLastVelocity::updated_nodal, StressLastVelocity::reprojected_particles}) {
     const Particles<1> particles = step(velocity);
-    CHECK(particles.velocity[0][0] == doctest::Approx(1.0));
-    CHECK(particles.velocity[1][0] == doctest::Approx(-1.5));
-    CHECK(particles.position[0][0] == doctest::Approx(0.31));
-    CHECK(particles.position[1][0] == doctest::Approx(1.42));
+    CHECK(particles.velocity[0][0] == doctest::Approx(3.0));
+    CHECK(particles.velocity[1][0] == doctest::Approx(-0.5));
+    CHECK(particles.position[0][0] == doctest::Approx(0.75));
+    CHECK(particles.position[1][0] == doctest::Approx(1.6));
   }
   const Particles<1> usl = step(StressLastVelocity::updated_nodal);
-  CHECK(usl.stress[0](0, 0) == doctest::Approx(-29.3333333333));
-  CHECK(usl.stress[1](0, 0) == doctest::Approx(16.0));
+  CHECK(usl.stress[0](0, 0) == doctest::Approx(-10.0));
+  CHECK(usl.stress[1](0, 0) == doctest::Approx(-5.0));
   const Particles<1> musl = step(StressLastVelocity::reprojected_particles);
-  CHECK(musl.stress[0](0, 0) == doctest::Approx(-20.0));
-  CHECK(musl.stress[1](0, 0) == doctest::Approx(10.0));
+  CHECK(musl.stress[0](0, 0) == doctest::Approx(-14.0));
+  CHECK(musl.stress[1](0, 0) == doctest::Approx(-1.0));
 }
 
 TEST_CASE("USL, MUSL: stability limits by hand: USL at CFL 1/sqrt(2) from the strain that no particle velocity carries, MUSL at 2 as USF") {

@@ -125,122 +125,156 @@ void newmark_particle_update(const Stencils<Dim>& stencils, GridFields<Dim>& gri
 }
 
 TEST_CASE("Eq. (18), Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (31), Eq. (32), Eq. (33): G2P on the worked example by hand") {
+  // a_p = sum N a_I: p0: 0.75 (8) + 0.25 (13.6) = 9.4, p1: 0.5 (13.6) + 0.5 (0) = 6.8; dt = 0.2:
+  // v_p = (1 + 1.88, -1.5 + 1.36) = (2.88, -0.14) for both integrators.
   testing::WorkedExample example;
   auto& grid = example.fields;
-  grid.nodal_mass = {1.5, 2.5, 2.0};
-  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(4.0)};   // a_I = 2, -2, 2
-  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
-  grid.nodal_momentum = {Vector<1>(3.0), Vector<1>(0.0), Vector<1>(-4.0)};  // p_I/m_I = 2, 0, -2
-  const double dt = 0.1;
-
+  const double dt = example.dt;
+  testing::worked_example_grid(grid, false);
   Particles<1> euler = example.particles;
   forward_euler_particle_update(example.stencils, grid, dt, EulerPositionVelocity::updated, euler);
-  // p0: a = 0.75(2) + 0.25(-2) = 1, v = 1 + 0.1 = 1.1; x = 0.25 + 0.1 (0.75 * 2 + 0) = 0.4
-  CHECK(euler.velocity[0][0] == doctest::Approx(1.1));
-  CHECK(euler.position[0][0] == doctest::Approx(0.4));
-  // p1: a = 0.5(-2) + 0.5(2) = 0; x = 1.5 + 0.1 (0 - 1) = 1.4
-  CHECK(euler.velocity[1][0] == doctest::Approx(-1.0));
-  CHECK(euler.position[1][0] == doctest::Approx(1.4));
-
+  // p_I^{k+1} / m_I = (2.6, 1.72, 0):
+  // x = (0.25 + 0.2 (0.75 * 2.6 + 0.25 * 1.72), 1.5 + 0.2 (0.5 * 1.72)) = (0.726, 1.672)
+  CHECK(euler.velocity[0][0] == doctest::Approx(2.88));
+  CHECK(euler.velocity[1][0] == doctest::Approx(-0.14));
+  CHECK(euler.position[0][0] == doctest::Approx(0.726));
+  CHECK(euler.position[1][0] == doctest::Approx(1.672));
   Particles<1> literal = example.particles;
   forward_euler_particle_update(example.stencils, grid, dt, EulerPositionVelocity::start, literal);
-  CHECK(literal.position[0][0] == doctest::Approx(0.25 + 0.1 * (0.75 * 1.0 + 0.25 * -0.6)));
+  // v_I^k = (1, -1, 0): x = (0.25 + 0.2 (0.75 - 0.25), 1.5 + 0.2 (-0.5)) = (0.35, 1.4)
+  CHECK(literal.position[0][0] == doctest::Approx(0.35));
+  CHECK(literal.position[1][0] == doctest::Approx(1.4));
 
+  testing::worked_example_grid(grid, true);
   Particles<1> newmark = example.particles;
   newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::corrected, newmark);
-  // p0: a = 1, v = 1.1, x = 0.25 + 0.1 (0.75 - 0.15) + 0.005 (1) = 0.315
-  CHECK(newmark.acceleration[0][0] == doctest::Approx(1.0));
-  CHECK(newmark.velocity[0][0] == doctest::Approx(1.1));
-  CHECK(newmark.position[0][0] == doctest::Approx(0.315));
+  // corrected v_I = (1.8, 0.36, 0): x0 = 0.25 + 0.2 (1.35 + 0.09) + 0.02 (9.4) = 0.726,
+  // x1 = 1.5 + 0.2 (0.18) + 0.02 (6.8) = 1.672
+  CHECK(newmark.acceleration[0][0] == doctest::Approx(9.4));
+  CHECK(newmark.acceleration[1][0] == doctest::Approx(6.8));
+  CHECK(newmark.velocity[0][0] == doctest::Approx(2.88));
+  CHECK(newmark.velocity[1][0] == doctest::Approx(-0.14));
+  CHECK(newmark.position[0][0] == doctest::Approx(0.726));
+  CHECK(newmark.position[1][0] == doctest::Approx(1.672));
   Particles<1> predicted = example.particles;
   newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::predicted, predicted);
-  // v_I - gamma dt a_I = (0.9, -0.5, -1.1): x = 0.25 + 0.1 (0.675 - 0.125) + 0.005 = 0.31
-  CHECK(predicted.position[0][0] == doctest::Approx(0.31));
+  // v_I - gamma dt a_I = (1.8 - 0.8, 0.36 - 1.36, 0) = (1, -1, 0): x0 = 0.25 + 0.2 (0.5) + 0.188 = 0.538
+  CHECK(predicted.position[0][0] == doctest::Approx(0.538));
   Particles<1> projected = example.particles;
   newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::projected, projected);
-  // p_I/m_I = (2, 0, -2): x = 0.25 + 0.1 (0.75 * 2) + 0.005 (1) = 0.405
-  CHECK(projected.position[0][0] == doctest::Approx(0.405));
+  // p_I / m_I = (1, -1, 0): x = (0.25 + 0.1 + 0.188, 1.5 - 0.1 + 0.136) = (0.538, 1.536)
+  CHECK(projected.position[0][0] == doctest::Approx(0.538));
+  CHECK(projected.position[1][0] == doctest::Approx(1.536));
+}
+
+TEST_CASE("Eq. (30), Eq. (33): the position update as printed reads no corrected velocity: Eq. (30) changes no bit") {
+  // The worked example's first predictor-corrector step: its grid before the corrector (v_I^pred = (1, -1, 0)) and
+  // after it ((1.8, 0.36, 0)). The default update, Eq. (33) with v_I^k = p_I^k / m_I, gives the same bits from both;
+  // the authors' corrected one moves particle 0 to 0.726 instead of 0.538.
+  testing::WorkedExample example;
+  auto& grid = example.fields;
+  testing::worked_example_grid(grid, true);
+  const std::vector<Vector<1>> corrected = grid.nodal_velocity;
+  const std::vector<Vector<1>> predictor{Vector<1>(1.0), Vector<1>(-1.0), Vector<1>(0.0)};
+  for (const auto position_velocity : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected}) {
+    Particles<1> before = example.particles, after = example.particles;
+    grid.nodal_velocity = predictor;
+    newmark_particle_update(example.stencils, grid, 0.5, example.dt, position_velocity, before);
+    grid.nodal_velocity = corrected;
+    newmark_particle_update(example.stencils, grid, 0.5, example.dt, position_velocity, after);
+    CHECK(before.velocity == after.velocity);
+    CHECK(before.acceleration == after.acceleration);
+    if (position_velocity == NewmarkPositionVelocity::projected) {
+      CHECK(before.position == after.position);
+    } else {
+      CHECK(before.position[0][0] == doctest::Approx(0.538));
+      CHECK(after.position[0][0] == doctest::Approx(0.726));
+    }
+  }
 }
 
 TEST_CASE("Eq. (19), Eq. (20), Eq. (31), Eq. (33): G2P skips the nodes without mass, whatever their fields hold") {
   // Node 2 of the worked example emptied, its force, momentum and velocity left huge: particle 1 (N = 0.5, 0.5 on
-  // nodes 1, 2) must see node 1 alone: a = 0.5 (-5 / 2.5) = -1; p_1 / m_1 = 0; v_1 = -0.6.
+  // nodes 1, 2) must see node 1 alone: a = 0.5 (34 / 2.5) = 6.8, v = -1.5 + 0.2 (6.8) = -0.14.
   testing::WorkedExample example;
   auto& grid = example.fields;
-  grid.nodal_mass = {1.5, 2.5, 0.0};
-  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(1e6)};
-  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(1e6)};
-  grid.nodal_momentum = {Vector<1>(3.0), Vector<1>(0.0), Vector<1>(1e6)};
+  testing::worked_example_grid(grid, false);
+  grid.nodal_mass[2] = 0.0;
+  grid.nodal_force[2] = grid.nodal_velocity[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
   Particles<1> updated = example.particles, start = example.particles, blend = example.particles;
-  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::updated, updated);
-  CHECK(updated.velocity[1][0] == doctest::Approx(-1.1));   // -1 + 0.1 (-1)
-  CHECK(updated.position[1][0] == doctest::Approx(1.5));    // 1.5 + 0.1 (0.5 * 0)
-  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::start, start);
-  CHECK(start.position[1][0] == doctest::Approx(1.47));     // 1.5 + 0.1 (0.5 * -0.6)
-  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::start, blend, 0.5);
-  CHECK(blend.velocity[1][0] == doctest::Approx(-0.55));    // 0.5 (-1.1) + 0.5 (0.5 * 0)
+  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::updated, updated);
+  CHECK(updated.velocity[1][0] == doctest::Approx(-0.14));
+  CHECK(updated.position[1][0] == doctest::Approx(1.672));  // 1.5 + 0.2 (0.5 * 4.3 / 2.5)
+  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::start, start);
+  CHECK(start.position[1][0] == doctest::Approx(1.4));      // 1.5 + 0.2 (0.5 * -1)
+  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::start, blend, 0.5);
+  CHECK(blend.velocity[1][0] == doctest::Approx(0.36));     // 0.5 (-0.14) + 0.5 (0.5 * 1.72)
+  testing::worked_example_grid(grid, true);
+  grid.nodal_mass[2] = 0.0;
+  grid.nodal_force[2] = grid.nodal_velocity[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
   for (const auto position_velocity : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected, NewmarkPositionVelocity::predicted}) {
     Particles<1> newmark = example.particles;
-    newmark_particle_update(example.stencils, grid, 0.6, 0.1, position_velocity, newmark);
-    CHECK(newmark.acceleration[1][0] == doctest::Approx(-1.0));
-    CHECK(newmark.velocity[1][0] == doctest::Approx(-1.1));
-    // projected: 0.5 * 0; corrected: 0.5 * -0.6; predicted: 0.5 (-0.6 - 0.06 (-2)) = -0.24; plus 0.005 a = -0.005
-    const double moved = position_velocity == NewmarkPositionVelocity::projected ? 0.0
-                         : position_velocity == NewmarkPositionVelocity::corrected ? -0.3
-                                                                                   : -0.24;
-    CHECK(newmark.position[1][0] == doctest::Approx(1.5 + 0.1 * moved - 0.005));
+    newmark_particle_update(example.stencils, grid, 0.6, 0.2, position_velocity, newmark);
+    CHECK(newmark.acceleration[1][0] == doctest::Approx(6.8));
+    CHECK(newmark.velocity[1][0] == doctest::Approx(-0.14));
+    // projected: 0.5 * -2.5 / 2.5 = -0.5; corrected: 0.5 * 0.36 = 0.18; predicted: 0.5 (0.36 - 0.12 * 13.6) = -0.636;
+    // plus 0.02 a = 0.136
+    const double moved = position_velocity == NewmarkPositionVelocity::projected ? -0.5
+                         : position_velocity == NewmarkPositionVelocity::corrected ? 0.18
+                                                                                   : -0.636;
+    CHECK(newmark.position[1][0] == doctest::Approx(1.5 + 0.2 * moved + 0.136));
   }
 }
 
 TEST_CASE("Eq. (23): the Newmark average of the particle velocity by hand, at gamma = 0.6 (where gamma and 1 - gamma differ)") {
+  // The worked example's first step: a_p^k = 0 at t = 0 and a_p^{k+1} = 9.4 for particle 0, so the average gives
+  // v = 1 + 0.2 (0.4 (0) + 0.6 (9.4)) = 2.128 (Eq. (32): 2.88; the weights swapped: 1.752).
   testing::WorkedExample example;
   auto& grid = example.fields;
-  grid.nodal_mass = {1.5, 2.5, 2.0};
-  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(4.0)};  // a_I = 2, -2, 2: p0 gets a = 1
-  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
-  grid.nodal_momentum = {Vector<1>(3.0), Vector<1>(0.0), Vector<1>(-4.0)};
-  Particles<1> particles = example.particles;
-  particles.acceleration[0] = Vector<1>(-3.0);  // a_p^k
-  const double v0 = particles.velocity[0][0];
-  newmark_particle_update(example.stencils, grid, 0.6, 0.1, NewmarkPositionVelocity::projected, particles,
+  testing::worked_example_grid(grid, true);
+  Particles<1> first = example.particles;
+  newmark_particle_update(example.stencils, grid, 0.6, example.dt, NewmarkPositionVelocity::projected, first,
                           NewmarkParticleVelocity::average);
-  // v = v0 + 0.1 (0.4 (-3) + 0.6 (1)) = v0 - 0.06; Eq. (32) would give v0 + 0.1
-  CHECK(particles.velocity[0][0] == doctest::Approx(v0 - 0.06));
-  CHECK(particles.acceleration[0][0] == doctest::Approx(1.0));
+  CHECK(first.velocity[0][0] == doctest::Approx(2.128));
+  CHECK(first.acceleration[0][0] == doctest::Approx(9.4));
+  // With a_p^k = -3 set by hand (a check of the old acceleration's weight): v = 1 + 0.2 (0.4 (-3) + 0.6 (9.4)) = 1.888.
+  Particles<1> particles = example.particles;
+  particles.acceleration[0] = Vector<1>(-3.0);
+  newmark_particle_update(example.stencils, grid, 0.6, example.dt, NewmarkPositionVelocity::projected, particles,
+                          NewmarkParticleVelocity::average);
+  CHECK(particles.velocity[0][0] == doctest::Approx(1.888));
+  CHECK(particles.acceleration[0][0] == doctest::Approx(9.4));
 }
 
 TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): the PIC/FLIP blend of forward Euler by hand, and flip_fraction = 1 bit for bit FLIP") {
   testing::WorkedExample example;
   auto& grid = example.fields;
-  grid.nodal_mass = {1.5, 2.5, 2.0};
-  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(4.0)};
-  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
-  grid.nodal_momentum = {Vector<1>(3.0), Vector<1>(0.0), Vector<1>(-4.0)};  // p_I/m_I = 2, 0, -2
+  testing::worked_example_grid(grid, false);  // p_I^{k+1} / m_I = (2.6, 1.72, 0)
   Particles<1> flip = example.particles, blend = example.particles;
-  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::updated, flip, 1.0);
-  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::updated, blend, 0.8);
-  // p0: FLIP 1.1 (above); PIC sum N p_I/m_I = 0.75 * 2 + 0.25 * 0 = 1.5; blend 0.8 * 1.1 + 0.2 * 1.5 = 1.18
-  CHECK(flip.velocity[0][0] == doctest::Approx(1.1));
-  CHECK(blend.velocity[0][0] == doctest::Approx(1.18));
+  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::updated, flip, 1.0);
+  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::updated, blend, 0.8);
+  // p0: FLIP 2.88 (above); PIC sum N p_I/m_I = 0.75 * 2.6 + 0.25 * 1.72 = 2.38; blend 0.8 * 2.88 + 0.2 * 2.38 = 2.78
+  CHECK(flip.velocity[0][0] == doctest::Approx(2.88));
+  CHECK(blend.velocity[0][0] == doctest::Approx(2.78));
   CHECK(blend.position[0][0] == flip.position[0][0]);
   // the PIC part takes the updated p_I / m_I whatever moves the particle: with the literal Eqs. (20)-(21)
-  // (positions from v_I^k = 1, -0.6, -1) the velocity is still 0.8 * 1.1 + 0.2 * 1.5
+  // (positions from v_I^k = 1, -1, 0) the velocity is still 0.8 * 2.88 + 0.2 * 2.38
   Particles<1> literal = example.particles;
-  forward_euler_particle_update(example.stencils, grid, 0.1, EulerPositionVelocity::start, literal, 0.8);
-  CHECK(literal.velocity[0][0] == doctest::Approx(1.18));
+  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::start, literal, 0.8);
+  CHECK(literal.velocity[0][0] == doctest::Approx(2.78));
 }
 
 TEST_CASE("Eq. (33): the position update with the predicted nodal velocity at gamma = 0.6 by hand: v_I - gamma dt a_I") {
-  // The grid of the worked example above: a_I = (2, -2, 2), v_I = (1, -0.6, -1). At gamma = 0.6, dt = 0.1,
-  // v_I - 0.06 a_I = (0.88, -0.48, -1.12); particle 0 (N = 0.75, 0.25): 0.66 - 0.12 = 0.54, a = 1, so
-  // x = 0.25 + 0.1 (0.54) + 0.005 (1) = 0.309 ((1 - gamma) = 0.4 would give 0.311).
+  // The worked example's first step at gamma = 0.6: the corrector gives v_I^pred + 0.12 a_I = (1.96, 0.632, 0), and
+  // v_I - gamma dt a_I recovers v_I^pred = (1, -1, 0): x0 = 0.25 + 0.2 (0.5) + 0.02 (9.4) = 0.538
+  // ((1 - gamma) dt = 0.08 would give (1.32, -0.456, 0) and 0.6132).
   testing::WorkedExample example;
   auto& grid = example.fields;
-  grid.nodal_mass = {1.5, 2.5, 2.0};
-  grid.nodal_force = {Vector<1>(3.0), Vector<1>(-5.0), Vector<1>(4.0)};
-  grid.nodal_velocity = {Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
-  newmark_particle_update(example.stencils, grid, 0.6, 0.1, NewmarkPositionVelocity::predicted, example.particles);
-  CHECK(example.particles.position[0][0] == doctest::Approx(0.309));
+  testing::worked_example_grid(grid, true);
+  grid.nodal_velocity = {Vector<1>(1.96), Vector<1>(0.632), Vector<1>(0.0)};
+  newmark_particle_update(example.stencils, grid, 0.6, example.dt, NewmarkPositionVelocity::predicted,
+                          example.particles);
+  CHECK(example.particles.position[0][0] == doctest::Approx(0.538));
 }
 
 }  // namespace mpm

@@ -56,38 +56,46 @@ void add_nodal_forces(const Particles<Dim>& particles, const Stencils<Dim>& sten
 }
 
 TEST_CASE("Eq. (9), Eq. (10), Eq. (14), Eq. (15): nodal forces on the worked example: the internal force by hand, the body force sums to the weight") {
+  // At t = 0 (no stress yet) the nodal forces are the weight alone, b = 10:
+  // (0.75 * 2 * 10, 0.25 * 2 * 10 + 0.5 * 4 * 10, 0.5 * 4 * 10) = (15, 25, 20), summing to (2 + 4) 10 = 60.
   testing::WorkedExample example;
+  const ParticleBodyForces<1> gravity = testing::WorkedExample::body_force();
+  add_nodal_forces(example.particles, example.stencils, gravity, example.fields);
+  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(15.0));
+  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(25.0));
+  CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
+        doctest::Approx(60.0));
+  // The first step's state after the stress update (strain_update.hpp's doctest, v_I^k = (1, -1, 0)): strains
+  // (-0.4, 0.2), sigma = E eps = (-10, 5) Pa, rho = 4 / (1 + eps) = (20/3, 10/3), V = (0.3, 1.2).
+  // f^int = -sigma V grad N: (-(-10)(0.3)(-1), -(-10)(0.3)(1) - (5)(1.2)(-1), -(5)(1.2)(1)) = (-3, 9, -6);
+  // with the weight, f_I = (12, 34, 14); node 2 is held, its 14 becomes the reaction.
+  const double strain[2] = {-0.4, 0.2};
+  for (int p = 0; p < 2; ++p) {
+    example.particles.strain[p](0, 0) = strain[p];
+    example.particles.stress[p](0, 0) = example.young_modulus * strain[p];
+    example.particles.density[p] = example.density / (1.0 + strain[p]);
+  }
+  example.fields.reset();
   const ParticleBodyForces<1> none{{Vector<1>(0.0), Vector<1>(0.0)}, true, true};
   add_nodal_forces(example.particles, example.stencils, none, example.fields);
-  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(5.0));
-  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(-25.0));
-  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(20.0));
-  // Gravity alone (no stress): the nodal forces sum to the weight.
-  example.particles.stress[0].setZero();
-  example.particles.stress[1].setZero();
+  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-3.0));
+  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(9.0));
+  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(-6.0));
   example.fields.reset();
-  const ParticleBodyForces<1> gravity{{Vector<1>(-9.81), Vector<1>(-9.81)}, false, true};
   add_nodal_forces(example.particles, example.stencils, gravity, example.fields);
-  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-9.81 * 1.5));
-  CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
-        doctest::Approx(-9.81 * 6.0));
-  // A different b_p per particle: the nodal forces still sum to sum_p m_p b_p (partition of unity).
+  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(12.0));
+  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(34.0));
+  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(14.0));
+  // A different b_p per particle, (3, -2): (0.75 * 2 * 3, 0.25 * 2 * 3 - 0.5 * 4 * 2, -0.5 * 4 * 2) = (4.5, -2.5, -4),
+  // plus the internal force: (1.5, 6.5, -10); the body forces still sum to sum_p m_p b_p = 6 - 8 = -2.
   example.fields.reset();
-  const ParticleBodyForces<1> field{{Vector<1>(2.0), Vector<1>(-1.0)}, false, false};
+  const ParticleBodyForces<1> field{{Vector<1>(3.0), Vector<1>(-2.0)}, false, false};
   add_nodal_forces(example.particles, example.stencils, field, example.fields);
-  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(0.75 * 2.0 * 2.0));
-  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(0.25 * 2.0 * 2.0 - 0.5 * 4.0 * 1.0));
-  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(-0.5 * 4.0 * 1.0));
+  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-3.0 + 4.5));
+  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(9.0 - 2.5));
+  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(-6.0 - 4.0));
   CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
-        doctest::Approx(example.particles.mass[0] * 2.0 - example.particles.mass[1]));
-  // Both at once: the internal force by hand plus the body force of the line above.
-  example.particles.stress[0](0, 0) = 10.0;
-  example.particles.stress[1](0, 0) = -20.0;
-  example.fields.reset();
-  add_nodal_forces(example.particles, example.stencils, field, example.fields);
-  CHECK(example.fields.nodal_force[0][0] == doctest::Approx(5.0 + 3.0));
-  CHECK(example.fields.nodal_force[1][0] == doctest::Approx(-25.0 - 1.0));
-  CHECK(example.fields.nodal_force[2][0] == doctest::Approx(20.0 - 2.0));
+        doctest::Approx(example.particles.mass[0] * 3.0 - example.particles.mass[1] * 2.0));
 }
 
 TEST_CASE("Eq. (14): the internal force in 2D by hand, with a shear stress: f_I = -V_p sigma_p grad N_Ip") {

@@ -93,6 +93,9 @@ void nodal_mass_and_velocity_predictor(const Particles<Dim>& particles, const St
 }
 
 TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), Eq. (29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
+  // The first step of scenes/worked_example.toml (paper/12_worked_example.md): m_I = (0.75 * 2, 0.25 * 2 + 0.5 * 4,
+  // 0.5 * 4) = (1.5, 2.5, 2); p_I = (0.75 * 2 * 1, 0.25 * 2 * 1 + 0.5 * 4 * -1.5, 0.5 * 4 * -1.5) = (1.5, -2.5, -3),
+  // so v_I = (1, -1, -1.5) before the wall holds node 2.
   testing::WorkedExample example;
   auto& grid = example.fields;
   nodal_mass_and_momentum(example.particles, example.stencils, grid);
@@ -100,43 +103,50 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
   CHECK(grid.nodal_mass[2] == doctest::Approx(2.0));
   nodal_velocity_from_momentum(grid);
-  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-1.5));
+  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
   CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.0));
-  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.6));
-  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-1.0));
+  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-1.0));
+  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-1.5));
   // The momentum alone, projected afresh over whatever the field held (MUSL's second projection): the same p_I.
   for (auto& momentum : grid.nodal_momentum) momentum.setConstant(99.0);
   nodal_momentum_from_particles(example.particles, example.stencils, grid);
   CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.5));
-  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-1.5));
-  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-2.0));
+  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
+  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-3.0));
 
-  // Predictor with a_0 = 8, a_1 = 0, gamma = 1/2, dt = 0.1: node 1 gets
-  // (0.25*2*(1 + 0.05*8) + 0.5*4*(-1)) / 2.5 = (0.7 - 2) / 2.5 = -0.52.
-  example.particles.acceleration[0] = Vector<1>(8.0);
+  // The predictor of the first step: a_p = 0 at t = 0, so v_I^pred is the projected p_I / m_I, bit for bit.
+  const std::vector<Vector<1>> projected = grid.nodal_velocity;
   grid.reset();
-  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.5, 0.1, grid);
+  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.5, example.dt, grid);
+  for (int node = 0; node < 3; ++node) CHECK(grid.nodal_velocity[node][0] == projected[node][0]);
+  // With the accelerations the first step leaves, a_p = (9.4, 6.8) (Eq. (31)), on the particles as they are at
+  // t = 0 (a check of the weights, not a state of the run): (1 - gamma) dt = 0.1, v_p + 0.1 a_p = (1.94, -0.82);
+  // node 1 gets (0.25 * 2 * 1.94 + 0.5 * 4 * -0.82) / 2.5 = (0.97 - 1.64) / 2.5 = -0.268.
+  example.particles.acceleration = {Vector<1>(9.4), Vector<1>(6.8)};
+  grid.reset();
+  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.5, example.dt, grid);
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
-  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.52));
-  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-1.5));
+  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.94));
+  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.268));
+  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-0.82));
+  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
 }
 
 TEST_CASE("Eq. (26), Eq. (28), Eq. (29): the predictor at gamma = 0.6 by hand: (1 - gamma) dt a_p, not gamma dt a_p") {
-  // At gamma = 1/2 the two weights are equal; at 0.6 they differ. a_0 = 8, a_1 = -5, dt = 0.1, so
-  // (1 - gamma) dt = 0.04: v_0 + 0.04 a_0 = 1.32 and v_1 + 0.04 a_1 = -1.2 (gamma dt = 0.06 would give
-  // 1.48 and -1.3). By hand: node 0: 0.75*2*1.32 / 1.5 = 1.32; node 1: (0.25*2*1.32 + 0.5*4*(-1.2)) / 2.5
-  // = (0.66 - 2.4) / 2.5 = -0.696; node 2: 0.5*4*(-1.2) / 2 = -1.2.
+  // At gamma = 1/2 the two weights are equal; at 0.6 they differ. The worked example with a_p = (9.4, 6.8) as above,
+  // dt = 0.2, so (1 - gamma) dt = 0.08: v_0 + 0.08 a_0 = 1.752 and v_1 + 0.08 a_1 = -0.956 (gamma dt = 0.12 would
+  // give 2.128 and -0.684). By hand: node 0: 1.752; node 1: (0.5 * 1.752 + 2 * -0.956) / 2.5 = (0.876 - 1.912) / 2.5
+  // = -0.4144; node 2: -0.956.
   testing::WorkedExample example;
-  example.particles.acceleration[0] = Vector<1>(8.0);
-  example.particles.acceleration[1] = Vector<1>(-5.0);
+  example.particles.acceleration = {Vector<1>(9.4), Vector<1>(6.8)};
   auto& grid = example.fields;
-  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.6, 0.1, grid);
-  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.32));
-  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.696));
-  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-1.2));
-  // The momentum left beside it is the projected p_I of v_p^k alone: (1.5, -1.5, -2).
+  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.6, example.dt, grid);
+  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.752));
+  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.4144));
+  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-0.956));
+  // The momentum left beside it is the projected p_I of v_p^k alone: (1.5, -2.5, -3).
   CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.5));
-  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-2.0));
+  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-3.0));
 }
 
 }  // namespace mpm

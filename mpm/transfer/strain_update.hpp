@@ -1,6 +1,6 @@
 /// \file
-/// Particle state from the nodal velocities: strain rate, strain, density, stress (Algorithm
-/// steps 4-5, the "update stress first" order of both integrators).
+/// Particle state from the nodal velocities: strain rate, strain, density, stress (forward Euler's step 4, the
+/// predictor-corrector's steps 4-5: the "update stress first" order of both integrators).
 ///
 /// The small-strain kinematics of Eq. (1), \f$ \boldsymbol\varepsilon = \nabla^s \mathbf u \f$, are
 /// integrated in time from the velocity gradient (Eq. 16) rather than from displacements, and mass
@@ -56,7 +56,8 @@ inline double updated_density(double density, double dt, double volumetric_strai
   return density / (1.0 + dt * volumetric_strain_rate);
 }
 
-/// Steps 4-5: \f$ \boldsymbol\varepsilon_p \mathrel{+}= \Delta t\,\dot{\boldsymbol\varepsilon}_p \f$ (Eq. 16),
+/// Forward Euler's step 4, the predictor-corrector's steps 4-5:
+/// \f$ \boldsymbol\varepsilon_p \mathrel{+}= \Delta t\,\dot{\boldsymbol\varepsilon}_p \f$ (Eq. 16),
 /// the density by Eq. (17), and the stress by Hooke's law, Eq. (3), of the particle's own material.
 template <int Dim>
 void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& nodal_velocity,
@@ -71,28 +72,43 @@ void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vect
   });
 }
 
-TEST_CASE("Eq. (3): each particle's stress by its own material: two bodies, E = 100 and 300 Pa, the same strain") {
-  // The worked example's two particles, the second of material 1: the same nodal velocities give
-  // particle 0 the strain -0.016 (stress -1.6 Pa at E = 100) and particle 1 -0.004: -0.4 Pa at E = 100, -1.2 at 300.
+TEST_CASE("Eq. (3): each particle's stress by its own material: two bodies, E = 25 and 75 Pa, the same strain") {
+  // The worked example's first step, the second particle of material 1: the nodal velocities v_I^k = (1, -1, 0)
+  // give particle 0 the strain -0.4 (stress -10 Pa at E = 25) and particle 1 0.2: 5 Pa at E = 25, 15 at 75.
   testing::WorkedExample example;
   example.particles.material[1] = 1;
-  const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
-  update_strain_density_stress(example.stencils, nodal_velocity, {LinearElastic{100.0, 0.0, 4.0}, LinearElastic{300.0, 0.0, 4.0}}, 0.01,
-                               example.particles);
-  CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-1.6));
-  CHECK(example.particles.stress[1](0, 0) == doctest::Approx(-1.2));
+  const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-1.0), Vector<1>(0.0)};
+  const std::vector<LinearElastic> materials{LinearElastic{25.0, 0.0, 4.0}, LinearElastic{75.0, 0.0, 4.0}};
+  update_strain_density_stress(example.stencils, nodal_velocity, materials, example.dt, example.particles);
+  CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-10.0));
+  CHECK(example.particles.stress[1](0, 0) == doctest::Approx(15.0));
 }
 
 TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density and stress: the worked example and a 2D shear") {
+  // The first step of scenes/worked_example.toml (paper/12_worked_example.md), node 2 held: v_I^k = (1, -1, 0).
+  // Strain rates -1 (1) + 1 (-1) = -2 and -1 (-1) + 1 (0) = 1; dt = 0.2: strains -0.4 and 0.2 (from 0 at t = 0),
+  // stresses E eps = 25 (-0.4, 0.2) = (-10, 5) Pa, densities 4 / (1 - 0.4) = 20/3 and 4 / 1.2 = 10/3, volumes 0.3, 1.2.
   testing::WorkedExample example;
-  const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-0.6), Vector<1>(-1.0)};
-  CHECK(strain_rate(example.stencils, 0, nodal_velocity)(0, 0) == doctest::Approx(-1.6));
-  CHECK(strain_rate(example.stencils, 1, nodal_velocity)(0, 0) == doctest::Approx(-0.4));
-  update_strain_density_stress(example.stencils, nodal_velocity, {LinearElastic{100.0, 0.0, 4.0}}, 0.01, example.particles);
-  CHECK(example.particles.strain[0](0, 0) == doctest::Approx(-0.016));
-  CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-1.6));        // E eps = 100 (-0.016)
-  CHECK(example.particles.density[0] == doctest::Approx(4.0 / (1.0 - 0.016)));  // compression: denser
-  CHECK(example.particles.mass[0] / example.particles.density[0] == doctest::Approx(0.5 * 0.984));
+  const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-1.0), Vector<1>(0.0)};
+  CHECK(strain_rate(example.stencils, 0, nodal_velocity)(0, 0) == doctest::Approx(-2.0));
+  CHECK(strain_rate(example.stencils, 1, nodal_velocity)(0, 0) == doctest::Approx(1.0));
+  const std::vector<LinearElastic> material{LinearElastic{example.young_modulus, 0.0, example.density}};
+  update_strain_density_stress(example.stencils, nodal_velocity, material, example.dt, example.particles);
+  CHECK(example.particles.strain[0](0, 0) == doctest::Approx(-0.4));
+  CHECK(example.particles.strain[1](0, 0) == doctest::Approx(0.2));
+  CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-10.0));
+  CHECK(example.particles.stress[1](0, 0) == doctest::Approx(5.0));
+  CHECK(example.particles.density[0] == doctest::Approx(20.0 / 3.0));  // compression: denser
+  CHECK(example.particles.density[1] == doctest::Approx(10.0 / 3.0));
+  CHECK(example.particles.volume(0) == doctest::Approx(0.3));
+  CHECK(example.particles.volume(1) == doctest::Approx(1.2));
+  // The same rates once more: the strain accumulates (-0.8, 0.4), the stress is E times the total strain (-20, 10),
+  // the density is divided again: 20/3 / 0.6 = 100/9.
+  update_strain_density_stress(example.stencils, nodal_velocity, material, example.dt, example.particles);
+  CHECK(example.particles.strain[0](0, 0) == doctest::Approx(-0.8));
+  CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-20.0));
+  CHECK(example.particles.stress[1](0, 0) == doctest::Approx(10.0));
+  CHECK(example.particles.density[0] == doctest::Approx(100.0 / 9.0));
 
   // 2D: nodal velocities v = (y, 0) sampled at the corners of a unit cell give pure shear,
   // grad v = [[0, 1], [0, 0]], so the strain rate is [[0, 1/2], [1/2, 0]] anywhere in the cell.
