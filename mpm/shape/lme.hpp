@@ -998,7 +998,7 @@ TEST_CASE("The authors' beta: gamma / hbar^2 on their strip in 1D and on the 4 x
   // hbar = (sqrt(2) + sqrt(10)) / 4, so beta h^2 = 48 / (sqrt(2) + sqrt(10))^2 = 3 (3 - sqrt(5)) = 2.292 at gamma 3.
   CHECK(authors_beta_in_cell_units(line, Vector<1>(4.5), 3.0) == doctest::Approx(3.0 * (3.0 - std::sqrt(5.0))));
   // At h/4 from the centre, either side: distances sqrt(d^2 + 1/4) for d = 0.25, 0.75, 1.25, 1.75: 2.242.
-  const double quarter = (std::sqrt(0.125) + std::sqrt(0.8125) + std::sqrt(1.8125) + std::sqrt(3.3125)) / 4.0;
+  const double quarter = (std::sqrt(0.3125) + std::sqrt(0.8125) + std::sqrt(1.8125) + std::sqrt(3.3125)) / 4.0;
   CHECK(authors_beta_in_cell_units(line, Vector<1>(4.75), 3.0) == doctest::Approx(3.0 / (quarter * quarter)));
   CHECK(authors_beta_in_cell_units(line, Vector<1>(4.25), 3.0) == doctest::Approx(3.0 / (quarter * quarter)));
   // In the end cells no cell lies beyond: three nodes, hbar = (sqrt(2) + sqrt(10) / 2) / 3, beta h^2 = 3.009.
