@@ -41,5 +41,10 @@ printf 'RMS 17.3<!-- check sweep.csv shape=linear integrator=fe cells=40 : rms_o
 expect 1 "page.md:1: 17.3: the results say 17.18"
 printf 'RMS 17.18<!-- check sweep.csv shape=linear integrator=fe cells=40 : rms_over_v0 * a hundred -->\n' >"$page"
 expect 1 "the factor after"
+# A CSV that ships in verification/data (other codes' numbers) is read when results/data has none of that name.
+printf 'theirs 0.1644<!-- check other_codes.csv code=NL-PartSol case=dyka_bar/lme_pce/40_cells quantity=rms_over_v0 : value -->\n' >"$page"
+expect 0 "1 quoted numbers checked.*0 differ"
+printf 'theirs 0.1655<!-- check other_codes.csv code=NL-PartSol case=dyka_bar/lme_pce/40_cells quantity=rms_over_v0 : value -->\n' >"$page"
+expect 1 "page.md:1: 0.1655: the results say 0.164373"
 echo "book_numbers: $failures failures"
 [[ $failures -eq 0 ]]

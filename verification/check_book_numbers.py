@@ -10,7 +10,8 @@ Markdown viewers show the number and hide the comment):
     0.1718<!-- check dyka_sweep.csv shape=linear integrator=fe cells=40 : rms_over_v0 -->
     2.48e-14<!-- check report.md /Mass is conserved.*?largest relative error ([-+0-9.e]+)/ -->
 
-A CSV of RESULTS_DIR/data: the one row whose columns equal every KEY=VALUE (numbers compared as
+A CSV of RESULTS_DIR/data (or, when not there, of verification/data, which ships with the repository):
+the one row whose columns equal every KEY=VALUE (numbers compared as
 numbers), the named column; `: COLUMN * FACTOR` scales it first, e.g. `: energy_drift * 100` for a
 fraction quoted in per cent. report.md (RESULTS_DIR/report.md): the first group of the regular
 expression's first match (across lines). The quoted number must be the source's value rounded to
@@ -67,6 +68,9 @@ def source_value(results, spec):
     except ValueError:
         return None, f"the factor after '*' must be a number: {factor}"
     path = os.path.join(results, "data", source)
+    shipped = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", source)
+    if not os.path.isfile(path) and os.path.isfile(shipped):
+        path = shipped  # data that ships with the repository (verification/data: other codes' numbers)
     if not column:
         return None, "no ': column' after the keys"
     if not os.path.isfile(path):

@@ -5,7 +5,7 @@
 // cfl:       the same methods at CFL 1.0 and 1.3 on 40 and 160 cells (where the comparison of the integrators
 //            might turn with the step);
 // npcavg:    the predictor-corrector with the Newmark average on the meshes without grid crossing (dyka_fair);
-// gamma:     Fig. 8's LME gammas at 40 cells;
+// gamma:     Fig. 8's LME gammas at 40 cells, under this project's beta and the authors';
 // baselines: today's baselines on 40, 160, 640 cells (the cubic B-spline also 2560);
 // choices:   each choice of paper/09_choices.md switched on its own (dyka_choices.csv);
 // energy:    every shape over 10 periods at 40 cells (the runs of tests/energy.cpp, dyka_energy.csv).
@@ -67,6 +67,10 @@ inline std::string fair_name(const std::string& shape, const std::string& varian
   return "dyka_" + shape + "_" + variant + "_" + std::to_string(cells);
 }
 inline std::string gamma_name(const std::string& integrator, double gamma) { return "dyka_gamma_" + integrator + "_" + text(gamma); }
+/// Fig. 8 again under `solver.lme_beta = "authors"`: the authors' gamma (paper/09_choices.md, 'The beta rule').
+inline std::string authors_gamma_name(const std::string& integrator, double gamma) {
+  return "dyka_gamma_authors_" + integrator + "_" + text(gamma);
+}
 inline std::string baseline_name(const std::string& method, int cells) { return "dyka_base_" + method + "_" + std::to_string(cells); }
 
 /// A shape on a mesh: room beyond the free end, 4 cells and 1 % of the bar more on fine meshes, where grid crossing
@@ -124,6 +128,8 @@ const std::vector<ChoiceCase> choice_cases{
     {"no_free_end_margin", "lme", "fe", 2560, {"grid.margin_min=[0]"}, ""},
     {"beta_mean_neighbour_distance", "lme", "fe", 40, {"solver.lme_beta=\"mean_neighbour_distance\""}, ""},
     {"beta_mean_neighbour_distance", "lme", "npc", 40, {"solver.lme_beta=\"mean_neighbour_distance\""}, ""},
+    {"beta_authors", "lme", "fe", 40, {"solver.lme_beta=\"authors\""}, ""},
+    {"beta_authors", "lme", "npc", 40, {"solver.lme_beta=\"authors\""}, ""},
     {"lme_tol_1e-5", "lme", "npc", 40, {"solver.lme_tol=1e-5"}, ""},
     {"courant_sum", "linear", "fe", 40, {"solver.courant=\"sum\""}, ""},
     {"courant_sum", "linear", "npc", 40, {"solver.courant=\"sum\""}, ""},
@@ -163,9 +169,12 @@ inline std::vector<CaseSpec> independent_cases() {
     for (const auto& shape : shapes)
       cases.push_back({fair_name(shape, "npcavg", cells), with(mesh_settings(shape, cells), {"solver.integrator=\"npc\"", "solver.npc_velocity=\"average\""})});
   for (const auto& integrator : integrators)
-    for (double gamma : gammas)
-      cases.push_back({gamma_name(integrator, gamma), {"grid.cells=[40]", "solver.shape=\"lme\"", integrator_setting(integrator),
-                                                       "solver.lme_gamma=" + text(gamma, "%.2f"), "output.snapshots=[]"}});
+    for (double gamma : gammas) {
+      const std::vector<std::string> settings{"grid.cells=[40]", "solver.shape=\"lme\"", integrator_setting(integrator),
+                                              "solver.lme_gamma=" + text(gamma, "%.2f"), "output.snapshots=[]"};
+      cases.push_back({gamma_name(integrator, gamma), settings});
+      cases.push_back({authors_gamma_name(integrator, gamma), with(settings, {"solver.lme_beta=\"authors\""})});
+    }
   for (const auto& baseline : baselines)
     for (int cells : baseline_cells)
       if (cells <= 640 || baseline.at_crossing) cases.push_back({baseline_name(baseline.method, cells), with(mesh_settings("linear", cells), baseline.settings)});

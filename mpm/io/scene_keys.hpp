@@ -451,7 +451,7 @@ inline const std::vector<SceneKey> all_keys = {
     key("solver.lme_max_iterations", &Scene::lme_max_iterations, "100", "-",
         "most LME Newton iterations before the run fails", whole(1, 1000)),
     key("solver.lme_beta", &Scene::lme_beta, "\"grid_spacing\"", "-",
-        "grid_spacing | mean_neighbour_distance (the authors' h)"),
+        "grid_spacing | mean_neighbour_distance | authors (NL-PartSol's)"),
     key("solver.newmark_gamma", &Scene::newmark_gamma, "0.5", "-",
         "Newmark gamma of the predictor-corrector, in [0, 1]", within(0.0, 1.0)),
     key("solver.fe_position_velocity", &Scene::fe_position_velocity, "\"updated\"", "-",

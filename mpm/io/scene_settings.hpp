@@ -41,7 +41,8 @@ template <> inline constexpr std::array choice_words<BodyShape::Kind>{"box", "el
 template <> inline constexpr std::array choice_words<Placement>{"uniform", "gauss"};
 template <> inline constexpr std::array choice_words<BodyForceTime>{"step_end", "step_start"};
 template <> inline constexpr std::array choice_words<CourantSpeed>{"max", "sum"};
-template <> inline constexpr std::array choice_words<LmeOptions::BetaRule>{"grid_spacing", "mean_neighbour_distance"};
+template <>
+inline constexpr std::array choice_words<LmeOptions::BetaRule>{"grid_spacing", "mean_neighbour_distance", "authors"};
 template <> inline constexpr std::array choice_words<EulerPositionVelocity>{"updated", "start"};
 template <> inline constexpr std::array choice_words<NewmarkPositionVelocity>{"projected", "corrected", "predicted"};
 template <> inline constexpr std::array choice_words<NewmarkParticleVelocity>{"eq32", "average"};
@@ -165,6 +166,7 @@ TEST_CASE("Scene settings: choice names follow their enums, and errors after the
   CHECK(name_of(ShapeKind::bspline3) == "bspline3");
   CHECK(name_of(NewmarkPositionVelocity::predicted) == "predicted");
   CHECK(name_of(LmeOptions::BetaRule::mean_neighbour_distance) == "mean_neighbour_distance");
+  CHECK(name_of(LmeOptions::BetaRule::authors) == "authors");
   CHECK(name_of(BodyShape::Kind::file) == "file");
   CHECK(FixedSettings{WallFace::ymax, {}}.axis() == 1);
   CHECK(FixedSettings{WallFace::ymax, {}}.upper());

@@ -53,10 +53,12 @@ struct LmeOptions {
   double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (paper/04_shape_functions.md)
   int max_iterations = 100;         ///< Newton updates of lambda per evaluation before ShapeFailure
   /// grid_spacing: beta = gamma / h^2 (the paper, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
-  /// hbar the mean distance from x to its current neighbours (the authors' LME_Beta, paper/09_choices.md). The
-  /// neighbours are those within R = h sqrt(-ln(support_tolerance) / gamma) under both rules (with hbar in
-  /// R the radius would feed on itself: hbar ~ 2R/3 in 2D makes R grow unless the patch is capped).
-  enum class BetaRule { grid_spacing, mean_neighbour_distance } beta_rule = BetaRule::grid_spacing;
+  /// hbar the mean distance from x to its current neighbours (the formula of the authors' LME_Beta on this
+  /// project's neighbours, paper/09_choices.md). authors: the same formula on the authors' node patch
+  /// (authors_beta_in_cell_units). The neighbours are those within R = h sqrt(-ln(support_tolerance) / gamma)
+  /// under every rule (with hbar in R the radius would feed on itself: hbar ~ 2R/3 in 2D makes R grow unless
+  /// the patch is capped).
+  enum class BetaRule { grid_spacing, mean_neighbour_distance, authors } beta_rule = BetaRule::grid_spacing;
 };
 
 // ---- Eqs. (34)-(41) --------------------------------------------------------------------------
@@ -342,6 +344,40 @@ inline LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offse
   return at;
 }
 
+/// The authors' beta of the prior of Eq. (36), in cell units (NL-PartSol, commit 1d5da04: src/ShapeFun/LME.c,
+/// LME_Beta and LME_Tributary_Nodes; src/MPM/Mesh_Tools.c calls them at each step, src/ShapeFun/Operators.c at
+/// each evaluation):
+/// \f[ \beta = \frac{\gamma}{\bar h^2}, \qquad \bar h = \frac{1}{|P|} \sum_{I \in P} |x - x_I| , \f]
+/// P the nodes of the cell that holds x and of the cells that share a node with it, on the grid (fewer at its
+/// edges). In 1D the distances are those on the authors' one-cell-high strip, each node counted at y = +-h/2 (twice,
+/// which leaves the mean as it is): \f$ |x - x_I| = \sqrt{(x - x_I)^2 + h^2/4} \f$. The authors' patch also drops
+/// the nodes beyond \f$ \sqrt{-\ln 10^{-5} / \beta} \f$ of the last evaluation; on the strip that drops none
+/// (\f$ \beta h^2 \le 3.01 \f$ gives at least 1.96 h, the farthest node is at 1.58 h), in 2D it can drop the
+/// corners of the 4 x 4 block at a first evaluation, which this rule keeps.
+template <int Dim>
+double authors_beta_in_cell_units(const Grid<Dim>& grid, const Vector<Dim>& x, double gamma) {
+  static_assert(Dim == 1 || Dim == 2, "the authors' patch is defined in 1D (their strip) and 2D");
+  const auto cell = grid.cell_of(x);
+  std::array<int, 2> first{0, 0}, last{0, 0};  // node lattice range of the patch, per axis
+  Vector<Dim> local = (x - grid.origin()) / grid.spacing();
+  for (int axis = 0; axis < Dim; ++axis) {
+    first[axis] = std::max(cell[axis] - 1, 0);
+    last[axis] = std::min(cell[axis] + 1, grid.cells(axis) - 1) + 1;
+  }
+  const double strip = Dim == 1 ? 0.25 : 0.0;  // (y - y_I)^2 / h^2 on the authors' strip
+  double sum = 0.0;
+  int count = 0;
+  for (int j = first[1]; j <= last[1]; ++j)
+    for (int i = first[0]; i <= last[0]; ++i) {
+      double squared = (local[0] - i) * (local[0] - i) + strip;
+      if (Dim == 2) squared += (local[Dim - 1] - j) * (local[Dim - 1] - j);
+      sum += std::sqrt(squared);
+      ++count;
+    }
+  const double mean = sum / count;
+  return gamma / (mean * mean);
+}
+
 // ---- The shape function ----------------------------------------------------------------------
 
 template <int Dim>
@@ -416,7 +452,7 @@ class LmeShape {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
     Vector<Dim>* offsets = gradients;  // the offsets (x - x_I)/h live where the gradients will go
     const int count = lme_neighbours(grid_, radius_squared_, capacity_, particle, x, nodes, offsets);
-    const double beta = beta_in_cell_units(count, offsets);
+    const double beta = beta_in_cell_units(x, count, offsets);
     const Vector<Dim> moved = (x - evaluated_at_[particle]) * inverse_spacing_;  // cells, since the last evaluation
     const Vector<Dim> start = predicted_multiplier(particle, moved);
     const LmePartition start_partition = start_weights(particle, moved, count, nodes, offsets, beta, start, values);
@@ -492,11 +528,13 @@ class LmeShape {
     std::copy(values, values + count, &last_values_[first]);
   }
 
-  /// beta h^2: gamma, or gamma (h / hbar)^2 under the authors' rule. Under that rule beta varies
-  /// with x and Eq. (41), which takes beta constant, is not the exact gradient; the authors' code
-  /// makes the same approximation.
-  double beta_in_cell_units(int count, const Vector<Dim>* offsets) const {
+  /// beta h^2: gamma, or gamma (h / hbar)^2 under the authors' formula (on this project's neighbours or on the
+  /// authors' patch). Then beta varies with x and Eq. (41), which takes beta constant, is not the exact gradient;
+  /// the authors' code makes the same approximation.
+  double beta_in_cell_units(const Vector<Dim>& x, int count, const Vector<Dim>* offsets) const {
     if (options_.beta_rule == LmeOptions::BetaRule::grid_spacing) return options_.gamma;
+    if (options_.beta_rule == LmeOptions::BetaRule::authors)
+      return authors_beta_in_cell_units(grid_, x, options_.gamma);
     double mean = 0.0;
     for (int I = 0; I < count; ++I) mean += offsets[I].norm();
     mean /= count;
@@ -952,6 +990,49 @@ TEST_CASE("LME options: the hull condition on gamma and the support tolerance, a
   authors2.initialise(1);
   for (const Vector<2>& x : {Vector<2>(0.0, 3.3), Vector<2>(4.5, 4.5), Vector<2>(4.2, 7.9), Vector<2>(9.9, 9.95)})
     testing::check_shape_properties(authors2, plane, 0, x, tolerance);
+}
+
+TEST_CASE("The authors' beta: gamma / hbar^2 on their strip in 1D and on the 4 x 4 node patch in 2D, by hand") {
+  const Grid<1> line(Vector<1>(0.0), 1.0, {10});
+  // At a cell centre the strip's nodes are at sqrt(0.5^2 + 0.5^2) and sqrt(1.5^2 + 0.5^2), twice each:
+  // hbar = (sqrt(2) + sqrt(10)) / 4, so beta h^2 = 48 / (sqrt(2) + sqrt(10))^2 = 3 (3 - sqrt(5)) = 2.292 at gamma 3.
+  CHECK(authors_beta_in_cell_units(line, Vector<1>(4.5), 3.0) == doctest::Approx(3.0 * (3.0 - std::sqrt(5.0))));
+  // At h/4 from the centre, either side: distances sqrt(d^2 + 1/4) for d = 0.25, 0.75, 1.25, 1.75: 2.242.
+  const double quarter = (std::sqrt(0.3125) + std::sqrt(0.8125) + std::sqrt(1.8125) + std::sqrt(3.3125)) / 4.0;
+  CHECK(authors_beta_in_cell_units(line, Vector<1>(4.75), 3.0) == doctest::Approx(3.0 / (quarter * quarter)));
+  CHECK(authors_beta_in_cell_units(line, Vector<1>(4.25), 3.0) == doctest::Approx(3.0 / (quarter * quarter)));
+  // In the end cells no cell lies beyond: three nodes, hbar = (sqrt(2) + sqrt(10) / 2) / 3, beta h^2 = 3.009.
+  const double end = (std::sqrt(2.0) + std::sqrt(10.0) / 2.0) / 3.0;
+  CHECK(authors_beta_in_cell_units(line, Vector<1>(0.5), 3.0) == doctest::Approx(3.0 / (end * end)));
+  CHECK(authors_beta_in_cell_units(line, Vector<1>(9.5), 3.0) == doctest::Approx(3.0 / (end * end)));
+  CHECK(authors_beta_in_cell_units(line, Vector<1>(4.5), 1.5) == doctest::Approx(1.5 * (3.0 - std::sqrt(5.0))));
+  // 2D, a cell centre: 4 nodes at sqrt(2)/2, 8 at sqrt(10)/2, 4 at 3 sqrt(2)/2 (beta h^2 = 1.337 at gamma 3).
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {10, 10});
+  const double centre = (4.0 * std::sqrt(0.5) + 8.0 * std::sqrt(2.5) + 4.0 * std::sqrt(4.5)) / 16.0;
+  CHECK(authors_beta_in_cell_units(plane, Vector<2>(4.5, 6.5), 3.0) == doctest::Approx(3.0 / (centre * centre)));
+  const double corner = (std::sqrt(0.5) * 4.0 + std::sqrt(2.5) * 4.0 + std::sqrt(4.5)) / 9.0;  // 3 x 3 nodes
+  CHECK(authors_beta_in_cell_units(plane, Vector<2>(0.5, 0.5), 3.0) == doctest::Approx(3.0 / (corner * corner)));
+  // The shape under the rule is the standard LME at gamma = beta h^2 there (the same four neighbours).
+  LmeOptions options;
+  options.newton_tolerance = 1e-13;
+  options.beta_rule = LmeOptions::BetaRule::authors;
+  LmeShape<1> authors(line, options);
+  options.beta_rule = LmeOptions::BetaRule::grid_spacing;
+  options.gamma = 3.0 * (3.0 - std::sqrt(5.0));
+  LmeShape<1> standard(line, options);
+  authors.initialise(1);
+  standard.initialise(1);
+  int nodes[64];
+  double values[64], reference[64];
+  Vector<1> gradients[64];
+  REQUIRE(standard.evaluate(0, Vector<1>(4.5), nodes, reference, gradients) == 4);
+  REQUIRE(authors.evaluate(0, Vector<1>(4.5), nodes, values, gradients) == 4);
+  for (int k = 0; k < 4; ++k) CHECK(values[k] == doctest::Approx(reference[k]).epsilon(1e-13));
+  // By symmetry lambda = 0 there: the two far nodes (1.5 h away) carry 1 / (1 + e^{2 beta h^2}) together,
+  // 0.0101 against 0.0025 at beta h^2 = 3.
+  double far = 0.0;
+  for (int k = 0; k < 4; ++k) far += std::abs(4.5 - nodes[k]) > 1.0 ? values[k] : 0.0;
+  CHECK(far == doctest::Approx(1.0 / (1.0 + std::exp(6.0 * (3.0 - std::sqrt(5.0))))));
 }
 
 TEST_CASE("Eq. (34): N maximises the entropy less beta U among the partitions of unity that reproduce x") {
