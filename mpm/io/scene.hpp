@@ -568,13 +568,13 @@ TEST_CASE("Scene validation: solver.dt, a fixed step, or solver.cfl, one of them
   CHECK(initial_cfl(read(bar + "dt = 0.01\n")) == doctest::Approx(0.2).epsilon(1e-14));
   CHECK(initial_cfl(read(bar + "cfl = 0.3\n")) == 0.3);
   CHECK(read(bar + "dt = 0.5\n").control.fixed_dt == 0.5);  // CFL 10: allowed, as solver.cfl = 10 is
-  CHECK(message_of(bar + "dt = 0.51\n") == "error: d.toml:10: solver.dt: 0.51 s is CFL 10.2 at t = 0 (dt c / h): far "
+  CHECK(message_of(bar + "dt = 0.51\n") == "error: d.toml:12: solver.dt: 0.51 s is CFL 10.2 at t = 0 (dt c / h): far "
                                             "beyond any explicit scheme's stability limit; give at most 0.5 s");
-  CHECK(message_of(bar + "dt = 0.0\n") == "error: d.toml:10: solver.dt: must be > 0, got 0.000000");
-  CHECK(message_of(bar + "dt = \"1e-3\"\n") == "error: d.toml:10: solver.dt: must be a number");
+  CHECK(message_of(bar + "dt = 0.0\n") == "error: d.toml:12: solver.dt: must be > 0, got 0.000000");
+  CHECK(message_of(bar + "dt = \"1e-3\"\n") == "error: d.toml:12: solver.dt: must be a number");
   CHECK(message_of(bar + "dt = inf\n").find("solver.dt: must be a finite number") != std::string::npos);
   CHECK(message_of(bar + "cfl = 0.5\ndt = 0.01\n") ==
-        "error: d.toml:11: solver.dt: the scene gives solver.cfl too (d.toml:10): give one of them (dt fixes the step; "
+        "error: d.toml:13: solver.dt: the scene gives solver.cfl too (d.toml:12): give one of them (dt fixes the step; "
         "cfl sets it by Eq. (42))");
   CHECK(read(bar + "cfl = 0.5\n", {"solver.dt=0.01"}).control.fixed_dt == 0.01);  // --set dt replaces the file's cfl
   CHECK(read(bar + "dt = 0.01\n", {"solver.cfl=0.5"}).control.fixed_dt == 0.0);   // --set cfl replaces the file's dt
