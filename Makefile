@@ -2,7 +2,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: deps configure build test figures bench docs clean sanitize mutants
+.PHONY: deps configure build test figures studies bench docs clean sanitize mutants
 
 deps:
 	@bash .ci/install-deps.sh
@@ -38,6 +38,12 @@ sanitize: deps
 figures: configure
 	@cmake --build $(BUILD_DIR) --target figure_programs -j $(JOBS)
 	@bash verification/make_figures.sh $(BUILD_DIR)
+
+# Every study beyond the paper's figures (verification/make_studies.sh: studies/*.toml, each compared with what it
+# is checked against, e.g. another code's published values), into results/studies/; only the CLI is built.
+studies: configure
+	@cmake --build $(BUILD_DIR) --target mpm_cli -j $(JOBS)
+	@bash verification/make_studies.sh $(BUILD_DIR)
 
 # Mutation testing (tests/mutants/run.py): each mutant of tests/mutants/mutants.tsv applied to a copy of
 # the tree in $(BUILD_DIR)/mutants/, rebuilt and tested; fates in results/mutants/. At most 2 copies

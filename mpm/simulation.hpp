@@ -4,7 +4,7 @@
 /// A Simulation owns the model, the particles, the shape function and the integrator, all chosen
 /// once per run as template arguments. run() advances from t = 0 to the end time:
 ///
-///   1. dt by the Courant condition, Eq. (42), shortened to land on the next output time;
+///   1. dt by the Courant condition, Eq. (42), or fixed (solver.dt), shortened to land on the next output time;
 ///   2. the stencils N_Ip, grad N_Ip at x_p^k, computed once and reused by every transfer;
 ///   3. one step of the integrator (forward Euler, paper/02_mpm_forward_euler.md, or the predictor-corrector, paper/03_predictor_corrector.md);
 ///   4. one pass over the particles (ParticleSurvey): the balances, the speeds of the next dt, and the
@@ -41,6 +41,7 @@ enum class BodyForceTime { step_end, step_start };
 
 struct RunControl {
   double cfl = 0.5;
+  double fixed_dt = 0.0;  ///< solver.dt: every step this long (s), cfl unused; 0: the Courant step of Eq. (42)
   CourantSpeed courant = CourantSpeed::maximum;
   double end_time = 0.0;
   std::vector<double> snapshot_times;  ///< times at which every particle is written
@@ -112,13 +113,18 @@ class Simulation {
     PhaseTimers& timers = timers_;
     timers.restart();
 
+    const bool fixed = control_.fixed_dt > 0.0;
+    double anchor = 0.0;  // a fixed step's clock: anchor + n dt, n steps since the last landing, never a drifting sum
+    long since_anchor = 0;
     while (time < control_.end_time) {
-      // 1. Time step, Eq. (42), landing exactly on output times and on the end time.
-      double dt = courant_time_step(survey.fastest_speed(), survey.wave_speed(),
-                                    model_.grid.spacing(), control_.cfl, control_.courant);
+      // 1. Time step, Eq. (42) or fixed, landing exactly on output times and on the end time (a fixed step within
+      //    1e-9 dt of the target keeps its length).
+      double dt = fixed ? control_.fixed_dt
+                        : courant_time_step(survey.fastest_speed(), survey.wave_speed(), model_.grid.spacing(),
+                                            control_.cfl, control_.courant);
       const double target = next_stop(time, next_snapshot, next_sample);
       const bool lands = time + dt * (1.0 + 1e-9) >= target;
-      if (lands) dt = target - time;
+      if (lands && !(fixed && std::abs(target - time - dt) <= 1e-9 * dt)) dt = target - time;
       // 2. Stencils at the current positions x_p^k.
       locate_particles(step, time);
       timers.lap(Phase::stencils);
@@ -127,7 +133,8 @@ class Simulation {
       model_.body_force.evaluate(body_force_time, particles_, body_force_);  // b_p of Eq. (15), at x_p^k
       timers.lap(Phase::forces);
       integrator_.step(model_, stencils_, body_force_, dt, particles_, grid_fields_, timers);
-      time = lands ? target : time + dt;
+      time = lands ? target : fixed ? anchor + static_cast<double>(++since_anchor) * dt : time + dt;
+      if (lands) anchor = target, since_anchor = 0;
       ++step;
       summary.steps = step;
       summary.final_time = time;

@@ -21,7 +21,7 @@ namespace mpm {
 /// subdivision, c = 1 m/s (E = rho = 1), h = 1 m, and the method of the scene options.
 struct StabilityBody {
   int dimension = 1;
-  int cells = 0;  ///< per axis; 0: 64 / ppc (at least 16) in 1D, 8 / ppc (at least 4) in 2D
+  int cells = 0;  ///< per axis; 0: 64 / ppc (at least 16) in 1D; in 2D 8 / ppc (at least 4), 3 at 3 ppc, 2 from 4
   int ppc = 1;
   double poisson_ratio = 0.0;
   std::vector<std::string> method;  ///< solver settings as scene overrides (`solver.shape="lme"`, ...)
@@ -29,7 +29,8 @@ struct StabilityBody {
 
 inline int stability_cells(const StabilityBody& body) {
   if (body.cells > 0) return body.cells;
-  return body.dimension == 1 ? std::max(16, 64 / body.ppc) : std::max(4, 8 / body.ppc);
+  if (body.dimension == 1) return std::max(16, 64 / body.ppc);
+  return body.ppc <= 2 ? 8 / body.ppc : body.ppc == 3 ? 3 : 2;  // at most 1000 unknowns up to 5 ppc (700)
 }
 
 /// The unknowns of the body's linearised step (its matrix is dense: the cost grows as their cube).
@@ -214,11 +215,13 @@ inline double body_cfl_limit(const io::Scene& uniform) {
 inline double scene_cfl_limit(const io::Scene& scene) { return body_cfl_limit(warning_body(scene)); }
 
 /// `mpm run`'s warning limit at the cost of one spectral radius when the scene's CFL is stable: NaN (no warning) when the
-/// step at the scene's CFL is stable on warning_body(), scene_cfl_limit() otherwise. A 2D scene's limit takes about ten
+/// step at the scene's CFL (a fixed step's at t = 0) is stable on warning_body(), scene_cfl_limit() otherwise. A 2D
+/// scene's limit takes about ten
 /// eigenvalue problems (0.3 s); a run that needs no warning pays for one.
 inline double scene_cfl_limit_if_exceeded(const io::Scene& scene) {
   const io::Scene uniform = warning_body(scene);
-  const bool stable = scene.dimension == 1 ? stable_at<1>(uniform, scene.control.cfl) : stable_at<2>(uniform, scene.control.cfl);
+  const double cfl = io::initial_cfl(scene);  // solver.cfl, or a fixed step's CFL at t = 0
+  const bool stable = scene.dimension == 1 ? stable_at<1>(uniform, cfl) : stable_at<2>(uniform, cfl);
   return stable ? std::numeric_limits<double>::quiet_NaN() : body_cfl_limit(uniform);
 }
 

@@ -154,7 +154,7 @@ bad "^error: --at: '0.5,' is not" shape --dim 1 --kind linear --at 0.5,
 # mpm stability: every option validated before anything is computed, the option named
 bad "^error: --newmark-gamma: must be a number in \[0, 1\], got '1.5'" stability --integrator npc --newmark-gamma 1.5
 bad "^error: --shape: must be one of linear \| ugimp \| lme \| bspline2 \| bspline3, got 'cubic'" stability --shape cubic
-bad "^error: --ppc: must be a whole number from 1 to 4, got '2.5'" stability --ppc 2.5
+bad "^error: --ppc: must be a whole number from 1 to 5, got '2.5'" stability --ppc 2.5
 bad "^error: --cells: the body would have 1008 unknowns, more than 1000" stability --dim 2 --cells 12
 bad "^error: --flip-fraction: must be a number in \[0, 1\], got 'nan'" stability --flip-fraction nan
 bad "^error: --lme-gamma: too large for lme_tol" stability --shape lme --lme-gamma 50

@@ -119,3 +119,28 @@ TEST_CASE("output.times: the run lands on each sample time, samples there only, 
     CHECK(summary.steps > 2000);  // 2000 steps of 0.5 ms without the samples: 0.12345678 s is off that grid
   }
 }
+
+TEST_CASE("solver.dt: every step is dt, the clock n dt from the last landing, a landing off the grid shortens a step") {
+  // dt = 0.25 ms instead of the Courant step's 0.5 ms (--set solver.dt replaces the file's cfl): 4000 steps of
+  // exactly dt, sampled at t = n dt to the bit. With a sample time off the grid, 0.1001 s, the step that lands
+  // there is 0.1 ms and the clock restarts from it: 400 + 1 + 3599 steps, the last 0.15 ms long.
+  const double dt = 2.5e-4;
+  const auto scene = mpm::testing::scene_from_text(falling_particle, {"solver.dt=2.5e-4"});
+  mpm::testing::Recorder<2> recorder(0);
+  const auto summary = mpm::run_setup<2>(scene, mpm::build_setup<2>(scene), recorder);
+  CHECK(summary.steps == 4000);
+  CHECK(summary.smallest_time_step == dt);
+  CHECK(summary.largest_time_step == dt);
+  REQUIRE(recorder.time.size() == 4001);
+  for (size_t n = 1; n < 4000; ++n) REQUIRE(recorder.time[n] == static_cast<double>(n) * dt);
+  CHECK(recorder.time.back() == 1.0);
+  CHECK((recorder.velocity.back() - mpm::Vector<2>(0.5, 2.0 - 9.81)).norm() <= 1e-11);  // forward Euler: v0 + g t
+  const auto landing =
+      mpm::testing::scene_from_text(falling_particle, {"solver.dt=2.5e-4", "output.times=[0.1001, 1.0]"});
+  mpm::testing::Recorder<2> landed(0);
+  const auto summary_landed = mpm::run_setup<2>(landing, mpm::build_setup<2>(landing), landed);
+  CHECK(summary_landed.steps == 4001);
+  CHECK(summary_landed.smallest_time_step == doctest::Approx(1e-4).epsilon(1e-9));
+  CHECK(summary_landed.largest_time_step == doctest::Approx(dt).epsilon(1e-12));
+  CHECK(landed.time == std::vector<double>{0.1001, 1.0});
+}

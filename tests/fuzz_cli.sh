@@ -135,6 +135,7 @@ for ((number = 0; number < cases; ++number)); do
     mapfile -t entries < <(keys_of "$scene")
     # short runs: the mutations below come later and win
     if [[ $scene == *dyka* ]]; then short=(--set solver.end_time=1e-5 --set 'output.snapshots=[0.0, 1e-5]')
+    elif grep -q '^dt *=' "$scene"; then short=(--set solver.end_time=1e-3 --set 'output.snapshots=[0.0, 1e-3]')  # a fixed step
     else short=(--set solver.end_time=0.1 --set 'output.snapshots=[0.0, 0.1]'); fi
     arguments=(run "$scene_copy" --out "$out" "${budget[@]}" "${short[@]}")
     gentle=$((RANDOM % 3 == 0))  # a third of the cases: only plausible changes, so that many run
@@ -227,7 +228,9 @@ for scene in "${scenes[@]}"; do
   for kib in 2 8 32 128; do
     out=$work/limited
     rm -rf "$out"
-    if [[ $scene == *dyka* ]]; then short=(--set solver.end_time=1e-5); else short=(--set solver.end_time=0.1); fi
+    if [[ $scene == *dyka* ]]; then short=(--set solver.end_time=1e-5)
+    elif grep -q '^dt *=' "$scene"; then short=(--set solver.end_time=1e-3)  # a fixed step: 100 of them
+    else short=(--set solver.end_time=0.1); fi
     for arguments in "run $scene --out $out ${short[*]} --set output.snapshots=[0.0]" "plot $out"; do
       truncated_cases=$((truncated_cases + 1))
       # shellcheck disable=SC2086

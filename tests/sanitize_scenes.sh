@@ -16,6 +16,10 @@ for scene in "$root"/scenes/*.toml; do
   # a few steps of each: 3 of the Dyka bar, 3 of the soil block
   if grep -q '^dimension = 1' "$scene"; then few=(--set solver.end_time=1e-6 --set 'output.snapshots=[0.0, 1e-6]' --set grid.margin_max=[1])
   else few=(--set solver.end_time=0.02 --set 'output.snapshots=[0.0, 0.02]' --set grid.margin_min=[1,1] --set grid.margin_max=[1,0]); fi
+  # a scene with a fixed step (solver.dt): 3 of its steps
+  dt=$(awk -F= '/^dt[[:space:]]*=/ { gsub(/[[:space:]]|#.*/, "", $2); print $2; exit }' "$scene")
+  [[ -n "$dt" ]] &&
+    few+=(--set "solver.end_time=$(awk -v dt="$dt" 'BEGIN { printf "%.6g", 3 * dt }')" --set 'output.snapshots=[0.0]')
   for shape in linear ugimp lme bspline2 bspline3; do
     for integrator in fe npc usl musl; do
       method=(--set "solver.shape=\"$shape\"" --set "solver.integrator=\"${integrator/*sl/fe}\"")

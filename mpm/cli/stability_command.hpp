@@ -44,7 +44,10 @@ TEST_CASE("mpm stability: a scene key of its body is named by the option that se
 /// The scene of `body` with the method of `request`, checked as the options cannot be alone (at most 1000 unknowns,
 /// an LME support within 100 cells, as `mpm shape`'s). \throws Refused naming the option.
 inline io::Scene stability_request_scene(const StabilityRequest& request, StabilityBody& body) {
-  if (body.cells != 0 && body.cells < 4) throw Refused("--cells: must be 0 (the default) or from 4 to 256");
+  const int fewest = body.dimension == 1 ? 4 : 2;  // a 2D body of 2 x 2 cells holds 5 x 5 particles per cell
+  if (body.cells != 0 && body.cells < fewest)
+    throw Refused("--cells: must be 0 (the default) or from " + std::to_string(fewest) + " to 256 in " +
+                  std::to_string(body.dimension) + "D");
   if (request.integrator == "npc" && request.stress_update != "usf")
     throw Refused(
         "--stress-update: usl and musl are forward Euler's (the predictor-corrector updates stress first): "
@@ -100,12 +103,13 @@ inline int stability_command(const std::vector<std::string>& arguments, std::ost
       ->check(number_in(0.0, 1.0));
   app.add_option("--stress-update", request.stress_update, "forward Euler's stress update")
       ->check(one_of({"usf", "usl", "musl"}));
-  app.add_option("--ppc", body.ppc, "particles per cell and axis")->check(whole_in(1, 4));
+  app.add_option("--ppc", body.ppc, "particles per cell and axis")->check(whole_in(1, 5));
   app.add_option("--lme-gamma", request.lme_gamma, "LME locality gamma")->check(positive());
   app.add_option("--dim", body.dimension, "dimension")->check(whole_in(1, 2));
   app.add_option("--poisson-ratio", body.poisson_ratio, "plane strain")->check(number_in(0.0, 0.5, true));
   app.add_option("--cells", body.cells,
-                 "cells per axis, at most 1000 unknowns in all (0: max(16, 64 / ppc) in 1D, max(4, 8 / ppc) in 2D)")
+                 "cells per axis, at most 1000 unknowns in all (0: max(16, 64 / ppc) in 1D; in 2D 8 / ppc,\n"
+                 "3 at 3 ppc, 2 from 4 ppc)")
       ->check(whole_in(0, 256));
   return run_parsed(app, arguments, out, err, [&] {
     const io::Scene scene = stability_request_scene(request, body);
@@ -149,6 +153,8 @@ TEST_CASE("mpm stability: linear shapes at 1 ppc, 2 for forward Euler and 2/sqrt
   CHECK(stability_command({"--shape", "cubic"}, out, err) == 2);
   CHECK(stability_command({"--lme-gamma", "50", "--shape", "lme"}, out, err) == 2);
   CHECK(stability_command({"--dim", "2", "--cells", "12"}, out, err) == 2);  // 1008 unknowns
+  CHECK(stability_command({"--ppc", "6"}, out, err) == 2);
+  CHECK(stability_command({"--cells", "3"}, out, err) == 2);  // 1D: from 4 cells
   CHECK(out.str().empty());
   for (const char* gamma :
        {"1e-3", "1e-12", "1e-18"}) {  // beyond 100 cells: refused at once, never out of memory or Newton
@@ -168,6 +174,28 @@ TEST_CASE("mpm stability: linear shapes at 1 ppc, 2 for forward Euler and 2/sqrt
   CHECK(stability_scene(nearly_incompressible).bodies[0].material.poisson_ratio == 0.4999999);
   std::ostringstream fine;
   CHECK(stability_command({"--poisson-ratio", "0.4999999", "--dim", "2"}, fine, err) == 0);
+}
+
+TEST_CASE("mpm stability --dim 2: 3 to 5 particles per cell per axis on 3 x 3 or 2 x 2 cells, within 1000 unknowns") {
+  auto row_of = [](const std::vector<std::string>& arguments) {
+    std::ostringstream out, err;
+    REQUIRE(stability_command(arguments, out, err) == 0);
+    std::istringstream fields(out.str().substr(out.str().find('\n') + 1));
+    std::vector<std::string> row;
+    for (std::string field; std::getline(fields, field, ',');) row.push_back(field);
+    return row;  // dim, ..., ppc (7), poisson_ratio, cells (9), unknowns (10), highest_mode, cfl_limit (12), ...
+  };
+  const auto five = row_of({"--dim", "2", "--ppc", "5"});
+  CHECK(five.at(7) == "5");
+  CHECK(five.at(9) == "2");
+  CHECK(five.at(10) == "700");  // (2 x 5)^2 particles, 7 unknowns each
+  // forward Euler's one-mode limit, 2 over the body's highest mode: the bisection on the spectral radius agrees
+  CHECK(std::stod(five.at(12)) == doctest::Approx(2.0 / std::stod(five.at(11))).epsilon(1e-3));
+  CHECK(row_of({"--dim", "2", "--ppc", "3"}).at(10) == "567");   // 3 x 3 cells
+  CHECK(row_of({"--dim", "2", "--ppc", "2"}).at(10) == "448");   // 4 x 4 cells, as before
+  std::ostringstream out, err;
+  CHECK(stability_command({"--dim", "2", "--ppc", "5", "--cells", "3"}, out, err) == 2);  // 1575 unknowns
+  CHECK(err.str().find("--cells: the body would have 1575 unknowns") != std::string::npos);
 }
 
 TEST_CASE("scene_cfl_limit: mpm run's warning limit for a scene, 1D and 2D, looked for only above a stable CFL") {

@@ -258,6 +258,27 @@ inline void check_solver(const SceneFile& file, const Scene& scene) {
                              " m; uGIMP needs 0 < l_p <= h: give smaller particles, a coarser grid, or another shape");
 }
 
+/// solver.dt or solver.cfl: a scene gives one; `--set` of one replaces the other given in the file. A fixed step
+/// above CFL 10 at t = 0 is refused, as solver.cfl is: far beyond any explicit scheme's stability limit.
+inline void choose_time_step(const SceneFile& file, Scene& scene) {
+  const bool dt = static_cast<bool>(file.table["solver"]["dt"]), cfl = static_cast<bool>(file.table["solver"]["cfl"]);
+  if (dt && cfl) {
+    const bool dt_set = file.overridden.count("solver.dt"), cfl_set = file.overridden.count("solver.cfl");
+    const auto& [where, line] = scene.locations.at("solver.cfl");
+    if (dt_set == cfl_set)
+      throw scene_error(scene, "solver.dt",
+                        "the scene gives solver.cfl too (" + where + ":" + std::to_string(line) +
+                            "): give one of them (dt fixes the step; cfl sets it by Eq. (42))");
+    if (cfl_set) scene.control.fixed_dt = 0.0;  // --set solver.cfl over the file's dt
+  }
+  const double first_cfl = initial_cfl(scene);
+  if (scene.control.fixed_dt > 0.0 && !(first_cfl <= 10.0))
+    throw scene_error(scene, "solver.dt",
+                      SceneReader::describe(scene.control.fixed_dt) + " s is CFL " + SceneReader::describe(first_cfl) +
+                          " at t = 0 (dt c / h): far beyond any explicit scheme's stability limit; give at most " +
+                          SceneReader::describe(10.0 * scene.spacing / initial_courant_speed(scene)) + " s");
+}
+
 /// The box an exact solution holds for: [origin, origin + length], the soil column's as high as its bodies.
 inline std::vector<double> exact_length(const Scene& scene) {
   std::vector<double> length = scene.length;
@@ -433,6 +454,7 @@ inline Scene read_scene(const SceneFile& file) {
   read_tables(file, root, "fixed", scene, scene.fixed, FixedSettings{}, check_fixed);
   read_table(file, root, "gravity", scene);
   read_table(file, root, "solver", scene);
+  choose_time_step(file, scene);
   check_solver(file, scene);
   read_tables(file, root, "observer", scene, scene.observers, ObserverSettings{},
               [&](size_t k) { check_observer(scene, k); });
@@ -522,6 +544,42 @@ TEST_CASE("Scene validation: integers of any size, a missing table at its requir
   CHECK(message_of(square + "vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]\n[solver]\nend_time = 1.0\n") == "no error");
   CHECK(detail::crossing_edges({{0.0, 0.0}, {2.0, 0.0}, {2.0, 2.0}, {1.0, 0.0}, {0.0, 2.0}})[0] >= 0);  // a vertex on an edge
   CHECK(detail::crossing_edges({{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.5, 0.2}, {0.0, 1.0}})[0] == -1);  // concave, simple
+}
+
+TEST_CASE("Scene validation: solver.dt, a fixed step, or solver.cfl, one of them, and never beyond CFL 10") {
+  // c = sqrt(E / rho) = 2 m/s, h = 0.1 m: dt = 0.5 s is CFL 10
+  const std::string bar = "[grid]\nlength = [1.0]\ncells = [10]\n[material]\nyoung_modulus = 4.0\ndensity = 1.0\n"
+                          "[[body]]\nmin = [0.0]\nmax = [1.0]\n[solver]\nend_time = 1.0\n";
+  auto read = [&](const std::string& text, const std::vector<std::string>& overrides = {}) {
+    SceneFile file = parse_scene_text(text, "d.toml");
+    for (size_t k = 0; k < overrides.size(); ++k) apply_override(file, overrides[k], static_cast<int>(k) + 1);
+    return read_scene(file);
+  };
+  auto message_of = [&](const std::string& text, const std::vector<std::string>& overrides = {}) -> std::string {
+    try {
+      read(text, overrides);
+    } catch (const SceneError& error) {
+      return error.message();
+    }
+    return "no error";
+  };
+  CHECK(read(bar).control.fixed_dt == 0.0);
+  CHECK(read(bar + "dt = 0.01\n").control.fixed_dt == 0.01);
+  CHECK(initial_cfl(read(bar + "dt = 0.01\n")) == doctest::Approx(0.2).epsilon(1e-14));
+  CHECK(initial_cfl(read(bar + "cfl = 0.3\n")) == 0.3);
+  CHECK(read(bar + "dt = 0.5\n").control.fixed_dt == 0.5);  // CFL 10: allowed, as solver.cfl = 10 is
+  CHECK(message_of(bar + "dt = 0.51\n") == "error: d.toml:12: solver.dt: 0.51 s is CFL 10.2 at t = 0 (dt c / h): far "
+                                            "beyond any explicit scheme's stability limit; give at most 0.5 s");
+  CHECK(message_of(bar + "dt = 0.0\n") == "error: d.toml:12: solver.dt: must be > 0, got 0.000000");
+  CHECK(message_of(bar + "dt = \"1e-3\"\n") == "error: d.toml:12: solver.dt: must be a number");
+  CHECK(message_of(bar + "dt = inf\n").find("solver.dt: must be a finite number") != std::string::npos);
+  CHECK(message_of(bar + "cfl = 0.5\ndt = 0.01\n") ==
+        "error: d.toml:13: solver.dt: the scene gives solver.cfl too (d.toml:12): give one of them (dt fixes the step; "
+        "cfl sets it by Eq. (42))");
+  CHECK(read(bar + "cfl = 0.5\n", {"solver.dt=0.01"}).control.fixed_dt == 0.01);  // --set dt replaces the file's cfl
+  CHECK(read(bar + "dt = 0.01\n", {"solver.cfl=0.5"}).control.fixed_dt == 0.0);   // --set cfl replaces the file's dt
+  CHECK(message_of(bar, {"solver.cfl=0.5", "solver.dt=0.01"}).rfind("error: --set(2):1: solver.dt: the scene gives", 0) ==
+        0);
 }
 
 }  // namespace mpm::io

@@ -105,20 +105,11 @@ TEST_CASE("Scene budget: the CFL check's body has 16 x ppc particles in 1D, at m
   CHECK(warning_body_particles(scene) == 36.0);
 }
 
-/// The time step of Eq. (42) at t = 0: cfl h over the fastest material's wave speed and the fastest particle's speed.
+/// The time step at t = 0: solver.dt, or Eq. (42)'s cfl h over the fastest material's wave speed and the fastest
+/// particle's speed.
 inline double initial_time_step(const Scene& scene) {
-  auto norm = [](const std::vector<double>& v) {
-    return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0));
-  };
-  double fastest = 0.0, wave_speed = 0.0;
-  for (const auto& body : scene.bodies) {
-    fastest = std::max(fastest, norm(body.velocity));
-    for (const auto& particle : body.particles) fastest = std::max(fastest, std::hypot(particle.v_x, particle.v_y));
-    wave_speed = std::max(wave_speed, std::sqrt(body.material.young_modulus / body.material.density));
-  }
-  for (const auto& box : scene.initial_velocities) fastest = std::max(fastest, norm(box.velocity));
-  const bool maximum = scene.control.courant == CourantSpeed::maximum;
-  return scene.control.cfl * scene.spacing / (maximum ? std::max(fastest, wave_speed) : fastest + wave_speed);
+  if (scene.control.fixed_dt > 0.0) return scene.control.fixed_dt;
+  return scene.control.cfl * scene.spacing / initial_courant_speed(scene);
 }
 
 /// The estimate, an upper bound of the peak resident memory: the particles' arrays thrice (seeding doubles vectors;
@@ -223,7 +214,7 @@ inline void check_budget(const Scene& scene, const Budget& budget) {
   const bool endless = !(cost.steps <= std::pow(2.0, 50));  // t + dt == t may hold beyond: time would stop
   if (endless || (cost.steps > budget.max_steps && !budget.force)) {
     what << "end_time / dt = " << scene.control.end_time << " s / " << cost.time_step << " s = " << cost.steps
-         << " time steps (dt of Eq. (42) at t = 0: cfl h / wave or particle speed)";
+         << " time steps (dt at t = 0: solver.dt, or Eq. (42)'s cfl h / wave or particle speed)";
     if (endless)
       what << "; no run can take that many steps (time would stop advancing in double precision)";
     else

@@ -350,6 +350,10 @@ inline auto print_formulas(const std::optional<FormulaList> SceneFormulas::*memb
   };
 }
 
+/// True if solver.cfl is printed: solver.dt replaces it.
+inline bool courant_step(const Scene& scene, std::size_t) { return !(scene.control.fixed_dt > 0.0); }
+/// True if solver.dt is printed: it was given.
+inline bool fixed_step(const Scene& scene, std::size_t) { return scene.control.fixed_dt > 0.0; }
 /// True if output.every is printed: output.times replaces it.
 inline bool every_shown(const Scene& scene, std::size_t) { return scene.control.sample_times.empty(); }
 /// True if body k has a material of its own, printed with it.
@@ -436,8 +440,15 @@ inline const std::vector<SceneKey> all_keys = {
         "shape function: linear | ugimp | lme (Eqs. 34-41) | bspline2 | bspline3 (quadratic, cubic B-splines)"),
     key("solver.integrator", &Scene::integrator, "\"fe\"", "-",
         "fe (forward Euler) | npc (Newmark predictor-corrector)"),
-    key("solver.cfl", &RunControl::cfl, "0.5", "-", "Courant number of Eq. (42)",
-        {0.0, 10.0, true, false, ": far beyond any explicit scheme's stability limit"}),
+    shown_if(key("solver.cfl", &RunControl::cfl, "0.5", "-", "Courant number of Eq. (42)",
+                 {0.0, 10.0, true, false, ": far beyond any explicit scheme's stability limit"}),
+             courant_step),
+    shown_if(key("solver.dt", &RunControl::fixed_dt, optional, "s",
+                 "a fixed time step instead of Eq. (42)'s: a scene gives dt or cfl, not both (`--set` of one replaces "
+                 "the other); refused above CFL 10 at t = 0 (dt c / h), warned above the method's limit "
+                 "(`mpm stability`); steps still land on output times and end_time",
+                 positive()),
+             fixed_step),
     key("solver.courant", &RunControl::courant, "\"max\"", "-",
         "max (Eq. 42 as printed) | sum (the authors' c + |v|)"),
     key("solver.end_time", &RunControl::end_time, required, "s",

@@ -4,8 +4,11 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <utility>
@@ -160,6 +163,29 @@ inline double column_height(const Scene& scene) {
   double top = scene.origin.at(1);
   for (const BodySettings& body : scene.bodies) top = std::max(top, body.max.at(1));
   return top - scene.origin[1];
+}
+
+/// The speed of Eq. (42) at t = 0: the fastest material's wave speed sqrt(E/rho) and the fastest initial particle
+/// speed, their maximum (solver.courant = "max") or their sum ("sum").
+inline double initial_courant_speed(const Scene& scene) {
+  auto norm = [](const std::vector<double>& v) {
+    return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0));
+  };
+  double fastest = 0.0, wave_speed = 0.0;
+  for (const auto& body : scene.bodies) {
+    fastest = std::max(fastest, norm(body.velocity));
+    for (const auto& particle : body.particles) fastest = std::max(fastest, std::hypot(particle.v_x, particle.v_y));
+    wave_speed = std::max(wave_speed, std::sqrt(body.material.young_modulus / body.material.density));
+  }
+  for (const auto& box : scene.initial_velocities) fastest = std::max(fastest, norm(box.velocity));
+  return scene.control.courant == CourantSpeed::maximum ? std::max(fastest, wave_speed) : fastest + wave_speed;
+}
+
+/// The Courant number of the first step: solver.cfl, or for a fixed step (solver.dt) dt C / h with C of Eq. (42)
+/// at t = 0.
+inline double initial_cfl(const Scene& scene) {
+  if (!(scene.control.fixed_dt > 0.0)) return scene.control.cfl;
+  return scene.control.fixed_dt * initial_courant_speed(scene) / scene.spacing;
 }
 
 TEST_CASE("Scene settings: choice names follow their enums, and errors after the read are located") {

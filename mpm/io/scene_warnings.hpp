@@ -81,16 +81,21 @@ inline std::vector<std::string> scene_warnings(const Scene& scene,
   for (size_t k = 0; k < scene.initial_velocities.size(); ++k)
     if (!detail::box_holds_particle(scene, scene.initial_velocities[k]))
       warn("initial_velocity[" + std::to_string(k) + "].min", "the box holds no particle: it sets no velocity");
-  if (scene.control.cfl > cfl_limit) {  // false when the limit is NaN
-    const bool npc = scene.integrator == IntegratorKind::npc;
-    char what[400];
+  const double first_cfl = initial_cfl(scene);
+  if (first_cfl > cfl_limit) {  // false when the limit is NaN
+    const bool npc = scene.integrator == IntegratorKind::npc, fixed = scene.control.fixed_dt > 0.0;
+    char step[120] = "", what[520];
+    if (fixed)  // a fixed step: its CFL at t = 0, and the longest stable step
+      std::snprintf(step, sizeof step, " s is CFL %g at t = 0 (dt c / h), dt <= %.3g s,", first_cfl,
+                    scene.control.fixed_dt * cfl_limit / first_cfl);
     std::snprintf(
         what, sizeof what,
-        "%g is above the stability limit %.3f of %s shapes with %s%s, from the method's own linearised step "
+        "%g%s is above the stability limit %.3f of %s shapes with %s%s, from the method's own linearised step "
         "(`mpm stability`, paper/10_integrator_analysis.md); expect the run to stop with energy growth (exit 3)",
-        scene.control.cfl, cfl_limit, name_of(scene.shape).c_str(), npc ? "the predictor-corrector" : "forward Euler",
+        fixed ? scene.control.fixed_dt : scene.control.cfl, step, cfl_limit, name_of(scene.shape).c_str(),
+        npc ? "the predictor-corrector" : "forward Euler",
         npc && scene.npc_velocity == NewmarkParticleVelocity::average ? " (Newmark average)" : "");
-    warn("solver.cfl", what);
+    warn(fixed ? "solver.dt" : "solver.cfl", what);
   }
   for (const auto& fixed : scene.fixed)
     if (scene.shape == ShapeKind::lme && (fixed.upper() ? scene.margin_max : scene.margin_min)[fixed.axis()] > 0)
@@ -125,6 +130,12 @@ TEST_CASE("Scene warnings: the CFL above the method's limit, and each warning at
   CHECK(warnings_of(base + "cfl = 2.0\n", {}, 2.0).empty());
   CHECK(warnings_of(base + "cfl = 2.1\n").empty());  // no limit known: no warning
   CHECK(warnings_of(base + "cfl = 1.43\nintegrator = \"npc\"\n", {}, 1.414).size() == 1);
+  // A fixed step: c = 1 m/s, h = 0.1 m, so dt = 0.21 s is CFL 2.1.
+  auto dt = warnings_of(base + "dt = 0.21\n", {}, 2.0);
+  REQUIRE(dt.size() == 1);
+  CHECK(dt[0].rfind("warning: w.toml:19: solver.dt: 0.21 s is CFL 2.1 at t = 0 (dt c / h), dt <= 0.2 s, is above the "
+                    "stability limit 2.000 of linear shapes with forward Euler", 0) == 0);
+  CHECK(warnings_of(base + "dt = 0.19\n", {}, 2.0).empty());
   auto observer = warnings_of(base, {"observer[0].position=[-0.1]"});
   REQUIRE(observer.size() == 1);
   CHECK(observer[0].rfind("warning: --set(1):1: observer[0].position: lies outside every [[body]]", 0) == 0);

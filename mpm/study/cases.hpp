@@ -47,8 +47,9 @@ inline std::vector<Case> expand_cases(const Study& study) {
     for (std::size_t rest = index, k = study.axes.size(); k-- > 0; rest /= study.axes[k].values.size())
       one.choice[k] = rest % study.axes[k].values.size();
     for (const auto& setting : study.set) one.overrides.push_back(setting.key + "=" + setting.value.toml);
-    for (std::size_t k = 0; k < study.axes.size(); ++k)
-      one.overrides.push_back(study.axes[k].key + "=" + study.axes[k].values[one.choice[k]].toml);
+    for (std::size_t k = 0; k < study.axes.size(); ++k)  // a linked axis: one override per key
+      for (const std::string& assignment : axis_overrides(study.axes[k], study.axes[k].values[one.choice[k]]))
+        one.overrides.push_back(assignment);
   }
   return cases;
 }
@@ -155,6 +156,9 @@ TEST_CASE("study cases: the product of the axes, the last varying fastest, with 
   REQUIRE(cases.size() == 6);
   CHECK(cases[4].choice == std::vector<std::size_t>{1, 1});
   CHECK(cases[4].overrides == std::vector<std::string>{"solver.end_time=1e-05", "grid.cells=[20]", "solver.shape=\"lme\""});
+  study.axes = {{"grid.cells, solver.dt", {{"[[10], 1e-05]", "10 1e-05", 10.0}}, 7}};
+  CHECK(expand_cases(study).at(0).overrides ==
+        std::vector<std::string>{"solver.end_time=1e-05", "grid.cells=[10]", "solver.dt=1e-05"});
   CHECK(case_folder("runs/s", 42) == "runs/s/cases/0042");
   CHECK(child_arguments({"run", "a.toml"}, {"x=1"}) == std::vector<std::string>{"mpm", "run", "a.toml", "--set", "x=1"});
 }

@@ -148,21 +148,69 @@ inline std::vector<Setting> read_settings(const toml::table& table, const std::s
   return settings;
 }
 
-/// The `[axes]` entries of `table`: scene keys, each with a non-empty array of distinct values. \throws SceneError.
+/// The keys of an axis: "grid.cells" alone, or those of a linked axis, "grid.cells, solver.dt". \throws SceneError.
+inline std::vector<std::string> axis_keys(const std::string& key, const std::string& file, int line) {
+  std::vector<std::string> keys;
+  for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 1) {
+    end = key.find(',', start);
+    std::string part = key.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    part.erase(0, part.find_first_not_of(' '));
+    part.erase(part.find_last_not_of(' ') + 1);
+    if (!is_scene_key(part))
+      throw SceneError(file, line, key, (key.find(',') == std::string::npos ? "" : "'" + part + "' is ") +
+                                            "not a scene key (mpm run --help lists them)");
+    if (std::find(keys.begin(), keys.end(), part) != keys.end())
+      throw SceneError(file, line, key, part + " is linked twice");
+    keys.push_back(part);
+  }
+  return keys;
+}
+
+/// One value of an axis of `keys`; a linked axis's is an array of one value per key. \throws SceneError.
+inline Value axis_value(const Axis& axis, const std::vector<std::string>& keys, const toml::node& entry,
+                        const std::string& file) {
+  Value value = value_of(entry, file, axis.key);
+  const auto* parts = entry.as_array();
+  if (keys.size() > 1 && (!parts || parts->size() != keys.size()))
+    throw SceneError(file, axis.line, axis.key, "each value of a linked axis is an array of one value per key, [" +
+                                                    std::to_string(keys.size()) + " values], got " + value.toml);
+  return value;
+}
+
+/// The overrides of one value of `axis`: `key=value`, or for a linked axis one per key. \throws SceneError.
+inline std::vector<std::string> axis_overrides(const Axis& axis, const Value& value) {
+  const std::vector<std::string> keys = axis_keys(axis.key, "", axis.line);
+  if (keys.size() < 2) return {axis.key + "=" + value.toml};
+  const toml::table parsed = toml::parse("value = " + value.toml);
+  const toml::array& parts = *parsed["value"].as_array();
+  std::vector<std::string> overrides;
+  for (std::size_t j = 0; j < keys.size(); ++j)
+    overrides.push_back(keys[j] + "=" + value_of(parts[j], "", axis.key).toml);
+  return overrides;
+}
+
+/// The `[axes]` entries of `table`: scene keys, each with a non-empty array of distinct values; a linked axis names
+/// several keys, "grid.cells, solver.dt" = [[[10], 1e-5], [[20], 5e-6]], that change together. \throws SceneError.
 inline std::vector<Axis> read_axes(const toml::table& table, const std::string& file) {
   std::vector<std::pair<std::string, const toml::node*>> leaves;
   flatten(table, "", leaves);
   std::vector<Axis> axes;
   for (const auto& [key, node] : leaves) {
     const int line = io::line_of(*node);
-    if (!is_scene_key(key)) throw SceneError(file, line, key, "not a scene key (mpm run --help lists them)");
+    Axis axis{key, {}, line};
+    const std::vector<std::string> keys = axis_keys(key, file, line);
+    for (const auto& other : axes)
+      for (const auto& linked : keys)
+        if (const auto others = axis_keys(other.key, file, other.line);
+            std::find(others.begin(), others.end(), linked) != others.end())
+          throw SceneError(file, line, key,
+                           linked + " is on another axis too (line " + std::to_string(other.line) + ")");
     const auto* values = node->as_array();
     if (!values || values->empty())
       throw SceneError(file, line, key, "an axis is a non-empty array of the values the key takes: [v1, v2, ...] "
                                         "(grid.cells = [[10], [20]]: each value an array of cells)");
-    Axis axis{key, {}, line};
     for (const auto& entry : *values) {
-      axis.values.push_back(value_of(entry, file, key));
+      axis.values.push_back(axis_value(axis, keys, entry, file));
       for (std::size_t k = 0; k + 1 < axis.values.size(); ++k)
         if (axis.values[k].toml == axis.values.back().toml)
           throw SceneError(file, line, key, "the value " + axis.values.back().toml + " is given twice");
@@ -220,7 +268,9 @@ inline Study read_study(const std::string& path) {
   if (study.axes.empty()) throw SceneError(path, 1, "axes", "required: [axes] with at least one KEY = [values...]");
   for (const auto& axis : study.axes)
     for (const auto& setting : study.set)
-      if (setting.key == axis.key) throw SceneError(path, setting.line, setting.key, "is an axis too; give it in one place");
+      if (const auto keys = axis_keys(axis.key, path, axis.line);
+          std::find(keys.begin(), keys.end(), setting.key) != keys.end())
+        throw SceneError(path, setting.line, setting.key, "is an axis too; give it in one place");
   std::size_t cases = 1;
   for (const auto& axis : study.axes)
     if ((cases *= axis.values.size()) > most_cases)
@@ -280,6 +330,23 @@ TEST_CASE("study file: axes and overrides as TOML values, every key checked with
   for (const char* key : {"solver.cfl", "solver.lme_gamma", "solver.lme_tol", "solver.newmark_gamma", "solver.flip_fraction"})
     many += std::string(key) + " = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7]\n";
   CHECK(refusal(many).find("more than 10000 cases") != std::string::npos);
+  const Study linked = read_study(write("scene = \"x.toml\"\n[axes]\n\"grid.cells, solver.dt\" = [[[10], 1e-5], "
+                                        "[[20], 5e-6]]\nsolver.shape = [\"linear\"]\n"));
+  REQUIRE(linked.axes.size() == 2);
+  CHECK(axis_overrides(linked.axes[0], linked.axes[0].values[1]) ==
+        std::vector<std::string>{"grid.cells=[20]", "solver.dt=5e-06"});
+  CHECK(linked.axes[0].values[1].label == "20 5e-06");
+  CHECK(axis_overrides(linked.axes[1], linked.axes[1].values[0]) ==
+        std::vector<std::string>{"solver.shape=\"linear\""});
+  CHECK(refusal("scene = \"x.toml\"\n[axes]\n\"grid.cells, solver.dt\" = [[[10], 1e-5], [[20]]]\n")
+            .find(":3: grid.cells, solver.dt: each value of a linked axis is an array of one value per key, "
+                  "[2 values], got [[20]]") != std::string::npos);
+  CHECK(refusal("scene = \"x.toml\"\n[axes]\n\"grid.cells, solver.dtt\" = [[[10], 1e-5]]\n")
+            .find("'solver.dtt' is not a scene key") != std::string::npos);
+  CHECK(refusal("scene = \"x.toml\"\n[axes]\n\"grid.cells, solver.dt\" = [[[10], 1e-5]]\nsolver.dt = [1e-5]\n")
+            .find(":4: solver.dt: solver.dt is on another axis too (line 3)") != std::string::npos);
+  CHECK(refusal("scene = \"x.toml\"\n[set]\nsolver.dt = 1e-5\n[axes]\n\"grid.cells, solver.dt\" = [[[10], 1e-5]]\n")
+            .find(":3: solver.dt: is an axis too") != std::string::npos);
   CHECK(is_scene_key("body[3].min"));
   CHECK(is_scene_key("constants.k"));
   CHECK(!is_scene_key("body.min"));
