@@ -357,7 +357,7 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   std::filesystem::remove(path);
 }
 
-TEST_CASE("mpm compare: sample times in [0, end time], increasing, each refusal at its line; a wrong unit warned") {
+TEST_CASE("mpm compare: sample times in [0, end time], increasing, each refusal at its line, a wrong unit warned") {
   const std::vector<int> lines{2, 3, 5};
   CHECK_NOTHROW(check_sample_times({0.0, 1e-4, 2e-4 * (1.0 + 0.9e-6)}, lines, "r.csv", "t", 2e-4));
   const std::vector<std::pair<std::vector<double>, std::string>> refused{

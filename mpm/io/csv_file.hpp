@@ -287,7 +287,7 @@ TEST_CASE("CsvFile: header and rows located, a BOM skipped, comments and blank l
   CHECK(!gone.next_line(line));
 }
 
-TEST_CASE("CsvFile: the separator told by the header (',', ';', a tab or spaces), a decimal comma refused, located") {
+TEST_CASE("CsvFile: the separator told by the header (comma, semicolon, tab or spaces), decimal commas refused") {
   CHECK(csv_separator("t;v (m/s)") == ';');
   CHECK(csv_separator("t, v") == ',');
   CHECK(csv_separator("t\tA v") == '\t');
