@@ -165,8 +165,68 @@ printf 't,v\n0,1\n1,fast\n' >"$work/text.csv"
 bad "^error: $work/text.csv:3: v: 'fast' is not a finite number" compare "$work/text.csv" "$bar" --at 0 --column v=v_x
 printf 't,v\n' >"$work/header_only.csv"
 bad "^error: $work/header_only.csv: has a header but no data row" compare "$work/header_only.csv" "$bar" --at 0 --column v=v_x
+# Sample times in [0, solver.end_time] (1e-6 of it beyond for round-off), increasing: each refusal names FILE:LINE
+# (comments and blank lines counted) and the time column, before any --plot is drawn.
+never=(--plot "$work/never.png")
 printf 't,v\n-1,0\n' >"$work/negative.csv"
-bad "^error: $work/negative.csv: t: the sample times must be >= 0" compare "$work/negative.csv" "$bar" --at 0 --column v=v_x
+bad "^error: $work/negative.csv:2: t: -1 s is before t = 0" \
+  compare "$work/negative.csv" "$bar" --at 0 --column v=v_x "${never[@]}"
+printf 't,v\n0,-5\n# a comment\n\n1,0\n' >"$work/late.csv"
+bad "^error: $work/late.csv:5: t: 1 s is after the scene's solver.end_time = 0.0002 s: times in ms or us\?" \
+  compare "$work/late.csv" "$bar" --at 0 --column v=v_x "${never[@]}"
+bad "^error: $work/late.csv:5: t: 1 s is after the scene's solver.end_time = 1e-05 s" \
+  compare "$work/late.csv" "$bar" --set solver.end_time=1e-5 --set 'output.snapshots=[]' --at 0 --column v=v_x
+printf 't,v\n0,-5\n2.000001e-4,0\n' >"$work/round_off.csv"  # 5e-7 of the end time beyond it: round-off
+"$mpm" compare "$work/round_off.csv" "$bar" --at 0 --column v=v_x >/dev/null || fail "compare: 5e-7 beyond the end"
+printf 't,v\n0,-5\n2.000003e-4,0\n' >"$work/beyond.csv"  # 1.5e-6 of it beyond
+bad "^error: $work/beyond.csv:3: t: 0.0002000003 s is after" compare "$work/beyond.csv" "$bar" --at 0 --column v=v_x
+printf 't,v\n0,-5\n1e-5,-5\n1e-5,-5\n' >"$work/repeated.csv"
+bad "^error: $work/repeated.csv:4: t: 1e-05 s repeats the time of line 3: the sample times must increase" \
+  compare "$work/repeated.csv" "$bar" --at 0 --column v=v_x "${never[@]}"
+printf 't,v\n0,-5\n2e-5,-5\n1e-5,-5\n' >"$work/decreasing.csv"
+bad "^error: $work/decreasing.csv:4: t: 1e-05 s comes before the time 2e-05 s of line 3" \
+  compare "$work/decreasing.csv" "$bar" --at 0 --column v=v_x "${never[@]}"
+# --- a unit: the CSV of the known error in mm/s and ms scores 1000 times too much and is warned (exit code
+# unchanged); --scale COL=FACTOR brings each column to SI units and the score back to the m/s one.
+awk -F, 'NR == 1 { print "time_ms,vel_mm" } NR > 1 { printf "%.17g,%.17g\n", $2 * 1000, $4 * 1000 }' "$work/other.csv" \
+  >"$work/mm.csv"
+mm=(compare "$work/mm.csv" "$bar" --at "$(calc "$L / 2")" --time-column time_ms --column vel_mm=v_x)
+bad "^error: $work/mm.csv:2: time_ms: .* s is after the scene's solver.end_time" "${mm[@]}"
+"$mpm" "${mm[@]}" --scale time_ms=0.001 --tolerance 0.03 >"$work/mm_score.csv" 2>"$work/err"
+[[ $? -eq 1 ]] || fail "compare in mm/s above --tolerance 0.03 must exit 1"
+check "compare rms/v0 in mm/s" "$(field "$work/mm_score.csv" 1 rms_normalised)" "$(calc "(2400 - 2.5) / 5")" 1e-6
+grep -q "^warning: column vel_mm: rms_normalised 479.5 is more than 10 times the solution's scale of v_x (m/s, \
+SI); its values are about 1000 times the solution's: another unit (mm/s is 1000 times m/s)? --scale vel_mm=0.001 \
+converts it$" \
+  "$work/err" || fail "compare in mm/s: no warning naming the column, the unit and --scale: $(cat "$work/err")"
+"$mpm" "${mm[@]}" --scale time_ms=1e-3 --scale vel_mm=0.001 --tolerance 0.03 >"$work/mm_scaled.csv" 2>"$work/err" ||
+  fail "compare --scale: $(cat "$work/err")"
+check "compare --scale vel_mm=0.001: rms/v0" "$(field "$work/mm_scaled.csv" 1 rms_normalised)" 0.02 1e-10
+[[ -s "$work/err" ]] && fail "compare --scale: a warning left: $(cat "$work/err")"
+bad "^error: --scale: give COL=FACTOR with FACTOR a number > 0 \(mm/s to m/s: v=0.001\), got 'vel=0'" \
+  compare "$work/other.csv" "$bar" --at 0 --time-column time --column vel=v_x --scale vel=0
+bad "^error: --scale: give COL=FACTOR .* got 'vel=nan'" compare "$work/other.csv" "$bar" --at 0 --time-column time \
+  --column vel=v_x --scale vel=nan
+bad "^error: --scale speed=2: no --column or --time-column names 'speed'" compare "$work/other.csv" "$bar" --at 0 \
+  --time-column time --column vel=v_x --scale speed=2 "${never[@]}"
+# --- separators: the header tells the file's one separator (';' or ',', else a tab, else spaces); the same
+# numbers score the same whatever separates them; a decimal comma is refused at its line.
+at_half=(--at "$(calc "$L / 2")" --time-column time --column vel=v_x)
+"$mpm" compare "$work/other.csv" "$bar" "${at_half[@]}" >"$work/comma_score.csv"
+for separator in ';' $'\t' '   '; do
+  sed "s/,/$separator/g" "$work/other.csv" >"$work/separated.csv"
+  "$mpm" compare "$work/separated.csv" "$bar" "${at_half[@]}" >"$work/score_s.csv" 2>"$work/err" ||
+    fail "compare, separator '$separator': $(cat "$work/err")"
+  cmp -s "$work/comma_score.csv" "$work/score_s.csv" || fail "separator '$separator': $(cat "$work/score_s.csv")"
+done
+printf 't;v\n0;-5\n1e-5;-4,5\n' >"$work/decimal_comma.csv"
+bad "^error: $work/decimal_comma.csv:3: v: '-4,5' has a decimal comma; write numbers with a decimal point" \
+  compare "$work/decimal_comma.csv" "$bar" --at 0 --column v=v_x "${never[@]}"
+printf 't,v\n0,-5\n1e-5,-4,5\n' >"$work/comma_comma.csv"
+bad "^error: $work/comma_comma.csv:3: 3 fields; the header has 2 \(decimal commas\? write 0.5, not 0,5\)" \
+  compare "$work/comma_comma.csv" "$bar" --at 0 --column v=v_x "${never[@]}"
+printf 't;v,w\n0;-5\n' >"$work/both.csv"
+bad "^error: $work/both.csv:1: the header holds both ',' and ';'" compare "$work/both.csv" "$bar" --at 0 --column v=v_x
 
 # --- runs sample where and when asked: output.times landed on exactly; exact.csv at the material point the
 # observer names (the free end X = 0), not at its particle's centre h/2; run.json gives that particle's X.

@@ -8,7 +8,8 @@
 #   - exit 3: one line naming the failure, and stdout never says "wrote";
 #   - exit 0: "wrote", run.json says "done", and the run took at most twice its step budget.
 # Then hostile files for each reader of a file (FIFO, device, folder, /proc, byte-order mark, a long line, a
-# header name that closes gnuplot's quote, a control character): exit 0, 2 or 3 within 10 s, nothing run.
+# header name that closes gnuplot's quote, a control character, other separators, decimal commas, times out of
+# range or order): exit 0, 2 or 3 within 10 s, nothing run.
 #
 #   bash tests/fuzz_cli.sh build/bin/mpm [CASES] [SEED]
 # CASES defaults to $MPM_FUZZ_CASES or 300 (what `make test` runs); SEED to $MPM_FUZZ_SEED or 11.
@@ -177,7 +178,8 @@ for ((number = 0; number < cases; ++number)); do
 done
 # Hostile files for every reader of a file (the times file, compare's CSV, a particle file, a run folder's
 # observers.csv): not regular files, a byte-order mark, a line over 1 MiB, a header name that closes
-# gnuplot's quote and runs a command, a control character. Each returns within 10 s with 0, 2 or 3, runs
+# gnuplot's quote and runs a command, a control character, ';' or tab separators, decimal commas, sample
+# times after the end time or repeated and decreasing. Each returns within 10 s with 0, 2 or 3, runs
 # nothing, and exit 2 says `error: ` and names the file.
 hostile() {  # hostile CLASS FILE: makes FILE of that class
   rm -rf "$2"
@@ -190,10 +192,15 @@ hostile() {  # hostile CLASS FILE: makes FILE of that class
     long) { head -c 1100000 /dev/zero | tr '\0' 7; printf '\n'; } >"$2" ;;
     inject) printf "t,A.x' . system('touch %s') . '\n0,1\n" "$work/pwned" >"$2" ;;
     control) printf 't,A.v\001x\n0,1\n' >"$2" ;;
+    semicolon) printf 't;A.v_x;x;y;volume\n0;1;0.1;0.1;0.001\n' >"$2" ;;
+    tabs) printf 't\tA.v_x\tx\ty\tvolume\n0\t1\t0.1\t0.1\t0.001\n' >"$2" ;;
+    decimal) printf 't;A.v_x;x;y;volume\n0;1,5;0,1;0,1;0,001\n' >"$2" ;;
+    late) printf 't,A.v_x,x,y,volume\n0,1,0.1,0.1,0.001\n1,1,0.3,0.1,0.001\n' >"$2" ;;
+    backwards) printf 't,A.v_x\n1e-5,1\n1e-5,1\n0,1\n' >"$2" ;;
   esac
 }
 hostile_cases=0
-for class in fifo device folder proc bom long inject control; do
+for class in fifo device folder proc bom long inject control semicolon tabs decimal late backwards; do
   for reader in times compare particles plot; do
     mkdir -p "$work/hostile"
     file=$work/hostile/observers.csv

@@ -24,10 +24,16 @@
 
 namespace mpm::cli {
 
-/// The numbers of the columns `wanted` of the CSV file `path` (io::CsvFile), by name, one per data row: each row
-/// with the header's number of fields and a finite number in each column wanted. \throws Refused (`FILE:LINE: ...`).
-inline std::map<std::string, std::vector<double>> read_csv_columns(const std::string& path,
-                                                                   const std::vector<std::string>& wanted) {
+/// The numbers of a CSV file's columns by name, one per data row, and the file's line of each row.
+struct CsvColumns {
+  std::map<std::string, std::vector<double>> values;
+  std::vector<int> lines;
+};
+
+/// The numbers of the columns `wanted` of the CSV file `path` (io::CsvFile: ',', ';', tab or space separated), by
+/// name, one per data row: each row with the header's number of fields and a finite number in each column wanted.
+/// \throws Refused (`FILE:LINE: ...`).
+inline CsvColumns read_csv_columns(const std::string& path, const std::vector<std::string>& wanted) {
   io::CsvFile file(path);
   if (!file.read_header())
     throw Refused(file.error().empty() ? path + ": empty; a header line and data rows are needed" : file.error());
@@ -42,9 +48,11 @@ inline std::map<std::string, std::vector<double>> read_csv_columns(const std::st
     if (index.back() == header.size())
       throw Refused(file.where() + "no column '" + name + "' in the header (" + names + ")");
   }
-  std::map<std::string, std::vector<double>> values;
+  CsvColumns columns;
+  std::map<std::string, std::vector<double>>& values = columns.values;
   for (std::vector<std::string> fields; file.next_row(fields);) {
-    if (values[wanted[0]].size() == most_times) throw Refused(file.where() + "more than 1000000 rows");
+    if (columns.lines.size() == most_times) throw Refused(file.where() + "more than 1000000 rows");
+    columns.lines.push_back(file.line());
     for (size_t k = 0; k < wanted.size(); ++k) {
       std::string out_of_range;
       const auto value = parse_number(fields[index[k]], &out_of_range);
@@ -56,7 +64,35 @@ inline std::map<std::string, std::vector<double>> read_csv_columns(const std::st
   }
   if (!file.error().empty()) throw Refused(file.error());
   if (values.empty()) throw Refused(path + ": has a header but no data row");
-  return values;
+  return columns;
+}
+
+/// How far past the scene's end time a sample time may lie, as a fraction of it: round-off of a time written with
+/// 7 or more significant digits, or summed step by step.
+inline constexpr double end_time_round_off = 1e-6;
+
+/// Refuses sample `times` (read from `path`, one per line of `lines`, in `column`) that are not in [0, `end_time`
+/// (1 + end_time_round_off)] or do not increase, naming the first such row. \throws Refused (`FILE:LINE: COLUMN:`).
+inline void check_sample_times(const std::vector<double>& times, const std::vector<int>& lines, const std::string& path,
+                               const std::string& column, double end_time) {
+  const auto said = [](double time) {
+    std::ostringstream text;
+    text.precision(10);
+    text << time << " s";
+    return text.str();
+  };
+  for (std::size_t n = 0; n < times.size(); ++n) {
+    const std::string where = path + ":" + std::to_string(lines[n]) + ": " + column + ": " + said(times[n]);
+    if (times[n] < 0.0) throw Refused(where + " is before t = 0: the sample times must lie in [0, solver.end_time]");
+    if (times[n] > end_time * (1.0 + end_time_round_off))
+      throw Refused(where + " is after the scene's solver.end_time = " + said(end_time) +
+                    ": times in ms or us? (--scale " + column + "=0.001 converts ms to s; --set solver.end_time=T " +
+                    "scores later times)");
+    if (n > 0 && times[n] <= times[n - 1])
+      throw Refused(where + (times[n] == times[n - 1] ? " repeats the time" : " comes before the time " +
+                             said(times[n - 1])) + " of line " + std::to_string(lines[n - 1]) +
+                    ": the sample times must increase");
+  }
 }
 
 /// The score of one column, with its series.
@@ -78,6 +114,35 @@ inline ColumnScore score_column(const std::vector<double>& times, const std::vec
       score.t_of_max = times[n];
     }
   return score;
+}
+
+/// The largest rms_normalised taken for a result in the solution's units: above it, compare warns (unit_warning).
+inline constexpr double most_plausible_rms_normalised = 10.0;
+
+/// The warning for `score` when its rms_normalised exceeds most_plausible_rms_normalised ("" otherwise): its
+/// values against the solution's as a power of ten (their root mean squares; against the solution's scale where
+/// the solution's is below a hundredth of it), the quantity's unit, and the --scale that would bring them to it
+/// (mm/s and mm: 1000 times m/s and m).
+inline std::string unit_warning(const ColumnScore& score) {
+  if (!(score.rms_normalised > most_plausible_rms_normalised)) return "";
+  const std::string unit = io::quantity_unit(score.quantity);  // m, m/s or Pa
+  double computed = 0.0, exact = 0.0;
+  for (std::size_t n = 0; n < score.computed.size(); ++n)
+    computed += score.computed[n] * score.computed[n], exact += score.exact[n] * score.exact[n];
+  const double scale = score.rms / score.rms_normalised, samples = static_cast<double>(score.computed.size());
+  const double reference = std::sqrt(exact / samples) >= 0.01 * scale ? std::sqrt(exact / samples) : scale;
+  const double power = std::round(std::log10(std::sqrt(computed / samples) / reference));
+  std::ostringstream text;
+  text << "warning: column " << score.column << ": rms_normalised " << score.rms_normalised << " is more than "
+       << most_plausible_rms_normalised << " times the solution's scale of " << score.quantity << " ("
+       << unit << ", SI)";
+  if (power >= 1.0 && power <= 300.0)
+    text << "; its values are about " << std::pow(10.0, power) << " times the solution's: another unit"
+         << (unit == "Pa" ? "" : " (m" + unit + " is 1000 times " + unit + ")") << "? --scale " << score.column << "="
+         << std::pow(10.0, -power) << " converts it";
+  else
+    text << ": another unit, sign, column or point? --scale " << score.column << "=FACTOR converts a unit";
+  return text.str() + "\n";
 }
 
 /// The gnuplot script of --plot: one panel per column, its values and the exact solution's against t, the data
@@ -104,9 +169,38 @@ inline std::string compare_plot_script(const std::string& picture, const std::ve
 /// What `mpm compare` was asked, besides the scene and the point.
 struct CompareRequest {
   std::string result_path, time_column = "t", plot_path;
-  std::vector<std::string> column_specs;
+  std::vector<std::string> column_specs, scale_specs;
   std::optional<double> tolerance;
 };
+
+/// A validator of --scale: COL=FACTOR with FACTOR a finite number > 0 (parse_number).
+inline CLI::Validator column_factor() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        const auto equals = text.rfind('=');
+        const auto factor = equals == std::string::npos ? std::nullopt : parse_number(text.substr(equals + 1));
+        if (equals != 0 && factor && *factor > 0.0 && !has_control_character(text)) return "";
+        return "give COL=FACTOR with FACTOR a number > 0 (mm/s to m/s: v=0.001), got '" + text + "'";
+      },
+      "COL=FACTOR");
+}
+
+/// The factor of each column --scale names (COL=FACTOR, column_factor), each a --column's or the time column,
+/// none twice. \throws Refused.
+inline std::map<std::string, double> checked_scales(const CompareRequest& request,
+                                                    const std::vector<std::pair<std::string, std::string>>& columns) {
+  std::map<std::string, double> scales;
+  for (const auto& spec : request.scale_specs) {
+    const auto equals = spec.rfind('=');
+    const std::string column = spec.substr(0, equals);
+    const bool named = column == request.time_column ||
+                       std::any_of(columns.begin(), columns.end(), [&](auto& c) { return c.first == column; });
+    if (!named) throw Refused("--scale " + spec + ": no --column or --time-column names '" + column + "'");
+    if (scales.count(column)) throw Refused("--scale " + spec + ": column '" + column + "' is scaled twice");
+    scales[column] = *parse_number(spec.substr(equals + 1));
+  }
+  return scales;
+}
 
 /// The columns and quantities --column names (COL=QUANTITY), each a quantity of the `dimension`D solution and no
 /// column twice; and a --plot that can be written (a .png in an existing folder). \throws Refused.
@@ -152,15 +246,12 @@ inline int compare(const ExactOptions& options, const CompareRequest& request, s
   const auto columns = checked_columns(request, scene->dimension);
   std::vector<std::string> wanted{request.time_column};
   for (const auto& column : columns) wanted.push_back(column.first);
-  const auto values = read_csv_columns(request.result_path, wanted);
+  const auto scales = checked_scales(request, columns);
+  auto [values, lines] = read_csv_columns(request.result_path, wanted);
+  for (const auto& [column, factor] : scales)
+    for (double& value : values.at(column)) value *= factor;
   const std::vector<double>& times = values.at(request.time_column);
-  for (size_t n = 0; n < times.size(); ++n)
-    if (times[n] < 0.0) {
-      std::ostringstream time;
-      time << times[n];
-      throw Refused(request.result_path + ": " + request.time_column + ": the sample times must be >= 0 (row " +
-                    std::to_string(n + 1) + ": " + time.str() + ")");
-    }
+  check_sample_times(times, lines, request.result_path, request.time_column, scene->control.end_time);
   if (!times_within_precision(io::SceneExactSolution(*scene, io::StrainMeasure::small), times, request.result_path,
                               err) ||
       !finite_strain_times_fit(*scene, options.strain, times, request.result_path, err))
@@ -187,6 +278,7 @@ inline int compare(const ExactOptions& options, const CompareRequest& request, s
     if (request.tolerance && !(score.rms_normalised <= *request.tolerance)) above << " " << score.column;
   }
   out << text.str() << std::flush;
+  for (const auto& score : scores) err << unit_warning(score);
   if (!request.plot_path.empty()) {
     draw_with_gnuplot("", compare_plot_script(request.plot_path, times, scores), {request.plot_path});
     err << "wrote " << request.plot_path << "\n";
@@ -220,7 +312,15 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       ->type_name("COL=QUANTITY")
       ->required()
       ->allow_extra_args(false);
-  app.add_option("--time-column", request.time_column, "the column of the sample times, s")
+  app.add_option("--scale", request.scale_specs,
+                 "COL=FACTOR: multiplies the column COL (a --column's or the time column) by FACTOR > 0 before\n"
+                 "scoring, to SI units: mm/s to m/s v=0.001, ms to s t=0.001; repeat for more columns")
+      ->type_name("COL=FACTOR")
+      ->check(column_factor())
+      ->allow_extra_args(false);
+  app.add_option("--time-column", request.time_column,
+                 "the column of the sample times, s: increasing, in [0, solver.end_time] (1e-6 of it beyond\n"
+                 "allowed for round-off)")
       ->check(CLI::Validator([](const std::string& text) { return text.empty() ? "empty" : ""; }, ""));
   app.add_option("--tolerance", request.tolerance, "exit 1 when an rms_normalised exceeds TOL (none: no check, exit 0)")
       ->check(number_in(0.0, 1e300));
@@ -249,11 +349,59 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   CHECK(spike.t_of_max == 2.0);
   const std::string path = (std::filesystem::temp_directory_path() / "mpm_compare_test.csv").string();
   std::ofstream(path) << "t,v,w\n0,1,2\n1,1e-310,2\n";
-  CHECK(read_csv_columns(path, {"t", "w"}).at("w") == std::vector<double>{2.0, 2.0});
+  CHECK(read_csv_columns(path, {"t", "w"}).values.at("w") == std::vector<double>{2.0, 2.0});
+  CHECK(read_csv_columns(path, {"t", "w"}).lines == std::vector<int>{2, 3});
   CHECK_THROWS_WITH_AS(read_csv_columns(path, {"t", "v"}), doctest::Contains(":3: v: '1e-310' is too small"), Refused);
   CHECK_THROWS_WITH_AS(read_csv_columns(path, {"t", "x"}),
                        doctest::Contains(":1: no column 'x' in the header (t, v, w)"), Refused);
   std::filesystem::remove(path);
+}
+
+TEST_CASE("mpm compare: sample times in [0, end time], increasing, each refusal at its line, a wrong unit warned") {
+  const std::vector<int> lines{2, 3, 5};
+  CHECK_NOTHROW(check_sample_times({0.0, 1e-4, 2e-4 * (1.0 + 0.9e-6)}, lines, "r.csv", "t", 2e-4));
+  const std::vector<std::pair<std::vector<double>, std::string>> refused{
+      {{0.0, 1e-4, 2e-4 * (1.0 + 1.1e-6)}, "r.csv:5: t: 0.00020000022 s is after"},
+      {{0.0, 1e-4, 1.0}, "r.csv:5: t: 1 s is after the scene's solver.end_time = 0.0002 s: times in ms or us?"},
+      {{-1e-9, 1e-4, 2e-4}, "r.csv:2: t: -1e-09 s is before t = 0"},
+      {{0.0, 1e-4, 1e-4}, "r.csv:5: t: 0.0001 s repeats the time of line 3: the sample times must increase"},
+      {{0.0, 1e-4, 0.5e-4}, "r.csv:5: t: 5e-05 s comes before the time 0.0001 s of line 3"}};
+  for (const auto& [times, message] : refused)
+    CHECK_THROWS_WITH_AS(check_sample_times(times, lines, "r.csv", "t", 2e-4), doctest::Contains(message.c_str()),
+                         Refused);
+  // values 1000 times the solution's (mm/s), whose scale is 5: rms_normalised = 999 / 5 = 199.8, a warning, and
+  // --scale v=0.001 brings them back (1000 from the values, 1000/1, not from the scale, 1000/5); 10 is not warned.
+  ColumnScore score = score_column({0.0, 1.0}, {1000.0, -1000.0}, {1.0, -1.0}, 5.0);
+  score.column = "v", score.quantity = "v_x";
+  CHECK(score.rms_normalised == doctest::Approx(199.8));
+  CHECK(unit_warning(score) ==
+        "warning: column v: rms_normalised 199.8 is more than 10 times the solution's scale of v_x (m/s, SI); its "
+        "values are about 1000 times the solution's: another unit (mm/s is 1000 times m/s)? --scale v=0.001 converts "
+        "it\n");
+  score.rms_normalised = 10.0;
+  CHECK(unit_warning(score).empty());
+  // a stress-free point (the solution 0 at every sample): the values against the scale, 2e7 Pa = 1e6 x 20 Pa
+  ColumnScore stress = score_column({0.0, 1.0}, {2e7, -2e7}, {0.0, 0.0}, 20.0);
+  stress.column = "s", stress.quantity = "sigma_xx";
+  CHECK(unit_warning(stress).find("(Pa, SI); its values are about 1e+06 times the solution's: another unit? --scale "
+                                  "s=1e-06 converts it\n") != std::string::npos);
+  // values of the solution's size, but of the other sign, far off: no unit suggested
+  ColumnScore sign = score_column({0.0, 1.0}, {-100.0, 100.0}, {100.0, -100.0}, 1.0);
+  sign.column = "v", sign.quantity = "v_x";
+  CHECK(unit_warning(sign).find(": another unit, sign, column or point? --scale v=FACTOR converts a unit\n") !=
+        std::string::npos);
+  CompareRequest request;
+  request.scale_specs = {"v=0.001", "t=1e-3"};
+  const std::vector<std::pair<std::string, std::string>> columns{{"v", "v_x"}};
+  CHECK(checked_scales(request, columns) == std::map<std::string, double>{{"t", 1e-3}, {"v", 1e-3}});
+  request.scale_specs = {"v=2", "v=3"};
+  CHECK_THROWS_WITH_AS(checked_scales(request, columns), "--scale v=3: column 'v' is scaled twice", Refused);
+  request.scale_specs = {"w=2"};
+  CHECK_THROWS_WITH_AS(checked_scales(request, columns), "--scale w=2: no --column or --time-column names 'w'",
+                       Refused);
+  CHECK(column_factor()("v=1e-3").empty());
+  for (const char* wrong : {"v", "=2", "v=0", "v=-1", "v=nan", "v=1e400", "v=x", "v=2=3x"})
+    CHECK_MESSAGE(column_factor()(wrong).rfind("give COL=FACTOR with FACTOR a number > 0", 0) == 0, wrong);
 }
 
 }  // namespace mpm::cli

@@ -31,6 +31,8 @@ inline std::vector<std::string> plot_header(const std::string& path) {
   if (!file.read_header())
     throw Refused(file.error().empty() ? path + ": empty; a header line is needed" : file.error());
   const auto& names = file.header();
+  if (file.separator() != ',' && names.size() > 1)  // gnuplot reads the file as a run writes it
+    throw Refused(file.where() + "its columns are not comma-separated, as a run writes them");
   for (size_t k = 0; k < names.size(); ++k)
     if (has_control_character(names[k]))
       throw Refused(file.where() + "column " + std::to_string(k + 1) + ": its name holds a control character");
@@ -193,6 +195,9 @@ TEST_CASE("mpm plot: the script draws each observer's column beside the exact on
   CHECK(plot_header(path) == std::vector<std::string>{"t", "A.x"});  // the byte-order mark is not part of t
   std::ofstream(path) << "t,A.x\n0,fast\n";
   CHECK_THROWS_WITH_AS(plot_header(path), (path + ":2: A.x: 'fast' is not a number").c_str(), Refused);
+  std::ofstream(path) << "t;A.x\n0;1\n";  // gnuplot would read one column
+  CHECK_THROWS_WITH_AS(plot_header(path),
+                       (path + ":1: its columns are not comma-separated, as a run writes them").c_str(), Refused);
   std::filesystem::remove(path);
   CHECK(plot_header(path).empty());  // no such file: no header, and no error (either CSV is optional)
   std::ostringstream out, err;

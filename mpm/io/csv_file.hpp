@@ -2,6 +2,8 @@
 /// The one reader of text inputs (compare's CSV, the headers plot reads, particle files, times files), bounded:
 /// regular files only, refused at once otherwise (`FILE: not a regular file`); lines of at most 1 MiB (LF or CR LF);
 /// a UTF-8 byte-order mark skipped; blank and # lines skipped; errors as `FILE:LINE: ...`, never an exception.
+/// One separator per file, told by the header line (csv_separator): a ';' or a ',' (not both), else a tab, else
+/// runs of spaces; in a file not separated by commas a number with a decimal comma ('0,5') is refused, located.
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
@@ -16,8 +18,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mpm::io {
@@ -31,12 +35,24 @@ inline std::string trimmed(const std::string& text) {
   return start == std::string::npos ? "" : text.substr(start, text.find_last_not_of(" \t") - start + 1);
 }
 
-/// Splits a CSV line at commas; each field trimmed, and of one pair of surrounding double quotes; a line ending
-/// in a comma has an empty last field.
-inline std::vector<std::string> csv_fields(const std::string& line) {
+/// The separator of a file whose header line is `header`: ';' or ',' when the line holds that one (both: '\0',
+/// refused), else a tab when it holds one, else ' ' (runs of spaces and tabs; a header of one name reads alike).
+inline char csv_separator(const std::string& header) {
+  const bool semicolon = header.find(';') != std::string::npos, comma = header.find(',') != std::string::npos;
+  if (semicolon && comma) return '\0';
+  if (semicolon || comma) return semicolon ? ';' : ',';
+  return header.find('\t') != std::string::npos ? '\t' : ' ';
+}
+
+/// Splits a line at `separator` (',', ';' or a tab; ' ' for runs of spaces and tabs); each field trimmed, and
+/// of one pair of surrounding double quotes; a line ending in a ',', ';' or tab has an empty last field.
+inline std::vector<std::string> csv_fields(const std::string& line, char separator = ',') {
   std::vector<std::string> fields;
-  std::istringstream in(line + ",");  // each field ends with a comma
-  for (std::string field; std::getline(in, field, ',');) {
+  std::istringstream in(separator == ' ' ? line : line + separator);  // each field ends with a separator
+  auto next = [&](std::string& field) {
+    return static_cast<bool>(separator == ' ' ? in >> field : std::getline(in, field, separator));
+  };
+  for (std::string field; next(field);) {
     field = trimmed(field);
     if (field.size() >= 2 && field.front() == '"' && field.back() == '"') field = field.substr(1, field.size() - 2);
     fields.push_back(field);
@@ -60,6 +76,16 @@ inline std::string read_finite_number(const std::string& text, double& value) {
   if (out_of_range) return quoted + "is too small (below 2.2e-308 in magnitude, where doubles lose precision)";
   value = read;
   return "";
+}
+
+/// True when `field` is a number written with a decimal comma ('0,5', '-1,25e3'): one comma, and a finite
+/// number with a point in its place.
+inline bool has_decimal_comma(std::string field) {
+  const auto comma = field.find(',');
+  if (comma == std::string::npos || field.find(',', comma + 1) != std::string::npos) return false;
+  field[comma] = '.';
+  double value = 0.0;
+  return read_finite_number(field, value).empty();
 }
 
 /// Why the file of `status` (open as `descriptor`, or -1 when only the path was examined) is not a regular
@@ -121,6 +147,8 @@ class CsvFile {
   /// "FILE:LINE: " of the line last read.
   std::string where() const { return path_ + ":" + std::to_string(number_) + ": "; }
   const std::vector<std::string>& header() const { return header_; }
+  /// The separator read_header found (csv_separator): ',', ';', a tab, or ' ' for runs of spaces and tabs.
+  char separator() const { return separator_; }
 
   /// The next line that is neither blank nor a # comment, trimmed of spaces and tabs.
   bool next_line(std::string& line) {
@@ -131,23 +159,38 @@ class CsvFile {
     return false;
   }
 
-  /// Reads the header (the fields of the first line that is neither blank nor a comment); false on an empty
-  /// file (error() empty) or a problem.
+  /// Reads the header (the fields of the first line that is neither blank nor a comment) and the file's
+  /// separator from it (csv_separator); false on an empty file (error() empty) or a problem.
   bool read_header() {
     std::string line;
     if (!next_line(line)) return false;
-    header_ = csv_fields(line);
+    separator_ = csv_separator(line);
+    if (separator_ == '\0') {
+      error_ = where() + "the header holds both ',' and ';': separate the columns by one of them";
+      return false;
+    }
+    header_ = csv_fields(line, separator_);
     return true;
   }
 
-  /// The fields of the next data row, as many as the header's (`FILE:LINE: N fields; the header has M` else).
+  /// The fields of the next data row, as many as the header's (`FILE:LINE: N fields; the header has M` else, with
+  /// a hint at decimal commas when a comma-separated row has more); in a file not separated by commas, none a
+  /// number with a decimal comma (`FILE:LINE: COLUMN: '0,5' has a decimal comma...`).
   bool next_row(std::vector<std::string>& fields) {
     std::string line;
     if (!next_line(line)) return false;
-    fields = csv_fields(line);
-    if (fields.size() == header_.size()) return true;
-    error_ = where() + std::to_string(fields.size()) + " fields; the header has " + std::to_string(header_.size());
-    return false;
+    fields = csv_fields(line, separator_);
+    if (fields.size() != header_.size()) {
+      error_ = where() + std::to_string(fields.size()) + " fields; the header has " + std::to_string(header_.size()) +
+               (separator_ == ',' && fields.size() > header_.size() ? " (decimal commas? write 0.5, not 0,5)" : "");
+      return false;
+    }
+    for (std::size_t k = 0; separator_ != ',' && k < fields.size(); ++k)
+      if (has_decimal_comma(fields[k])) {
+        error_ = where() + header_[k] + ": '" + fields[k] + "' has a decimal comma; write numbers with a decimal point";
+        return false;
+      }
+    return true;
   }
 
  private:
@@ -194,6 +237,7 @@ class CsvFile {
   std::string buffer_;
   std::size_t position_ = 0;
   std::vector<std::string> header_;
+  char separator_ = ',';
 };
 
 TEST_CASE("CsvFile: header and rows located, a BOM skipped, comments and blank lines skipped, a line too long refused") {
@@ -241,6 +285,52 @@ TEST_CASE("CsvFile: header and rows located, a BOM skipped, comments and blank l
   CHECK(gone.missing());
   CHECK(gone.error() == path + ": cannot be read: no such file, or no permission");
   CHECK(!gone.next_line(line));
+}
+
+TEST_CASE("CsvFile: the separator told by the header (comma, semicolon, tab or spaces), decimal commas refused") {
+  CHECK(csv_separator("t;v (m/s)") == ';');
+  CHECK(csv_separator("t, v") == ',');
+  CHECK(csv_separator("t\tA v") == '\t');
+  CHECK(csv_separator("t  v") == ' ');
+  CHECK(csv_separator("t") == ' ');
+  CHECK(csv_separator("t;v,w") == '\0');
+  CHECK(csv_separator("t;\tA v") == ';');  // a tab beside a ';' or ',' pads a field
+  CHECK(csv_fields("0;\"1.5\" ; 2;", ';') == std::vector<std::string>{"0", "1.5", "2", ""});
+  CHECK(csv_fields("0\t\t2", '\t') == std::vector<std::string>{"0", "", "2"});  // tabs: an empty field between
+  CHECK(csv_fields("0 \t  1e-3   2", ' ') == std::vector<std::string>{"0", "1e-3", "2"});  // spaces: runs
+  for (const char* number : {"0,5", "-1,25e3", ",5", "1,"}) CHECK_MESSAGE(has_decimal_comma(number), number);
+  for (const char* text : {"0.5", "1,2,3", "a,b", "1,5 s", ""}) CHECK_MESSAGE(!has_decimal_comma(text), text);
+  const std::string path = (std::filesystem::temp_directory_path() / "mpm_csv_separator_test.csv").string();
+  const std::vector<std::pair<std::string, std::string>> files{
+      {"t;v\n0;1.5\n1;2\n", ";"}, {"t\tv\n0\t1.5\n1\t2\n", "\t"}, {"  t   v\n0 1.5\n1\t 2\n", " "}};
+  for (const auto& [text, separator] : files) {
+    std::ofstream(path, std::ios::binary) << text;
+    CsvFile csv(path);
+    REQUIRE(csv.read_header());
+    CHECK(csv.separator() == separator[0]);
+    CHECK(csv.header() == std::vector<std::string>{"t", "v"});
+    std::vector<std::string> row;
+    REQUIRE(csv.next_row(row));
+    CHECK(row == std::vector<std::string>{"0", "1.5"});
+    REQUIRE(csv.next_row(row));
+    CHECK(row == std::vector<std::string>{"1", "2"});
+    CHECK((!csv.next_row(row) && csv.error().empty()));
+  }
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"t;v\n0;1.5\n1;0,5\n", ":3: v: '0,5' has a decimal comma; write numbers with a decimal point"},
+      {"t\tv\n0,5\t1\n", ":2: t: '0,5' has a decimal comma"},
+      {"t,v\n0,1\n1,0,5\n", ":3: 3 fields; the header has 2 (decimal commas? write 0.5, not 0,5)"},
+      {"t;v,w\n0;1\n", ":1: the header holds both ',' and ';'"}};
+  for (const auto& [text, message] : refused) {
+    std::ofstream(path, std::ios::binary) << text;
+    CsvFile csv(path);
+    std::vector<std::string> row;
+    if (csv.read_header())
+      while (csv.next_row(row)) {
+      }
+    CHECK_MESSAGE(csv.error().rfind(path + message, 0) == 0, csv.error());
+  }
+  std::filesystem::remove(path);
 }
 
 TEST_CASE("CsvFile: a folder, a FIFO, a device and a file of /proc are refused at once, never read") {

@@ -10,6 +10,8 @@
 #include <doctest/doctest.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -86,6 +88,19 @@ inline std::optional<double> score_with_compare(const std::string& program, cons
   return score;
 }
 
+/// `overrides` and, after them, solver.end_time at the last time of the shifted CSV `shifted` when it is after
+/// `end_time`: its samples reach up to half a step past the run's end, and mpm compare scores no time after the
+/// scene's end time.
+inline std::vector<std::string> shifted_overrides(std::vector<std::string> overrides, const std::string& shifted,
+                                                  double end_time) {
+  std::string error;
+  const auto times = read_columns(shifted, {"t"}, error);
+  char number[40];
+  if (!times.empty() && !times[0].empty() && times[0].back() > end_time)
+    std::snprintf(number, sizeof number, "solver.end_time=%.17g", times[0].back()), overrides.push_back(number);
+  return overrides;
+}
+
 /// The measures of a finished run in `folder` (status done): the two scores of observer
 /// `observer` (none when `scored` is false: the scene has no exact solution).
 inline void measure_run(const std::string& program, const std::string& scene, const Case& one, const std::string& folder,
@@ -100,12 +115,15 @@ inline void measure_run(const std::string& program, const std::string& scene, co
   std::vector<std::string> columns{observer + ".v_x"};
   if (resolved["dimension"].value_or(1) == 2) columns.push_back(observer + ".v_y");
   result.score_at_t = score_with_compare(program, scene, one.overrides, folder + "/observers.csv", at, columns, result.why);
-  const double fraction = velocity_time_shift(resolved);
+  const double fraction = velocity_time_shift(resolved), end_time = resolved["solver"]["end_time"].value_or(0.0);
   if (!write_shifted(folder + "/observers.csv", folder + "/observers_shifted.csv", columns, fraction, result.steps.value_or(0),
                      json_number(json, "final_time").value_or(0.0), error))
     result.why = error;
-  else
-    result.score_shifted = score_with_compare(program, scene, one.overrides, folder + "/observers_shifted.csv", at, columns, result.why);
+  else {
+    const std::string shifted = folder + "/observers_shifted.csv";
+    const auto overrides = shifted_overrides(one.overrides, shifted, end_time);
+    result.score_shifted = score_with_compare(program, scene, overrides, shifted, at, columns, result.why);
+  }
 }
 
 /// Runs case `one` of a study of `scene` into `out`/cases/NNNN with the `mpm` program `program`, scoring
@@ -161,6 +179,12 @@ TEST_CASE("study cases: the product of the axes, the last varying fastest, with 
         std::vector<std::string>{"solver.end_time=1e-05", "grid.cells=[10]", "solver.dt=1e-05"});
   CHECK(case_folder("runs/s", 42) == "runs/s/cases/0042");
   CHECK(child_arguments({"run", "a.toml"}, {"x=1"}) == std::vector<std::string>{"mpm", "run", "a.toml", "--set", "x=1"});
+  // a shifted CSV whose last time is half a step past the end time 2e-4: compare's end time moved to it, not before
+  const std::string shifted = (std::filesystem::temp_directory_path() / "mpm_study_shifted_test.csv").string();
+  std::ofstream(shifted) << "t,A.v_x\n0.5e-4,1\n2.5e-4,1\n";
+  CHECK(shifted_overrides({"x=1"}, shifted, 2e-4) == std::vector<std::string>{"x=1", "solver.end_time=0.00025000000000000001"});
+  CHECK(shifted_overrides({"x=1"}, shifted, 2.5e-4) == std::vector<std::string>{"x=1"});
+  std::filesystem::remove(shifted);
 }
 
 }  // namespace mpm::study
