@@ -205,7 +205,7 @@ inline std::string profile_script(const std::string& folder, const std::vector<S
   return gp;
 }
 
-TEST_CASE("mpm plot: profiles of a snapshot against the exact one, over the grid; round-off drawn flat") {
+TEST_CASE("mpm plot: profiles of a snapshot against the exact one, over the grid, round-off drawn flat") {
   // A flat 4.5 +- 1e-8 gets a range of 4.5 +- 4.5e-6, where it is a flat line; a real spread is autoscaled.
   CHECK(axis_range("y", 4.5 - 1e-8, 4.5 + 1e-8) == "set yrange [4.49999549999999:4.50000450000001]\n"
                                                    "set format y '%.10g'\n");

@@ -107,8 +107,7 @@ class ExactWriter : public Monitor<Dim> {
   /// t = 0, v, sigma) of the solution at each particle's X_p at the snapshot's time, a row per particle in
   /// snapshot_NNNN.csv's order. \throws OutputFailure.
   void snapshot(int index, double time, const Particles<Dim>& particles) override {
-    next_.snapshot(index, time, particles);  // the snapshot first, then its exact profile
-    if (solution_) {
+    if (solution_) {  // before the snapshot, whose snapshots.pvd is written last
       char name[32];
       std::snprintf(name, sizeof name, "/exact_%04d.csv", index);
       OutputFile csv(folder_ + name, OutputFile::Mode::atomic);
@@ -125,6 +124,7 @@ class ExactWriter : public Monitor<Dim> {
       }
       csv.close();
     }
+    next_.snapshot(index, time, particles);
   }
   void progress(double time, double end_time) override { next_.progress(time, end_time); }
 
