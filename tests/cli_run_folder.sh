@@ -90,7 +90,8 @@ for signal in TERM INT; do
   tail -c 1 "$long/observers.csv" | od -c | grep -q '\\n' || fail "SIG$signal: observers.csv ends in the middle of a line"
 done
 
-# The folder deleted while the run writes: the next snapshot fails, one `cannot write` line, exit 3.
+# The folder deleted while the run writes: the next snapshot fails (its exact profile, exact_0001.csv, is written
+# first), one `cannot write` line, exit 3.
 gone=$work/gone
 "$mpm" run "$scene" --out "$gone" --set grid.cells=[4000] --set solver.end_time=1.0 \
   --set 'output.snapshots=[0.0, 2.0e-5]' --max-steps 1e9 --force >/dev/null 2>"$work/err" &
@@ -100,7 +101,7 @@ rm -rf "$gone"
 wait $pid
 code=$?
 [[ $code -eq 3 && $(wc -l <"$work/err") -eq 1 ]] &&
-  grep -q "^error: $gone/snapshot_0001.csv: cannot write: " "$work/err" ||
+  grep -q "^error: $gone/exact_0001.csv: cannot write: " "$work/err" ||
   fail "a folder deleted during the run: exit $code, $(cat "$work/err")"
 
 # --out that is not a folder: a file, a device, a link to nothing: exit 2, nothing written.

@@ -48,7 +48,7 @@ int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRe
   bool cannot_write = false;  // then run.json likely cannot be written either: one `cannot write` line is enough
   try {
     io::RunWriter<Dim> writer(request.folder, scene, setup.observed);
-    io::ExactWriter<Dim> monitor(request.folder, scene, setup.particles, writer);
+    io::ExactWriter<Dim> monitor(request.folder, scene, setup.particles, setup.observed, writer);
     summary = run_setup<Dim>(scene, setup, monitor, &summary);
     monitor.finish();
     writer.finish();
@@ -114,9 +114,10 @@ int run_scene(io::Scene scene, RunRequest request) {
 inline std::unique_ptr<CommandParser> run_parser(RunRequest& request) {
   auto app = std::make_unique<CommandParser>(
       "run",
-      "Runs a scene and writes observers.csv, energy.csv, exact.csv (when the scene names an exact solution),\n"
-      "snapshot_NNNN.csv/.vtp, snapshots.pvd (ParaView time series) and run.json into its folder; run.json says\n"
-      "\"running\", then \"done\", \"failed\" or \"interrupted\". Files of an earlier run there are removed first.\n"
+      "Runs a scene and writes observers.csv, energy.csv, grid.csv, exact.csv and exact_NNNN.csv (when the scene\n"
+      "names an exact solution), snapshot_NNNN.csv/.vtp, snapshots.pvd (ParaView time series) and run.json into\n"
+      "its folder; run.json says \"running\", then \"done\", \"failed\" or \"interrupted\". Files of an earlier run\n"
+      "there are removed first.\n"
       "Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.");
   app->add_option("SCENE.toml", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
   app->add_option("--out", request.folder, "output folder (default runs/<scene file name>)")

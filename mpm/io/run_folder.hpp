@@ -21,13 +21,14 @@
 namespace mpm::io {
 
 /// True if `name` is a file `mpm run` or `mpm plot` writes: run.json, snapshots.pvd, snapshot_NNNN.csv / .vtp
-/// (and the .vtk of earlier versions), the hidden temporaries of those (".run.json.partial"), observers.csv,
-/// energy.csv, exact.csv, plot.gp, plot.log, observers.png and energy.png.
+/// (and the .vtk of earlier versions), exact_NNNN.csv, the hidden temporaries of those (".run.json.partial"),
+/// observers.csv, energy.csv, exact.csv, grid.csv, plot.gp, plot.log, observers.png, energy.png and
+/// profile_NNNN.png.
 inline bool run_output_name(const std::string& name) {
   static const std::regex names(
-      R"((\.(run\.json|snapshots\.pvd|snapshot_\d{4}\.(csv|vtp|vtk))\.partial)|)"
-      R"(run\.json|snapshots\.pvd|snapshot_\d{4}\.(csv|vtp|vtk)|(observers|energy|exact)\.csv|plot\.(gp|log)|)"
-      R"((observers|energy)\.png)");
+      R"((\.(run\.json|snapshots\.pvd|snapshot_\d{4}\.(csv|vtp|vtk)|exact_\d{4}\.csv|grid\.csv)\.partial)|)"
+      R"(run\.json|snapshots\.pvd|snapshot_\d{4}\.(csv|vtp|vtk)|exact_\d{4}\.csv|profile_\d{4}\.png|)"
+      R"((observers|energy|exact|grid)\.csv|plot\.(gp|log)|(observers|energy)\.png)");
   return std::regex_match(name, names);
 }
 
@@ -95,11 +96,12 @@ inline void clear_run_folder(const std::string& folder) {
 
 TEST_CASE("run folder: an earlier run's files removed, other files kept, a link refused") {
   for (const char* name : {"snapshot_0001.csv", "snapshot_9999.vtk", ".run.json.partial", ".snapshot_0003.vtp.partial",
-                           "plot.log", "energy.png", "exact.csv", "snapshots.pvd"})
+                           "plot.log", "energy.png", "exact.csv", "snapshots.pvd", "exact_0002.csv", "grid.csv",
+                           "profile_0002.png", ".exact_0002.csv.partial"})
     CHECK_MESSAGE(run_output_name(name), name);
   for (const char* name : {"snapshot_12345.vtk", "snapshot_00001.csv", ".plot.gp.partial", ".notes.partial", ".partial",
                            "snapshot_001.csv", "snapshot_00a1.csv", "snapshot_0001.txt", "notes.csv", ".run.json",
-                           "run.json.partial", "xrun.json"})
+                           "run.json.partial", "xrun.json", "exact_002.csv", "profile_0002.csv"})
     CHECK_MESSAGE(!run_output_name(name), name);
   namespace fs = std::filesystem;
   const fs::path folder = fs::temp_directory_path() / ("mpm_run_folder_" + std::to_string(::getpid()));

@@ -1,6 +1,7 @@
 /// \file
-/// What a run writes into its folder, every file through OutputFile (mpm/io/output_file.hpp): observers.csv and
-/// energy.csv at each sample, snapshot_NNNN.csv and .vtp (VTK XML polydata, listed with its time in snapshots.pvd,
+/// What a run writes into its folder, every file through OutputFile (mpm/io/output_file.hpp): grid.csv (the grid
+/// lines `mpm plot` draws), observers.csv and energy.csv at each sample, snapshot_NNNN.csv and .vtp (VTK XML
+/// polydata, listed with its time in snapshots.pvd,
 /// the time series ParaView opens) at each snapshot, and run.json (write_run_json).
 #pragma once
 #include <doctest/doctest.h>
@@ -110,6 +111,22 @@ class RunWriter : public Monitor<Dim> {
     observers_ << "\n";
     energy_ << "t,kinetic,strain,total,momentum_x" << (Dim == 2 ? ",momentum_y" : "") << "\n";
     snapshots_.precision(17);
+    write_file(folder + "/grid.csv", grid_csv(scene));
+  }
+
+  /// grid.csv, what `mpm plot` draws the grid lines from: per axis the first and last grid line (m, margins
+  /// included) and the cells between them, `x_min,x_max,x_cells[,y_min,y_max,y_cells]`, one row.
+  static std::string grid_csv(const Scene& scene) {
+    std::ostringstream header, row;
+    row.precision(17);
+    for (int axis = 0; axis < Dim; ++axis) {
+      const std::string name = axis_name(axis);
+      header << (axis ? "," : "") << name << "_min," << name << "_max," << name << "_cells";
+      row << (axis ? "," : "") << scene.origin[axis] - scene.margin_min[axis] * scene.spacing << ","
+          << scene.origin[axis] + scene.length[axis] + scene.margin_max[axis] * scene.spacing << ","
+          << scene.margin_min[axis] + scene.cells[axis] + scene.margin_max[axis];
+    }
+    return header.str() + "\n" + row.str() + "\n";
   }
 
   /// Closes the CSV histories. \throws OutputFailure if either could not be written in full.
@@ -263,6 +280,13 @@ inline std::vector<std::pair<std::string, std::string>> column_units(int dimensi
                              {"energy.csv:total", energy}, {"energy.csv:momentum_x", momentum}});
   if (two) units.push_back({"energy.csv:momentum_y", momentum});
   units.insert(units.end(), {{"exact.csv:t", "s"}, {"exact.csv:NAME.v_x", "m/s"}, {"exact.csv:NAME.sigma_xx", "Pa"}});
+  units.insert(units.end(), {{"exact_NNNN.csv:id", "-"}, {"exact_NNNN.csv:X", "m"}, {"exact_NNNN.csv:u_x", "m"},
+                             {"exact_NNNN.csv:v_x", "m/s"}, {"exact_NNNN.csv:sigma_xx", "Pa"},
+                             {"grid.csv:x_min", "m"}, {"grid.csv:x_max", "m"}, {"grid.csv:x_cells", "-"}});
+  if (two)
+    units.insert(units.end(), {{"exact_NNNN.csv:Y", "m"}, {"exact_NNNN.csv:u_y", "m"}, {"exact_NNNN.csv:v_y", "m/s"},
+                               {"exact_NNNN.csv:sigma_yy", "Pa"}, {"exact_NNNN.csv:sigma_xy", "Pa"},
+                               {"grid.csv:y_min", "m"}, {"grid.csv:y_max", "m"}, {"grid.csv:y_cells", "-"}});
   if (two)
     units.insert(units.end(), {{"exact.csv:NAME.u_y", "m"}, {"exact.csv:NAME.v_y", "m/s"},
                                {"exact.csv:NAME.sigma_yy", "Pa"}, {"exact.csv:NAME.sigma_xy", "Pa"}});

@@ -497,7 +497,7 @@ inline const std::vector<SceneKey> all_keys = {
         "column name in observers.csv (letters, digits, _)"),
     key("observer[].position", &ObserverSettings::position, required, "m",
         "the particle nearest this point at t = 0 is observed (run.json: `observed`); exact.csv holds the exact "
-        "solution at the point itself, which must lie in the body"),
+        "solution at that particle's reference position; the point must lie in the body"),
     shown_if(key("output.every", &RunControl::sample_every, "1", "steps",
                  "observers and energy sampled every n steps and at the end", whole(1, 2147483647)),
              every_shown),
