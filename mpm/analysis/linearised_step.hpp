@@ -16,7 +16,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "mpm/core/phase_timers.hpp"
+#include "mpm/core/step_phases.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/loading/body_force.hpp"
 #include "mpm/model.hpp"
@@ -86,7 +86,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
   no_body_force.per_unit_mass.assign(particles.size(), Vector<Dim>::Zero());
   GridFields<Dim> grid(model.grid.node_count());
   grid.prepare_chunks(particles.size());
-  PhaseTimers timers;
+  NoPhaseObserver observer;
   const int size = particles.size() * linearised_states_per_particle<Dim>();
   const double perturbation = 1e-6;
   Eigen::MatrixXd step(size, size);
@@ -100,7 +100,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
         particles.stress[p] = material.stress<Dim>(particles.strain[p]);
         particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
       }
-      integrator.step(model, stencils, no_body_force, dt, particles, grid, timers);
+      integrator.step(model, stencils, no_body_force, dt, particles, grid, observer);
       response[side] = detail::state_vector(particles);
     }
     step.col(column) = (response[0] - response[1]) / (2.0 * perturbation);
