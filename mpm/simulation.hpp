@@ -12,7 +12,9 @@
 ///   5. the observer samples and snapshots.
 ///
 /// The loop knows no files: a Monitor (io/run_writer.hpp) receives the samples. Every pass over the
-/// particles runs on RunControl::threads cores (mpm/core/parallel.hpp); PhaseTimers times each phase.
+/// particles runs on RunControl::threads cores (mpm/core/parallel.hpp). After each named phase of the step
+/// (mpm/core/step_phases.hpp) the loop's LoopPhases times it (PhaseTimers) and shows it to a Monitor that
+/// watches that step (`mpm trace`).
 #pragma once
 #include <array>
 #include <algorithm>
@@ -53,6 +55,7 @@ struct RunControl {
   /// the initial energy plus the work done by the body force: the signature of an instability.
   double energy_growth_limit = 10.0;
   int threads = 0;  ///< cores the particle loops run on; 0: all (the results are the same bits on any number)
+  long last_step = 0;  ///< the run stops after this step, before end_time (`mpm trace`); 0: at end_time
 };
 
 struct RunSummary {
@@ -65,7 +68,7 @@ struct RunSummary {
   double largest_mass_error = 0.0;
   ShapeDiagnostics shape;
   int threads = 1;                                ///< cores the particle loops ran on
-  std::array<double, phase_count> phase_seconds{};  ///< wall seconds per Phase, summed over the steps
+  std::array<double, timed_part_count> phase_seconds{};  ///< wall seconds per TimedPart, summed over the steps
 };
 
 /// Receives what a run produces; implemented by the writers of io/ and by tests.
@@ -75,6 +78,24 @@ struct Monitor {
   virtual void sample(long /*step*/, double /*time*/, const Particles<Dim>& /*particles*/, const Balances<Dim>& /*balances*/) {}
   virtual void snapshot(int /*index*/, double /*time*/, const Particles<Dim>& /*particles*/) {}
   virtual void progress(double /*time*/, double /*end_time*/) {}
+  /// True if the monitor watches the phases of step `step` (numbered from 1), which goes from `time` to `time` + `dt`;
+  /// asked once before each step.
+  virtual bool watches(long /*step*/, double /*time*/, double /*dt*/) { return false; }
+  /// After each phase of a watched step, the loop's own phases (stencils, body_force, checks, output) too.
+  virtual void after(Phase /*phase*/, const Particles<Dim>& /*particles*/, const GridFields<Dim>& /*grid*/) {}
+};
+
+/// The observer of the phases that the loop passes to the integrator's step(): it times each phase and, during a
+/// step that the monitor watches, shows it to the monitor (one test of a pointer per phase when none does).
+template <int Dim>
+struct LoopPhases {
+  PhaseTimers timers;
+  Monitor<Dim>* watcher = nullptr;  ///< the monitor, while it watches the step; else null
+
+  void after(Phase phase, const Particles<Dim>& particles, const GridFields<Dim>& grid) {
+    timers.lap(phase);
+    if (watcher) watcher->after(phase, particles, grid);
+  }
 };
 
 template <int Dim, class Shape, class Integrator>
@@ -110,13 +131,13 @@ class Simulation {
     if (control_.sample_times.empty()) monitor.sample(step, time, particles_, survey.balances);
     else write_due_samples(step, time, next_sample, survey.balances, monitor);
     write_due_snapshots(time, next_snapshot, monitor);
-    PhaseTimers& timers = timers_;
-    timers.restart();
+    LoopPhases<Dim>& phases = phases_;
+    phases.timers.restart();
 
     const bool fixed = control_.fixed_dt > 0.0;
     double anchor = 0.0;  // a fixed step's clock: anchor + n dt, n steps since the last landing, never a drifting sum
     long since_anchor = 0;
-    while (time < control_.end_time) {
+    while (time < control_.end_time && (control_.last_step == 0 || step < control_.last_step)) {
       // 1. Time step, Eq. (42) or fixed, landing exactly on output times and on the end time (a fixed step within
       //    1e-9 dt of the target keeps its length).
       double dt = fixed ? control_.fixed_dt
@@ -125,14 +146,15 @@ class Simulation {
       const double target = next_stop(time, next_snapshot, next_sample);
       const bool lands = time + dt * (1.0 + 1e-9) >= target;
       if (lands && !(fixed && std::abs(target - time - dt) <= 1e-9 * dt)) dt = target - time;
+      phases.watcher = monitor.watches(step + 1, time, dt) ? &monitor : nullptr;
       // 2. Stencils at the current positions x_p^k.
       locate_particles(step, time);
-      timers.lap(Phase::stencils);
+      phases.after(Phase::stencils, particles_, grid_fields_);
       // 3. One step of the integrator.
       const double body_force_time = control_.body_force_time == BodyForceTime::step_end ? time + dt : time;
       model_.body_force.evaluate(body_force_time, particles_, body_force_);  // b_p of Eq. (15), at x_p^k
-      timers.lap(Phase::forces);
-      integrator_.step(model_, stencils_, body_force_, dt, particles_, grid_fields_, timers);
+      phases.after(Phase::body_force, particles_, grid_fields_);
+      integrator_.step(model_, stencils_, body_force_, dt, particles_, grid_fields_, phases);
       time = lands ? target : fixed ? anchor + static_cast<double>(++since_anchor) * dt : time + dt;
       if (lands) anchor = target, since_anchor = 0;
       ++step;
@@ -146,14 +168,14 @@ class Simulation {
       summary.largest_mass_error = std::max(summary.largest_mass_error, nodal_mass_error(now.mass));
       external_work_ += dt * body_force_power(particles_, body_force_, now.momentum);
       check_health(step, time, survey);
-      timers.lap(Phase::checks);
+      phases.after(Phase::checks, particles_, grid_fields_);
       // 5. Output.
       const bool last = time >= control_.end_time;
       if (!control_.sample_times.empty()) write_due_samples(step, time, next_sample, now, monitor);
       else if (step % control_.sample_every == 0 || last) monitor.sample(step, time, particles_, now);
       write_due_snapshots(time, next_snapshot, monitor);
       monitor.progress(time, control_.end_time);
-      timers.lap(Phase::output);
+      phases.after(Phase::output, particles_, grid_fields_);
     }
 
     finish_summary();
@@ -173,7 +195,7 @@ class Simulation {
     summary_.particle_steps_per_second =
         summary_.wall_seconds > 0.0 ? double(summary_.steps) * particles_.size() / summary_.wall_seconds : 0.0;
     summary_.shape = shape_.diagnostics();
-    summary_.phase_seconds = timers_.seconds;
+    summary_.phase_seconds = phases_.timers.seconds;
   }
 
   /// The next time the loop must land on: the next snapshot time, the next sample time or the end time.
@@ -256,7 +278,7 @@ class Simulation {
   Stencils<Dim> stencils_;
   ParticleBodyForces<Dim> body_force_;  ///< b_p of the current step
   RunSummary summary_;
-  PhaseTimers timers_;
+  LoopPhases<Dim> phases_;  ///< times the phases; shows them to a watching monitor
   std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   double initial_energy_ = 0.0;
   double external_work_ = 0.0;  ///< \f$ \int \sum_p m_p \mathbf b_p \cdot \mathbf v_p \, dt \f$

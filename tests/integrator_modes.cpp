@@ -49,7 +49,7 @@ ModeHistory run_mode(const Integrator& integrator, int cells, int mode, double O
   no_body_force.per_unit_mass.assign(particles.size(), mpm::Vector<1>::Zero());
   mpm::GridFields<1> grid(setup.model.grid.node_count());
   grid.prepare_chunks(particles.size());
-  mpm::PhaseTimers timers;
+  mpm::NoPhaseObserver observer;
   ModeHistory history;
   auto record = [&] {
     double energy = 0.0;
@@ -62,7 +62,7 @@ ModeHistory run_mode(const Integrator& integrator, int cells, int mode, double O
   record();
   for (int n = 0; n < steps; ++n) {
     mpm::compute_stencils(shape, particles.position, stencils);
-    integrator.step(setup.model, stencils, no_body_force, Omega / omega, particles, grid, timers);
+    integrator.step(setup.model, stencils, no_body_force, Omega / omega, particles, grid, observer);
     record();
     if (history.energy.back() > 1e6 * history.energy.front()) break;  // unstable: stop before it leaves the grid
   }

@@ -21,7 +21,7 @@
 #include <cmath>
 #include <vector>
 
-#include "mpm/core/phase_timers.hpp"
+#include "mpm/core/step_phases.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/loading/body_force.hpp"
 #include "mpm/model.hpp"
@@ -105,7 +105,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
   no_body_force.per_unit_mass.assign(particles.size(), Vector<Dim>::Zero());
   GridFields<Dim> grid(model.grid.node_count());
   grid.prepare_chunks(particles.size());
-  PhaseTimers timers;
+  NoPhaseObserver observer;
   const int size = particles.size() * linearised_states_per_particle<Dim>();
   const double perturbation = 1e-6;
   const Eigen::VectorXd unit = detail::state_scales(model).replicate(particles.size(), 1);
@@ -120,7 +120,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
         particles.stress[p] = material.stress<Dim>(particles.strain[p]);
         particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
       }
-      integrator.step(model, stencils, no_body_force, dt, particles, grid, timers);
+      integrator.step(model, stencils, no_body_force, dt, particles, grid, observer);
       response[side] = detail::state_vector(particles);
     }
     step.col(column) = (response[0] - response[1]).cwiseQuotient(unit) / (2.0 * perturbation);

@@ -20,6 +20,7 @@
 #include "mpm/cli/shape_command.hpp"
 #include "mpm/cli/stability_command.hpp"
 #include "mpm/cli/study_command.hpp"
+#include "mpm/cli/trace_command.hpp"
 #include "mpm/io/scene_keys.hpp"
 
 namespace mpm::cli {
@@ -82,12 +83,13 @@ inline std::string main_help() {
   return std::string("mpm: the Material Point Method with linear, uGIMP and LME shape functions (README.md)\n\n") +
          run_usage() + "\n" + exact_usage() + "\n" + help_of(compare_command) + "\n" + help_of(shape_command) + "\n" +
          help_of(plot_command) + "\n" + help_of(stability_command) + "\n" +
-         help_of(study_command) +
+         help_of(study_command) + "\n" + help_of(trace_command) +
          "\nusage: mpm --version\n  Prints the version (git describe at build time).\n\n" + scene_keys_help() + "\n" +
          exit_codes;
 }
 
-/// The help of one command ("run", "exact", "compare", "shape", "plot", "stability", "study"); the main help for any other.
+/// The help of one command ("run", "exact", "compare", "shape", "plot", "stability", "study", "trace"); the main help
+/// for any other.
 inline std::string command_help(const std::string& command) {
   if (command == "run") return run_usage() + "\n" + scene_keys_help() + "\n" + exit_codes;
   if (command == "shape") return help_of(shape_command) + "\n" + exit_codes;
@@ -97,6 +99,7 @@ inline std::string command_help(const std::string& command) {
     return exact_usage() + "\n" + exit_codes + "  (mpm exact exits 3 only when its output cannot be written)\n";
   if (command == "compare") return help_of(compare_command);
   if (command == "study") return help_of(study_command);
+  if (command == "trace") return help_of(trace_command) + "\n" + exit_codes;
   return main_help();
 }
 
@@ -119,7 +122,7 @@ TEST_CASE("mpm help: every scene key with its default and unit, and the exit cod
       CHECK(line.find(choice) != std::string::npos);  // every word a choice takes
     CHECK(line.find(std::string("  ") + key.unit + "  ") != std::string::npos);
   }
-  for (const std::string command : {"run", "shape", "plot", "exact", "stability", ""})
+  for (const std::string command : {"run", "shape", "plot", "exact", "stability", "trace", ""})
     CHECK(command_help(command).find("  3  the method failed") != std::string::npos);
   for (const std::string name :
        {"dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"})

@@ -18,7 +18,8 @@ namespace {
 
 const char* usage =
     "usage: mpm run SCENE.toml | mpm exact SCENE.toml | mpm compare RESULT.csv SCENE.toml | mpm plot RUN_DIR\n"
-    "       mpm shape | mpm stability | mpm study STUDY.toml   [OPTIONS]: mpm COMMAND --help\n"
+    "       mpm shape | mpm stability | mpm study STUDY.toml | mpm trace SCENE.toml --step N\n"
+    "       [OPTIONS]: mpm COMMAND --help\n"
     "       mpm --version | mpm --help\n";
 
 /// Standard output flushed and closed: a full disk or a closed pipe shows here, after the command said
@@ -40,6 +41,7 @@ int dispatch(const std::vector<std::string>& arguments, const mpm::io::RunIdenti
   if (arguments[0] == "shape") return mpm::cli::shape_command(rest, std::cout, std::cerr);
   if (arguments[0] == "stability") return mpm::cli::stability_command(rest, std::cout, std::cerr);
   if (arguments[0] == "study") return mpm::cli::study_command(rest, std::cout, std::cerr);
+  if (arguments[0] == "trace") return mpm::cli::trace_command(rest, std::cout, std::cerr);
   if (arguments[0] == "run") {
     mpm::cli::RunRequest request;
     request.identity = identity;

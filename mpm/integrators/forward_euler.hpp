@@ -2,7 +2,7 @@
 /// Standard explicit MPM, "forward Euler" (FE), as the authors run it (paper/02_mpm_forward_euler.md): update stress
 /// first (USF), FLIP velocity increment, positions moved with the updated nodal momentum.
 #pragma once
-#include "mpm/core/phase_timers.hpp"
+#include "mpm/core/step_phases.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
 #include "mpm/model.hpp"
@@ -35,32 +35,37 @@ struct ForwardEuler {
   /// 7. G2P, Eqs. (19)-(22): \f$ \mathbf v_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf f_I / m_I \f$,
   ///    \f$ \mathbf x_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf p_I / m_I \f$ with the updated momentum
   ///    (\ref forward_euler_particle_update).
-  template <int Dim>
+  ///
+  /// `observer.after(phase, particles, grid)` is called after each of them (Phase: reset, mass_momentum,
+  /// fixed_momentum, velocity_k, stress, forces, momentum_balance, euler_update): the loop times them, `mpm trace`
+  /// prints them; NoPhaseObserver watches nothing.
+  template <int Dim, class Observer>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
-            Particles<Dim>& particles, GridFields<Dim>& grid, PhaseTimers& timers) const {
+            Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
     grid.reset();
-    timers.lap(Phase::grid);
-    // 1. P2G: lumped mass, Eq. (13), and momentum p_I = sum_p N_Ip m_p v_p.
+    observer.after(Phase::reset, particles, grid);
+    // 1. P2G: lumped mass, Eq. (13), and momentum p_I^k = sum_p N_Ip m_p v_p^k.
     nodal_mass_and_momentum(particles, stencils, grid);
-    timers.lap(Phase::p2g);
+    observer.after(Phase::mass_momentum, particles, grid);
     // 2. Essential boundary conditions on the momentum.
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
-    // 3. Nodal velocity v_I^k = p_I / m_I.
+    observer.after(Phase::fixed_momentum, particles, grid);
+    // 3. Nodal velocity v_I^k = p_I^k / m_I.
     nodal_velocity_from_momentum(grid);
-    timers.lap(Phase::grid);
+    observer.after(Phase::velocity_k, particles, grid);
     // 4. Update stress first: strain rate, Eq. (16); density, Eq. (17); stress, Eq. (3).
     update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
-    timers.lap(Phase::stress);
+    observer.after(Phase::stress, particles, grid);
     // 5. Nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
-    timers.lap(Phase::forces);
-    // 6. Momentum balance, Eq. (12): p_I += dt f_I.
+    observer.after(Phase::forces, particles, grid);
+    // 6. Momentum balance, Eq. (12): p_I^{k+1} = p_I^k + dt f_I.
     update_nodal_momentum(dt, grid);
-    timers.lap(Phase::grid);
+    observer.after(Phase::momentum_balance, particles, grid);
     // 7. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
     forward_euler_particle_update(stencils, grid, dt, position_velocity, particles, flip_fraction);
-    timers.lap(Phase::g2p);
+    observer.after(Phase::euler_update, particles, grid);
   }
 };
 

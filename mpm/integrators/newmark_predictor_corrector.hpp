@@ -14,7 +14,7 @@
 /// Eq. (24) for x_p with its beta, Eq. (25) for a_p, and then builds the explicit predictor and
 /// corrector on the grid instead: Eqs. (26)-(30), with the particle update of Eqs. (31)-(33).
 #pragma once
-#include "mpm/core/phase_timers.hpp"
+#include "mpm/core/step_phases.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
 #include "mpm/model.hpp"
@@ -54,31 +54,34 @@ struct NewmarkPredictorCorrector {
   ///    (\ref newmark_particle_update); with particle_velocity = average, Eq. (23)'s
   ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t ((1-\gamma) \mathbf a_p^k + \gamma \mathbf a_p^{k+1}) \f$ instead of Eq. (32).
   /// 9. The nodal fields are reset at the start of the next step (GridFields::reset).
-  template <int Dim>
+  ///
+  /// `observer.after(phase, particles, grid)` is called after each phase (Phase: reset, mass_predictor,
+  /// fixed_predictor, stress, forces, corrector, newmark_update): the loop times them, `mpm trace` prints them.
+  template <int Dim, class Observer>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
-            Particles<Dim>& particles, GridFields<Dim>& grid, PhaseTimers& timers) const {
+            Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
     grid.reset();
-    timers.lap(Phase::grid);
+    observer.after(Phase::reset, particles, grid);
     // Steps 1-2. Lumped nodal mass, Eq. (13), and velocity predictor by projection, Eqs. (26)-(29).
     nodal_mass_and_velocity_predictor(particles, stencils, newmark_gamma, dt, grid);
-    timers.lap(Phase::p2g);
+    observer.after(Phase::mass_predictor, particles, grid);
     // Step 3. Essential boundary conditions overwrite the predictor.
     impose_fixed_velocity(model.fixed, grid.nodal_velocity);
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
-    timers.lap(Phase::grid);
+    observer.after(Phase::fixed_predictor, particles, grid);
     // Steps 4-5. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
     update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
-    timers.lap(Phase::stress);
+    observer.after(Phase::stress, particles, grid);
     // Step 6. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
-    timers.lap(Phase::forces);
-    // Step 7. Corrector, Eq. (30): v_I += gamma dt f_I / m_I.
+    observer.after(Phase::forces, particles, grid);
+    // Step 7. Corrector, Eq. (30): v_I^{k+1} = v_I^pred + gamma dt f_I / m_I.
     newmark_corrector(newmark_gamma, dt, grid);
-    timers.lap(Phase::grid);
+    observer.after(Phase::corrector, particles, grid);
     // Step 8. Particle update, Eqs. (31)-(33) (or Eq. (23) for the velocity).
     newmark_particle_update(stencils, grid, newmark_gamma, dt, position_velocity, particles, particle_velocity);
-    timers.lap(Phase::g2p);
+    observer.after(Phase::newmark_update, particles, grid);
     // Step 9. The nodal fields are reset at the start of the next step.
   }
 };

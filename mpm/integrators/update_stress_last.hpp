@@ -13,7 +13,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
-#include "mpm/core/phase_timers.hpp"
+#include "mpm/core/step_phases.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
 #include "mpm/model.hpp"
@@ -51,38 +51,43 @@ struct UpdateStressLast {
   ///    boundary conditions again.
   /// 7. \f$ \mathbf v_I^{k+1} = \mathbf p_I / m_I \f$; update stress last: strain rate, Eq. (16); density, Eq. (17);
   ///    stress, Eq. (3) (\ref update_strain_density_stress).
-  template <int Dim>
+  ///
+  /// `observer.after(phase, particles, grid)` is called after each phase (Phase: reset, mass_momentum,
+  /// fixed_momentum, velocity_k, forces, momentum_balance, euler_update, MUSL's reprojection, velocity_k1, stress).
+  template <int Dim, class Observer>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
-            Particles<Dim>& particles, GridFields<Dim>& grid, PhaseTimers& timers) const {
+            Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
     grid.reset();
-    timers.lap(Phase::grid);
-    // 1. P2G: lumped mass, Eq. (13), and momentum p_I = sum_p N_Ip m_p v_p.
+    observer.after(Phase::reset, particles, grid);
+    // 1. P2G: lumped mass, Eq. (13), and momentum p_I^k = sum_p N_Ip m_p v_p^k.
     nodal_mass_and_momentum(particles, stencils, grid);
-    timers.lap(Phase::p2g);
-    // 2. Essential boundary conditions on the momentum; v_I^k = p_I / m_I.
+    observer.after(Phase::mass_momentum, particles, grid);
+    // 2. Essential boundary conditions on the momentum; v_I^k = p_I^k / m_I.
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    observer.after(Phase::fixed_momentum, particles, grid);
     nodal_velocity_from_momentum(grid);
-    timers.lap(Phase::grid);
+    observer.after(Phase::velocity_k, particles, grid);
     // 3. Nodal forces from the stress of the step before, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
-    timers.lap(Phase::forces);
-    // 4. Momentum balance, Eq. (12): p_I += dt f_I.
+    observer.after(Phase::forces, particles, grid);
+    // 4. Momentum balance, Eq. (12): p_I^{k+1} = p_I^k + dt f_I.
     update_nodal_momentum(dt, grid);
-    timers.lap(Phase::grid);
+    observer.after(Phase::momentum_balance, particles, grid);
     // 5. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
     forward_euler_particle_update(stencils, grid, dt, position_velocity, particles, flip_fraction);
-    timers.lap(Phase::g2p);
+    observer.after(Phase::euler_update, particles, grid);
     // 6. MUSL: the new particle velocities projected to the nodes again, and held at the walls.
     if (stress_velocity == StressLastVelocity::reprojected_particles) {
       nodal_momentum_from_particles(particles, stencils, grid);
       impose_fixed_velocity(model.fixed, grid.nodal_momentum);
-      timers.lap(Phase::p2g);
+      observer.after(Phase::reprojection, particles, grid);
     }
-    // 7. v_I^{k+1} = p_I / m_I; update stress last: Eq. (16), Eq. (17), Eq. (3).
+    // 7. v_I^{k+1} = p_I^{k+1} / m_I; update stress last: Eq. (16), Eq. (17), Eq. (3).
     nodal_velocity_from_momentum(grid);
+    observer.after(Phase::velocity_k1, particles, grid);
     update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
-    timers.lap(Phase::stress);
+    observer.after(Phase::stress, particles, grid);
   }
 };
 
@@ -101,10 +106,10 @@ TEST_CASE("USL, MUSL: one step of the worked example by hand, node 2 fixed: each
     model.materials = {LinearElastic{example.young_modulus, 0.0, example.density}};
     model.fixed = {FixedDof{2, 0}};
     const ParticleBodyForces<1> body_force = testing::WorkedExample::body_force();
-    PhaseTimers timers;
+    NoPhaseObserver observer;
     UpdateStressLast integrator;
     integrator.stress_velocity = velocity;
-    integrator.step(model, example.stencils, body_force, example.dt, example.particles, example.fields, timers);
+    integrator.step(model, example.stencils, body_force, example.dt, example.particles, example.fields, observer);
     return example.particles;
   };
   for (auto velocity : {StressLastVelocity::updated_nodal, StressLastVelocity::reprojected_particles}) {

@@ -313,8 +313,8 @@ inline void write_run_json(const std::string& path, const Scene& scene, const Ru
                         {"reference_position", json_array(observed.reference_position, json_number)}});
   });
   std::vector<std::pair<std::string, std::string>> phases, scene_units, members, units;
-  for (int phase = 0; phase < phase_count; ++phase)
-    phases.emplace_back(phase_name(phase), json_number(summary.phase_seconds[phase]));
+  for (int part = 0; part < timed_part_count; ++part)
+    phases.emplace_back(timed_part_name(part), json_number(summary.phase_seconds[part]));
   for (const SceneKey& key : scene_keys()) scene_units.emplace_back(key.key, key.unit);
   const ShapeDiagnostics& shape = summary.shape;
   struct Field {

@@ -1,0 +1,426 @@
+/// \file
+/// `mpm trace SCENE.toml --step N`: runs the scene to step N and prints, after each phase of that step of the scene's
+/// integrator (mpm/core/step_phases.hpp), every nodal quantity of the nodes that hold mass and every particle
+/// quantity, as CSV (one row per node or particle and phase) or as an aligned table. A column's name says its time
+/// level where the step has two: `v_I_k` is \f$ \mathbf v_I^k \f$, `v_I_k1` is \f$ \mathbf v_I^{k+1} \f$, `v_I_pred`
+/// the predictor of Eq. (29); a nodal value, once computed, stays in the later phases' rows.
+#pragma once
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mpm/cli/options.hpp"
+#include "mpm/integrators/forward_euler.hpp"
+#include "mpm/integrators/newmark_predictor_corrector.hpp"
+#include "mpm/run.hpp"
+
+namespace mpm::cli {
+
+/// What `mpm trace` was asked to do.
+struct TraceRequest {
+  std::string scene_path, format = "csv";
+  long step = 0;
+  std::vector<std::string> overrides;
+};
+
+/// An integrator variant as the trace names it.
+struct TraceVariant {
+  std::string description;            ///< "forward Euler, update stress first (USF), ..."
+  std::string moving = "v_I_k1";       ///< the name of the nodal velocity that moves the particles (G2P)
+  std::string stress_last = "v_I_k1";  ///< USL, MUSL: of the velocity of their stress update (`v_I_k1_musl`)
+  bool accelerations = false;          ///< the particles carry a_p (the predictor-corrector)
+};
+
+/// One table of a phase: a header and its rows, the numbers already written.
+struct TraceTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+/// The printout of one phase.
+struct TraceBlock {
+  Phase phase;
+  TraceTable nodes, particles;
+};
+
+/// A number as the trace writes it: 15 significant digits in CSV (0.1 + 0.2 is 0.3), 10 in a table.
+inline std::string trace_number(double value, bool csv) {
+  char text[40];
+  std::snprintf(text, sizeof text, csv ? "%.15g" : "%.10g", value == 0.0 ? 0.0 : value);  // no -0
+  return text;
+}
+
+/// A Monitor that watches one step: after each phase of the integrator's step() it copies the nodal fields the
+/// phase has computed under their names and writes the rows of the nodes with mass and of every particle.
+template <int Dim>
+class StepTrace : public Monitor<Dim> {
+ public:
+  StepTrace(const Model<Dim>& model, long step, TraceVariant variant, bool csv)
+      : model_(model), step_(step), names_(std::move(variant)), csv_(csv) {}
+
+  bool watches(long step, double time, double dt) override {
+    if (step != step_) return false;
+    time_ = time, dt_ = dt;
+    return true;
+  }
+
+  void after(Phase phase, const Particles<Dim>& particles, const GridFields<Dim>& grid) override {
+    if (!phase_info(phase).of_step) return;
+    capture(phase, grid);
+    if (phase == Phase::stress) state_level_ = "k1";
+    if (phase == Phase::euler_update || phase == Phase::newmark_update) motion_level_ = "k1";
+    blocks_.push_back({phase, node_table(grid), particle_table(particles)});
+  }
+
+  bool seen() const { return !blocks_.empty(); }
+  double time() const { return time_; }
+  double dt() const { return dt_; }
+  const std::vector<TraceBlock>& blocks() const { return blocks_; }
+
+ private:
+  /// A nodal field captured under a name: `width` numbers per node, the components of a vector or one scalar.
+  struct Column {
+    std::string name;
+    int width;
+    bool vector;
+    std::vector<double> values;
+  };
+
+  void capture(Phase phase, const GridFields<Dim>& grid) {
+    const bool predictor = phase == Phase::mass_predictor || phase == Phase::fixed_predictor;
+    if (phase == Phase::mass_momentum || phase == Phase::mass_predictor) keep("m_I", grid.nodal_mass);
+    if (predictor) keep("v_I_pred", grid.nodal_velocity);
+    if (predictor || phase == Phase::mass_momentum || phase == Phase::fixed_momentum)
+      keep("p_I_k", grid.nodal_momentum);
+    if (phase == Phase::velocity_k) keep("v_I_k", grid.nodal_velocity);
+    if (phase == Phase::forces) keep("f_I", grid.nodal_force), keep("r_I", grid.reaction);
+    if (phase == Phase::momentum_balance) keep("p_I_k1", grid.nodal_momentum);
+    if (phase == Phase::reprojection) keep("p_I_k1_musl", grid.nodal_momentum);
+    if (phase == Phase::velocity_k1) keep(names_.stress_last, grid.nodal_velocity);
+    if (phase == Phase::corrector) keep("v_I_k1", grid.nodal_velocity);
+    if (phase == Phase::euler_update || phase == Phase::newmark_update)
+      keep("a_I", grid.nodal_acceleration), keep(names_.moving, grid.moving_velocity);
+  }
+
+  void keep(const std::string& name, const std::vector<double>& field) {
+    store(name, 1, false, field.data(), field.size());
+  }
+  void keep(const std::string& name, const std::vector<Vector<Dim>>& field) {
+    store(name, Dim, true, field.empty() ? nullptr : field[0].data(), field.size());
+  }
+  void store(const std::string& name, int width, bool vector, const double* data, size_t nodes) {
+    auto column = std::find_if(columns_.begin(), columns_.end(), [&](const Column& c) { return c.name == name; });
+    if (column == columns_.end()) column = columns_.insert(columns_.end(), Column{name, width, vector, {}});
+    column->values.assign(data, data + width * nodes);
+  }
+
+  /// `name` of a scalar, or `name` with the suffix of each component of a vector: `_x` (1D), `_x`, `_y` (2D).
+  static void add_names(std::vector<std::string>& header, const std::string& name, bool vector) {
+    const char* axes[] = {"_x", "_y"};
+    if (!vector) header.push_back(name);
+    for (int k = 0; vector && k < Dim; ++k) header.push_back(name + axes[k]);
+  }
+
+  /// The fixed components of `node` ("x", "y", "xy"), or "-".
+  std::string fixed_text(int node) const {
+    std::string text;
+    for (const FixedDof& dof : model_.fixed)
+      if (dof.node == node && text.find("xy"[dof.component]) == std::string::npos) text += "xy"[dof.component];
+    std::sort(text.begin(), text.end());
+    return text.empty() ? "-" : text;
+  }
+
+  TraceTable node_table(const GridFields<Dim>& grid) const {
+    TraceTable table;
+    table.header = {"node", "x_I"};
+    if (Dim == 2) table.header.push_back("y_I");
+    table.header.push_back("fixed");
+    for (const Column& column : columns_) add_names(table.header, column.name, column.vector);
+    for (int node = 0; node < grid.size(); ++node) {
+      if (!(grid.nodal_mass[node] > 0.0)) continue;
+      std::vector<std::string> row{std::to_string(node)};
+      const Vector<Dim> x = model_.grid.node_position(node);
+      for (int axis = 0; axis < Dim; ++axis) row.push_back(trace_number(x[axis], csv_));
+      row.push_back(fixed_text(node));
+      for (const Column& column : columns_)
+        for (int k = 0; k < column.width; ++k)
+          row.push_back(trace_number(column.values[node * column.width + k], csv_));
+      table.rows.push_back(std::move(row));
+    }
+    return table;
+  }
+
+  TraceTable particle_table(const Particles<Dim>& particles) const;
+
+  const Model<Dim>& model_;
+  long step_;
+  TraceVariant names_;
+  bool csv_;
+  double time_ = 0.0, dt_ = 0.0;
+  std::string motion_level_ = "k", state_level_ = "k";  ///< the time level of x_p, v_p, a_p and of eps, sigma, rho
+  std::vector<Column> columns_;
+  std::vector<TraceBlock> blocks_;
+};
+
+/// The particles' rows: id; mass; position, velocity (and acceleration for the predictor-corrector) at the level of the
+/// motion; strain, stress and density at the level of the state.
+template <int Dim>
+TraceTable StepTrace<Dim>::particle_table(const Particles<Dim>& particles) const {
+  const bool accelerations = names_.accelerations;
+  const std::string motion = "_p_" + motion_level_, state = "_p_" + state_level_;
+  TraceTable table;
+  table.header = {"particle", "m_p", "x" + motion};
+  if (Dim == 2) table.header.push_back("y" + motion);
+  add_names(table.header, "v" + motion, true);
+  if (accelerations) add_names(table.header, "a" + motion, true);
+  const std::vector<std::string> tensor = Dim == 1 ? std::vector<std::string>{"_xx"}
+                                                   : std::vector<std::string>{"_xx", "_yy", "_xy"};
+  for (const auto& name : tensor) table.header.push_back("eps" + state + name);
+  for (const auto& name : tensor) table.header.push_back("sigma" + state + name);
+  if (Dim == 2) table.header.push_back("sigma" + state + "_zz");
+  table.header.push_back("rho" + state);
+  for (int p = 0; p < particles.size(); ++p) {
+    std::vector<std::string> row{std::to_string(particles.id[p])};
+    auto add = [&](double value) { row.push_back(trace_number(value, csv_)); };
+    add(particles.mass[p]);
+    for (int axis = 0; axis < Dim; ++axis) add(particles.position[p][axis]);
+    for (int axis = 0; axis < Dim; ++axis) add(particles.velocity[p][axis]);
+    for (int axis = 0; accelerations && axis < Dim; ++axis) add(particles.acceleration[p][axis]);
+    for (const Matrix<Dim>* tensor_p : {&particles.strain[p], &particles.stress[p]}) {
+      add((*tensor_p)(0, 0));
+      if (Dim == 2) add((*tensor_p)(Dim - 1, Dim - 1)), add((*tensor_p)(0, Dim - 1));
+    }
+    if (Dim == 2) add(particles.stress_zz[p]);
+    add(particles.density[p]);
+    table.rows.push_back(std::move(row));
+  }
+  return table;
+}
+
+/// How the trace names the scene's integrator and its nodal velocities.
+inline TraceVariant trace_variant(const io::Scene& scene) {
+  TraceVariant variant;
+  std::ostringstream text;
+  if (scene.integrator == io::IntegratorKind::npc) {
+    const char* moving[] = {"v_I_k", "v_I_k1", "v_I_pred"};  // NewmarkPositionVelocity: projected, corrected, predicted
+    const char* position[] = {"projected", "corrected", "predicted"};
+    const int choice = static_cast<int>(scene.npc_position_velocity);
+    variant.moving = moving[choice];
+    variant.accelerations = true;
+    text << "predictor-corrector (npc), gamma = " << scene.newmark_gamma << ", position update " << position[choice]
+         << " (x_p moves with " << moving[choice] << "), particle velocity "
+         << (scene.npc_velocity == NewmarkParticleVelocity::eq32 ? "eq32" : "average");
+  } else {
+    const bool start = scene.fe_position_velocity == EulerPositionVelocity::start;
+    const char* order[] = {"update stress first (usf)", "update stress last (usl)",
+                           "modified update stress last (musl)"};
+    variant.moving = start ? "v_I_k" : "v_I_k1";
+    if (scene.stress_update == io::StressUpdate::musl) variant.stress_last = "v_I_k1_musl";
+    text << "forward Euler (fe), " << order[static_cast<int>(scene.stress_update)] << ", position update "
+         << (start ? "start" : "updated") << " (x_p moves with " << variant.moving << "), flip_fraction "
+         << scene.flip_fraction;
+  }
+  variant.description = text.str();
+  return variant;
+}
+
+/// The rows of `table`, each after the phase's name and equations and `at` (node or particle), as CSV.
+inline void print_csv_table(const TraceTable& table, const PhaseInfo& info, std::ostream& out) {
+  if (table.rows.empty()) return;
+  out << "phase,equation,at";
+  for (const auto& name : table.header) out << "," << (&name == &table.header[0] ? "index" : name);
+  out << "\n";
+  for (const auto& row : table.rows) {
+    out << info.name << "," << info.equation << "," << table.header[0];
+    for (const auto& cell : row) out << "," << cell;
+    out << "\n";
+  }
+}
+
+/// `table` with its columns aligned, right-justified, indented by two spaces.
+inline void print_aligned_table(const TraceTable& table, std::ostream& out) {
+  if (table.rows.empty()) return;
+  std::vector<size_t> width(table.header.size());
+  for (size_t k = 0; k < width.size(); ++k) {
+    width[k] = table.header[k].size();
+    for (const auto& row : table.rows) width[k] = std::max(width[k], row[k].size());
+  }
+  auto line = [&](const std::vector<std::string>& cells) {
+    out << " ";
+    for (size_t k = 0; k < cells.size(); ++k) out << " " << std::string(width[k] - cells[k].size(), ' ') << cells[k];
+    out << "\n";
+  };
+  line(table.header);
+  for (const auto& row : table.rows) line(row);
+}
+
+/// ", Eq. (30)", ", Eqs. (14)-(15)" or "" for a phase without an equation ("-").
+inline std::string equations_text(const std::string& equation) {
+  if (equation.empty() || equation[0] != '(') return "";
+  return (equation.size() > 4 ? ", Eqs. " : ", Eq. ") + equation;
+}
+
+/// The whole trace: a title, then per phase a line naming it and its equations, its nodes and its particles.
+template <int Dim>
+void print_trace(const StepTrace<Dim>& trace, const TraceRequest& request, const TraceVariant& variant,
+                 std::ostream& out) {
+  const bool csv = request.format == "csv";
+  const char* comment = csv ? "# " : "";
+  out << comment << "mpm trace " << request.scene_path << ": step " << request.step
+      << " from t_k = " << trace_number(trace.time(), true) << " s to t_k + dt, dt = " << trace_number(trace.dt(), true)
+      << " s; " << Dim << "D; " << variant.description << "\n";
+  out << comment << "k: the value at t_k; k1: at t_k + dt; nodes without mass left out; a nodal value stays in the"
+      << " rows of the phases after the one that computed it\n";
+  const auto& blocks = trace.blocks();
+  for (size_t n = 0; n < blocks.size(); ++n) {
+    const PhaseInfo& info = phase_info(blocks[n].phase);
+    out << (csv ? "# " : "\n") << "phase " << n << " of " << blocks.size() - 1 << ": " << info.name
+        << equations_text(info.equation) << ": " << info.what
+        << "\n";
+    for (const TraceTable* table : {&blocks[n].nodes, &blocks[n].particles})
+      csv ? print_csv_table(*table, info, out) : print_aligned_table(*table, out);
+  }
+}
+
+/// Runs the scene to step `request.step` with a StepTrace watching it; prints it. Returns the exit code: 3 when the
+/// method fails before. \throws Refused when the run ends before that step.
+template <int Dim>
+int trace_run(const io::Scene& scene, const TraceRequest& request, std::ostream& out, std::ostream& err) {
+  const Setup<Dim> setup = build_setup<Dim>(scene);
+  const TraceVariant variant = trace_variant(scene);
+  StepTrace<Dim> trace(setup.model, request.step, variant, request.format == "csv");
+  RunSummary summary;
+  try {
+    summary = run_setup<Dim>(scene, setup, trace, &summary);
+  } catch (const SimulationFailure& failure) {
+    err << failure.message() << "\n";
+    return 3;
+  }
+  if (!trace.seen())
+    throw Refused("--step: the run ends after step " + std::to_string(summary.steps) + " (t = " +
+                  trace_number(summary.final_time, true) + " s, solver.end_time): give a step from 1 to " +
+                  std::to_string(summary.steps));
+  print_trace(trace, request, variant, out);
+  return 0;
+}
+
+/// `mpm trace`'s parser, its options bound to `request`.
+inline std::unique_ptr<CommandParser> trace_parser(TraceRequest& request) {
+  auto app = std::make_unique<CommandParser>(
+      "trace",
+      "Runs a scene to step N and prints, after each phase of that step of its integrator, the phase's equations,\n"
+      "every nodal quantity of the nodes that hold mass (m_I, p_I, v_I, f_I, a_I, the fixed components,\n"
+      "reactions r_I) and every particle quantity (x, v, a, strain, stress, density), as CSV or an aligned table;\n"
+      "writes no file. "
+      "Column names say the time level: _k at t_k, _k1 at t_k + dt, _pred the predictor.");
+  app->add_option("SCENE.toml", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
+  app->add_option("--step", request.step, "the step to trace, numbered from 1 (the first step goes from t = 0)")
+      ->required()
+      ->check(whole_in(1, 10000000));
+  app->add_option("--set", request.overrides,
+                  "overrides a scene key with a TOML value, as for mpm run; repeat for more")
+      ->allow_extra_args(false)
+      ->type_name("KEY=VALUE");
+  app->add_option("--format", request.format, "csv: one row per node or particle and phase; table: aligned columns")
+      ->check(one_of({"csv", "table"}));
+  return app;
+}
+
+/// `mpm trace SCENE.toml --step N [--set KEY=VALUE ...] [--format csv|table]`. Returns the exit code: 2 for a bad
+/// option or scene or a step beyond the run's end, 3 when the method fails before the step.
+inline int trace_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+  TraceRequest request;
+  auto app = trace_parser(request);
+  return run_parsed(*app, arguments, out, err, [&] {
+    io::Budget budget;
+    budget.force = true;  // only --step steps run: end_time / dt does not bound the work
+    io::Scene scene = load_scene(request.scene_path, request.overrides, budget);
+    scene.control.last_step = request.step;
+    return scene.dimension == 1 ? trace_run<1>(scene, request, out, err) : trace_run<2>(scene, request, out, err);
+  });
+}
+
+TEST_CASE("mpm trace: the phases of one forward-Euler step on two particles by hand, each value under its name") {
+  // h = 1, nodes x = 0, 1, 2, linear shapes; particle 0 at 0.5 (m = 2, v = 1), particle 1 at 1.25 (m = 4, v = -2);
+  // node 2 held. P2G, Eq. (13): m_I = (1, 1 + 3, 1) = (1, 4, 1); p_I^k = (1, 1 - 6, -2) = (1, -5, -2), node 2 held: 0.
+  Model<1> model;
+  model.grid = Grid<1>(Vector<1>(0.0), 1.0, {2});
+  model.materials = {LinearElastic{100.0, 0.0, 4.0}};
+  model.fixed = {FixedDof{2, 0}};
+  Particles<1> particles;
+  particles.add(Vector<1>(0.5), 2.0, 4.0, Vector<1>(1.0), Vector<1>(0.25));
+  particles.add(Vector<1>(1.25), 4.0, 4.0, Vector<1>(-2.0), Vector<1>(0.25));
+  LinearShape<1> shape(model.grid);
+  Stencils<1> stencils;
+  stencils.resize(particles.size(), shape.capacity());
+  compute_stencils(shape, particles.position, stencils);
+  GridFields<1> grid(3);
+  ParticleBodyForces<1> body_force;
+  body_force.per_unit_mass.assign(2, Vector<1>::Zero());
+  StepTrace<1> trace(model, 1, TraceVariant{}, true);
+  REQUIRE(trace.watches(1, 0.0, 0.1));
+  ForwardEuler().step(model, stencils, body_force, 0.1, particles, grid, trace);
+  const auto& blocks = trace.blocks();
+  REQUIRE(blocks.size() == 8);
+  CHECK(blocks[0].phase == Phase::reset);
+  CHECK(blocks[0].nodes.rows.empty());  // no node holds mass after the reset
+  CHECK(blocks[0].particles.header[2] == "x_p_k");
+  const TraceTable& p2g = blocks[1].nodes;
+  CHECK(p2g.header == std::vector<std::string>{"node", "x_I", "fixed", "m_I", "p_I_k_x"});
+  CHECK(p2g.rows[1] == std::vector<std::string>{"1", "1", "-", "4", "-5"});
+  CHECK(p2g.rows[2] == std::vector<std::string>{"2", "2", "x", "1", "-2"});
+  CHECK(blocks[2].nodes.rows[2].back() == "0");  // the fixed component held
+  CHECK(blocks[3].nodes.rows[1][5] == "-1.25");           // v_I^k = p_I^k / m_I = -5 / 4
+  CHECK(blocks[4].particles.header[4] == "eps_p_k1_xx");  // after the stress update
+  const TraceTable& balance = blocks[6].nodes;  // Eq. (12): p_I^{k+1} = p_I^k + dt f_I, each under its name
+  CHECK(balance.header ==
+        std::vector<std::string>{"node", "x_I", "fixed", "m_I", "p_I_k_x", "v_I_k_x", "f_I_x", "r_I_x", "p_I_k1_x"});
+  for (const auto& row : balance.rows)
+    CHECK(std::stod(row[8]) == doctest::Approx(std::stod(row[4]) + 0.1 * std::stod(row[6])));
+  CHECK(std::stod(balance.rows[1][6]) != 0.0);
+  const TraceTable& last = blocks[7].nodes;
+  CHECK(last.header.back() == "v_I_k1_x");
+  CHECK(blocks[7].particles.header[2] == "x_p_k1");
+  CHECK(!StepTrace<1>(model, 2, TraceVariant{}, true).watches(1, 0.0, 0.1));
+  CHECK(equations_text("(30)") == ", Eq. (30)");
+  CHECK(equations_text("(16) (17) (3)") == ", Eqs. (16) (17) (3)");
+  CHECK(equations_text("-").empty());
+}
+
+TEST_CASE("mpm trace: a scene run to step 2 and no further, its t_k the first dt, a step beyond the end refused") {
+  // 2 particles of 0.5 kg at 0.5 m/s on 2 cells, no force: a rigid translation, every dt the same,
+  // dt = 0.5 h / max(c, |v|) = 0.25 s (c = 1 m/s, h = 0.5 m): 4 steps to t = 1 s.
+  const std::string text =
+      "dimension = 1\n[grid]\nlength = [1.0]\ncells = [2]\nmargin_max = [2]\n[material]\nyoung_modulus = 1.0\n"
+      "density = 1.0\n[[body]]\nmin = [0.0]\nmax = [1.0]\nvelocity = [0.5]\n[solver]\nend_time = 1.0\n";
+  io::Scene scene = io::read_scene(io::parse_scene_text(text, "t.toml"));
+  scene.control.last_step = 2;
+  const Setup<1> setup = build_setup<1>(scene);
+  StepTrace<1> trace(setup.model, 2, trace_variant(scene), true);
+  const RunSummary summary = run_setup<1>(scene, setup, trace);
+  CHECK(summary.steps == 2);
+  REQUIRE(trace.seen());
+  CHECK(trace.time() == doctest::Approx(0.25));
+  CHECK(trace.dt() == doctest::Approx(0.25));
+  CHECK(trace.blocks()[1].nodes.rows[0][3] == "0.125");  // m_0 = N_0(0.375 m) 0.5 kg = 0.25 * 0.5 kg
+  TraceRequest request;
+  request.step = 100;
+  scene.control.last_step = 100;
+  std::ostringstream out, err;
+  std::string refusal;
+  try {
+    trace_run<1>(scene, request, out, err);
+  } catch (const Refused& refused) {
+    refusal = refused.what();
+  }
+  CHECK(refusal.rfind("--step: the run ends after step 4 (t = 1 s", 0) == 0);
+  CHECK(out.str().empty());
+}
+
+}  // namespace mpm::cli
