@@ -66,7 +66,8 @@ inline std::string order_table(const Runs& runs) {
 }
 
 /// NPC against FE on the meshes `cells` of the sweep and the large CFLs, per shape: RMS_NPC / RMS_FE.
-inline DomainClaim npc_below_fe(const Runs& runs, const std::string& shape, bool own_time, const std::vector<int>& cells_of_sweep) {
+inline DomainClaim npc_below_fe(const Runs& runs, const std::string& shape, bool own_time,
+                                const std::vector<int>& cells_of_sweep) {
   const std::string label = shape_label(shape);
   DomainClaim claim{own_time ? "NPC is more accurate than FE with FE's velocity compared at t + dt/2, the time it approximates (" + label + ")"
                              : "The predictor-corrector is more accurate than forward Euler (Fig. 6, " + label + ")",
@@ -98,7 +99,8 @@ inline std::vector<DomainClaim> fig6_claims(const Runs& runs, const Scope& scope
   for (const auto& shape : scope.shapes) claims.push_back(npc_below_fe(runs, shape, false, scope.cells));
   const int fine = sweep_cells.back(), coarse = band_cells("transition").back();
   const std::string not_run = std::find(scope.cells.begin(), scope.cells.end(), fine) == scope.cells.end()
-                                  ? " (" + std::to_string(fine) + " cells not run under the authors' β: no sample)" : "";
+                                  ? " (" + std::to_string(fine) + " cells not run under the authors' β: no sample)"
+                                  : "";
   DomainClaim spoils{"Grid crossing spoils the solution: the error at " + std::to_string(fine) + " cells exceeds the error at " + std::to_string(coarse),
                      "RMS(" + std::to_string(fine) + ") / RMS(" + std::to_string(coarse) + ") > 1; a stopped run is named, not scored" + not_run,
                      {}, false};
@@ -128,7 +130,8 @@ inline std::vector<DomainClaim> fig6_claims(const Runs& runs, const Scope& scope
 /// Fig. 6: the fitted orders, the claims at this project's beta, then LME's under the authors' beta.
 inline Section fig6_section(const Runs& runs) {
   Section section{"Fig. 6: error at point A against the number of cells (`dyka_fig6`)", order_table(runs), fig6_claims(runs, full_scope())};
-  for (const auto& claim : under_authors_beta(fig6_claims(runs, lme_scope(authors_lme)))) section.claims.push_back(claim);
+  for (const auto& claim : under_authors_beta(fig6_claims(runs, lme_scope(authors_lme))))
+    section.claims.push_back(claim);
   return section;
 }
 
@@ -176,7 +179,8 @@ inline Section fig7_section(const Runs& runs) {
                   "beyond the exact level (overshoot, +) and the largest shortfall (undershoot, −), along the exact jump into the plateau, "
                   "divided by |v0|. The t = 0 sample is no plateau sample; a damped plateau shows as undershoot.",
                   fig7_claims(runs, full_scope())};
-  for (const auto& claim : under_authors_beta(fig7_claims(runs, lme_scope(authors_lme)))) section.claims.push_back(claim);
+  for (const auto& claim : under_authors_beta(fig7_claims(runs, lme_scope(authors_lme))))
+    section.claims.push_back(claim);
   return section;
 }
 

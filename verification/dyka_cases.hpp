@@ -50,7 +50,9 @@ inline bool swept(const std::string& shape, int cells) {
   return false;
 }
 /// The shape as the report and the figures name it: "LME, the authors' β" for authors_lme.
-inline std::string shape_label(const std::string& shape) { return shape == authors_lme ? "LME, the authors' β" : shape; }
+inline std::string shape_label(const std::string& shape) {
+  return shape == authors_lme ? "LME, the authors' β" : shape;
+}
 
 inline std::string text(double value, const char* format = "%g") {
   char buffer[48];
@@ -179,7 +181,8 @@ inline std::vector<CaseSpec> independent_cases() {
     for (const auto& shape : both_rules_shapes)
       for (const auto& integrator : integrators)
         if (swept(shape, cells))
-          cases.push_back({sweep_name(shape, integrator, cells), with(mesh_settings(shape, cells), {integrator_setting(integrator)})});
+          cases.push_back({sweep_name(shape, integrator, cells),
+                           with(mesh_settings(shape, cells), {integrator_setting(integrator)})});
   for (double cfl : large_cfls)
     for (int cells : large_cfl_cells)
       for (const auto& shape : both_rules_shapes)

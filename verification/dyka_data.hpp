@@ -41,7 +41,8 @@ inline void write_sweep(const Runs& runs) {
       }
     }
   for (const auto& integrator : integrators)
-    for (int cells : authors_cells) sweep_row(authors, runs.at(sweep_name(authors_lme, integrator, cells)), authors_lme, integrator, cells);
+    for (int cells : authors_cells)
+      sweep_row(authors, runs.at(sweep_name(authors_lme, integrator, cells)), authors_lme, integrator, cells);
 }
 
 /// dyka_fair.csv: FE against NPC, fairly (the meshes without crossing).

@@ -43,7 +43,8 @@ inline Section fair_section(const Runs& runs) {
                   "The blend's FLIP fraction is found per shape and mesh, by bisection, so that shape + FE ends (t = 200 µs) with the "
                   "energy shape + NPC ends with, to 1e-4 of it (data/dyka_fair.csv: flip_fraction, energy_fe_blend, energy_npc).",
                   fair_claims(runs, full_scope())};
-  for (const auto& claim : under_authors_beta(fair_claims(runs, lme_scope(authors_lme)))) section.claims.push_back(claim);
+  for (const auto& claim : under_authors_beta(fair_claims(runs, lme_scope(authors_lme))))
+    section.claims.push_back(claim);
   return section;
 }
 
@@ -110,7 +111,8 @@ inline std::vector<DomainClaim> fig9_10_claims(const Runs& runs, const Scope& sc
 /// Figs. 9 and 10: the claims at this project's beta, then under the authors' beta (LME's runs at it).
 inline Section fig9_10_section(const Runs& runs) {
   Section section{"Figs. 9 and 10: shape functions compared (`dyka_fig9`: FE, `dyka_fig10`: NPC)", "", fig9_10_claims(runs, full_scope())};
-  for (const auto& claim : under_authors_beta(fig9_10_claims(runs, lme_scope(authors_lme)))) section.claims.push_back(claim);
+  for (const auto& claim : under_authors_beta(fig9_10_claims(runs, lme_scope(authors_lme))))
+    section.claims.push_back(claim);
   return section;
 }
 
