@@ -1,5 +1,6 @@
-// The analysis of the Dyka suite's accuracy figures (Figs. 6-10, dyka_fair): one function per figure, each
-// returning its section of the report, every claim evaluated on every run of its study.
+// The analysis of the Dyka suite's accuracy figures (Figs. 6, 7): per figure, its claims on a scope of runs (every
+// shape at this project's beta, or LME alone under one beta rule) and its section of the report, every claim
+// evaluated on every run of its study, LME's again under the authors' beta.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -53,9 +54,9 @@ inline std::string order_table(const Runs& runs) {
                       "| shape | integrator | negligible | negligible without " + std::to_string(negligible.front()) +
                       " | transition | crossing | FE at t + dt/2, negligible | FE at t + dt/2, transition |\n|---|---|---|---|---|---|---|---|\n";
   auto own = [](const DykaResult& run) { return run.rms_own_time; };
-  for (const auto& shape : shapes)
+  for (const auto& shape : both_rules_shapes)
     for (const auto& integrator : integrators) {
-      table += "| " + shape + " | " + integrator + " | " + order_text(fit_runs(runs, negligible, shape, integrator)) + " | " +
+      table += "| " + shape_label(shape) + " | " + integrator + " | " + order_text(fit_runs(runs, negligible, shape, integrator)) + " | " +
                order_text(fit_runs(runs, without_first(negligible), shape, integrator)) + " | " + order_text(fit_runs(runs, transition, shape, integrator)) +
                " | " + order_text(fit_runs(runs, crossing, shape, integrator)) + " | ";
       table += integrator == "fe" ? order_text(fit_runs(runs, negligible, shape, "fe", own)) + " | " + order_text(fit_runs(runs, transition, shape, "fe", own)) + " |\n"
@@ -64,14 +65,16 @@ inline std::string order_table(const Runs& runs) {
   return table;
 }
 
-/// NPC against FE on every mesh and CFL of the sweep, per shape: RMS_NPC / RMS_FE.
-inline DomainClaim npc_below_fe(const Runs& runs, const std::string& shape, bool own_time) {
-  DomainClaim claim{own_time ? "NPC is more accurate than FE with FE's velocity compared at t + dt/2, the time it approximates (" + shape + ")"
-                             : "The predictor-corrector is more accurate than forward Euler (Fig. 6, " + shape + ")",
+/// NPC against FE on the meshes `cells` of the sweep and the large CFLs, per shape: RMS_NPC / RMS_FE.
+inline DomainClaim npc_below_fe(const Runs& runs, const std::string& shape, bool own_time,
+                                const std::vector<int>& cells_of_sweep) {
+  const std::string label = shape_label(shape);
+  DomainClaim claim{own_time ? "NPC is more accurate than FE with FE's velocity compared at t + dt/2, the time it approximates (" + label + ")"
+                             : "The predictor-corrector is more accurate than forward Euler (Fig. 6, " + label + ")",
                     own_time ? "RMS_NPC / RMS_FE(t + dt/2) < 1, on every mesh of the sweep at CFL 0.5 and at the large CFLs"
                              : "RMS_NPC / RMS_FE < 1, on every mesh of the sweep at CFL 0.5 and at the large CFLs",
                     {}, false};
-  for (const auto& [cells, cfl] : comparison_domain()) {
+  for (const auto& [cells, cfl] : comparison_domain(cells_of_sweep)) {
     const auto &fe = runs.at(sweep_name(shape, "fe", cells, cfl)), &npc = runs.at(sweep_name(shape, "npc", cells, cfl));
     const double fe_rms = own_time ? fe.rms_own_time : fe.rms;
     add_pair(claim, mesh_text(cells, cfl), ", NPC " + rms_text(npc.rms / speed_v0) + " / FE " + rms_text(fe_rms / speed_v0), npc, "NPC", fe, "FE",
@@ -80,61 +83,71 @@ inline DomainClaim npc_below_fe(const Runs& runs, const std::string& shape, bool
   return claim;
 }
 
-inline Section fig6_section(const Runs& runs) {
-  Section section{"Fig. 6: error at point A against the number of cells (`dyka_fig6`)", order_table(runs), {}};
+/// Fig. 6's claims on `scope`: the error falls without crossing; NPC below FE; grid crossing at the finest mesh.
+inline std::vector<DomainClaim> fig6_claims(const Runs& runs, const Scope& scope) {
   const auto negligible = band_cells("negligible");
   DomainClaim falls{"Without grid crossing the error falls under refinement", "fitted order over " + cells_text(negligible) +
                     " cells > 0 and RMS(160) < RMS(40)", {}, true};
-  for (const auto& shape : shapes)
+  for (const auto& shape : scope.shapes)
     for (const auto& integrator : integrators) {
       const OrderFit fit = fit_runs(runs, negligible, shape, integrator);
       const double rms40 = runs.rms(sweep_name(shape, integrator, 40)), rms160 = runs.rms(sweep_name(shape, integrator, 160));
-      falls.add(shape + " " + integrator + ": RMS/v0 " + rms_text(rms40) + " -> " + rms_text(rms160) + ", order " + order_text(fit), fit.order,
-                fit.fitted() && fit.order > 0.0 && rms160 < rms40);
+      falls.add(shape_label(shape) + " " + integrator + ": RMS/v0 " + rms_text(rms40) + " -> " + rms_text(rms160) + ", order " +
+                    order_text(fit), fit.order, fit.fitted() && fit.order > 0.0 && rms160 < rms40);
     }
-  section.claims.push_back(falls);
-  for (const auto& shape : shapes) section.claims.push_back(npc_below_fe(runs, shape, false));
+  std::vector<DomainClaim> claims{falls};
+  for (const auto& shape : scope.shapes) claims.push_back(npc_below_fe(runs, shape, false, scope.cells));
   const int fine = sweep_cells.back(), coarse = band_cells("transition").back();
+  const std::string not_run = std::find(scope.cells.begin(), scope.cells.end(), fine) == scope.cells.end()
+                                  ? " (" + std::to_string(fine) + " cells not run under the authors' β: no sample)"
+                                  : "";
   DomainClaim spoils{"Grid crossing spoils the solution: the error at " + std::to_string(fine) + " cells exceeds the error at " + std::to_string(coarse),
-                     "RMS(" + std::to_string(fine) + ") / RMS(" + std::to_string(coarse) + ") > 1; a stopped run is named, not scored", {}, false};
+                     "RMS(" + std::to_string(fine) + ") / RMS(" + std::to_string(coarse) + ") > 1; a stopped run is named, not scored" + not_run,
+                     {}, false};
   DomainClaim through{"uGIMP and LME stay accurate through grid crossing: their error at " + std::to_string(fine) + " cells is below their error at " +
-                          std::to_string(coarse), "RMS(" + std::to_string(fine) + ") / RMS(" + std::to_string(coarse) + ") < 1", {}, false};
+                          std::to_string(coarse), "RMS(" + std::to_string(fine) + ") / RMS(" + std::to_string(coarse) + ") < 1" + not_run, {}, false};
   DomainClaim better{"uGIMP and LME withstand grid crossing better than linear shape functions (" + std::to_string(fine) + " cells)",
-                     "RMS_shape / RMS_linear < 1; a shape that finishes where linear stops holds, one that stops fails", {}, false};
-  for (const auto& shape : shapes)
+                     "RMS_shape / RMS_linear < 1; a shape that finishes where linear stops holds, one that stops fails" + not_run, {}, false};
+  for (const auto& shape : scope.shapes)
     for (const auto& integrator : integrators) {
+      if (!not_run.empty()) continue;
       const auto &f = runs.at(sweep_name(shape, integrator, fine)), &c = runs.at(sweep_name(shape, integrator, coarse));
-      const std::string where = shape + " " + integrator, detail = " " + rms_text(c.rms / speed_v0) + " -> " + rms_text(f.rms / speed_v0);
+      const std::string where = shape_label(shape) + " " + integrator, detail = " " + rms_text(c.rms / speed_v0) + " -> " + rms_text(f.rms / speed_v0);
       add_pair(spoils, where, detail, f, std::to_string(fine), c, std::to_string(coarse), f.rms / c.rms, f.rms > c.rms);
       if (shape == "linear") continue;
       add_pair(through, where, detail, f, std::to_string(fine), c, std::to_string(coarse), f.rms / c.rms, f.rms < c.rms);
       const auto& linear = runs.at(sweep_name("linear", integrator, fine));
       if (linear.failed && !f.failed)
-        better.add(shape + " " + integrator + ": " + rms_text(f.rms / speed_v0) + ", linear " + stopped_text(linear), std::nan(""), true);
+        better.add(where + ": " + rms_text(f.rms / speed_v0) + ", linear " + stopped_text(linear), std::nan(""), true);
       else
-        add_pair(better, shape + " " + integrator, ": " + rms_text(f.rms / speed_v0) + " / linear " + rms_text(linear.rms / speed_v0), f, shape, linear,
+        add_pair(better, where, ": " + rms_text(f.rms / speed_v0) + " / linear " + rms_text(linear.rms / speed_v0), f, shape, linear,
                  "linear", f.rms / linear.rms, f.rms < linear.rms);
     }
-  section.claims.insert(section.claims.end(), {spoils, better, through});
+  claims.insert(claims.end(), {spoils, better, through});
+  return claims;
+}
+
+/// Fig. 6: the fitted orders, the claims at this project's beta, then LME's under the authors' beta.
+inline Section fig6_section(const Runs& runs) {
+  Section section{"Fig. 6: error at point A against the number of cells (`dyka_fig6`)", order_table(runs), fig6_claims(runs, full_scope())};
+  for (const auto& claim : under_authors_beta(fig6_claims(runs, lme_scope(authors_lme))))
+    section.claims.push_back(claim);
   return section;
 }
 
-/// Fig. 7: oscillations measured on the plateaus of v_A (both signs), per shape over the sweep and the large CFLs.
-inline Section fig7_section(const Runs& runs) {
-  Section section{"Fig. 7: predictor-corrector against forward Euler (`dyka_fig7`)",
-                  "Plateau deviation: on the middle half of every interval where the exact v_A is constant (0 or ±v0), the largest step "
-                  "beyond the exact level (overshoot, +) and the largest shortfall (undershoot, −), along the exact jump into the plateau, "
-                  "divided by |v0|. The t = 0 sample is no plateau sample; a damped plateau shows as undershoot.",
-                  {}};
+/// Fig. 7's claims on `scope`: oscillations measured on the plateaus of v_A (both signs), per shape over its meshes and
+/// the large CFLs.
+inline std::vector<DomainClaim> fig7_claims(const Runs& runs, const Scope& scope) {
+  std::vector<DomainClaim> claims;
   auto deviation = [](const DykaResult& run) { return std::max(run.overshoot, run.undershoot); };
-  for (const auto& shape : shapes) {
-    DomainClaim claim{"The predictor-corrector reduces the plateau deviation of forward Euler (" + shape + ")",
+  for (const auto& shape : scope.shapes) {
+    DomainClaim claim{"The predictor-corrector reduces the plateau deviation of forward Euler (" + shape_label(shape) + ")",
                       "largest plateau deviation NPC / FE < 1 (where: NPC +over/−under, FE +over/−under)", {}, false};
     // "Removes" is a bound, not a ratio: the paper's own figure for NPC is within 1.0-1.09 v0; 0.05 v0 is taken as
     // "no oscillation left" (a choice: half of that band).
-    DomainClaim removes{"The predictor-corrector removes the spurious oscillations (" + shape + ")",
+    DomainClaim removes{"The predictor-corrector removes the spurious oscillations (" + shape_label(shape) + ")",
                         "NPC's largest plateau deviation, over- or undershoot, <= 0.05 v0 (value)", {}, false};
-    for (const auto& [cells, cfl] : comparison_domain()) {
+    for (const auto& [cells, cfl] : comparison_domain(scope.cells)) {
       const auto &fe = runs.at(sweep_name(shape, "fe", cells, cfl)), &npc = runs.at(sweep_name(shape, "npc", cells, cfl));
       const std::string detail = ", NPC +" + text(npc.overshoot, "%.3f") + "/−" + text(npc.undershoot, "%.3f") + ", FE +" +
                                 text(fe.overshoot, "%.3f") + "/−" + text(fe.undershoot, "%.3f");
@@ -145,18 +158,29 @@ inline Section fig7_section(const Runs& runs) {
         removes.add(mesh_text(cells, cfl) + ", NPC +" + text(npc.overshoot, "%.3f") + "/−" + text(npc.undershoot, "%.3f"),
                     deviation(npc), deviation(npc) <= 0.05);
     }
-    section.claims.push_back(claim);
-    section.claims.push_back(removes);
+    claims.push_back(claim);
+    claims.push_back(removes);
   }
   DomainClaim paper{"paper/08_test_cases.md: NPC stays within 1.0-1.09 v0, FE overshoots to 1.3-1.6 v0",
                     "plateau overshoot: NPC <= 0.09 and FE >= 0.3, every shape and mesh of the sweep at CFL 0.5 (value: FE's)", {}, false};
-  for (const auto& shape : shapes)
-    for (int cells : sweep_cells) {
+  for (const auto& shape : scope.shapes)
+    for (int cells : scope.cells) {
       const auto &fe = runs.at(sweep_name(shape, "fe", cells)), &npc = runs.at(sweep_name(shape, "npc", cells));
-      add_pair(paper, shape + " " + std::to_string(cells), ": NPC +" + text(npc.overshoot, "%.3f") + ", FE", npc, "NPC", fe, "FE", fe.overshoot,
-               npc.overshoot <= 0.09 && fe.overshoot >= 0.3);
+      add_pair(paper, shape_label(shape) + " " + std::to_string(cells), ": NPC +" + text(npc.overshoot, "%.3f") + ", FE", npc, "NPC", fe, "FE",
+               fe.overshoot, npc.overshoot <= 0.09 && fe.overshoot >= 0.3);
     }
-  section.claims.push_back(paper);
+  claims.push_back(paper);
+  return claims;
+}
+
+inline Section fig7_section(const Runs& runs) {
+  Section section{"Fig. 7: predictor-corrector against forward Euler (`dyka_fig7`)",
+                  "Plateau deviation: on the middle half of every interval where the exact v_A is constant (0 or ±v0), the largest step "
+                  "beyond the exact level (overshoot, +) and the largest shortfall (undershoot, −), along the exact jump into the plateau, "
+                  "divided by |v0|. The t = 0 sample is no plateau sample; a damped plateau shows as undershoot.",
+                  fig7_claims(runs, full_scope())};
+  for (const auto& claim : under_authors_beta(fig7_claims(runs, lme_scope(authors_lme))))
+    section.claims.push_back(claim);
   return section;
 }
 

@@ -60,7 +60,12 @@ struct VelocityRecorder : mpm::Monitor<1> {
 /// must not get rigid cells beyond the wall: it interpolates nodal values exactly only on the
 /// boundary of its nodes' hull, so with rigid nodes beyond the wall the wall gives way (at
 /// gamma = 0.8 v_A changes by 0.54 m/s RMS).
-inline std::vector<std::string> shape_settings(const std::string& shape) { return {"solver.shape=\"" + shape + "\""}; }
+/// "lme_authors" is LME under the authors' beta (`solver.lme_beta = "authors"`, paper/09_choices.md, 'The authors'
+/// beta'), run as a shape of its own.
+inline std::vector<std::string> shape_settings(const std::string& shape) {
+  if (shape == "lme_authors") return {"solver.shape=\"lme\"", "solver.lme_beta=\"authors\""};
+  return {"solver.shape=\"" + shape + "\""};
+}
 
 /// CPU seconds of the calling thread.
 inline double thread_cpu_seconds() {

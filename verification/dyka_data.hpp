@@ -17,25 +17,32 @@ inline std::ofstream csv(const Runs& runs, const std::string& file, const std::s
 }
 inline const char* status(const DykaResult& run) { return run.failed ? "failed" : "ok"; }
 
-/// dyka_sweep.csv (Fig. 6, the work-precision chart; the smooth suite reads it) and dyka_cfl.csv (every CFL).
+/// One row of dyka_sweep.csv for `run`, `shape` + `integrator` on `cells`.
+inline void sweep_row(std::ofstream& out, const DykaResult& run, const std::string& shape, const std::string& integrator, int cells) {
+  out << shape << "," << integrator << "," << cells << "," << 0.1333 / cells << "," << crossing_ratio(cells) << "," << band_of(cells) << ","
+      << run.rms << "," << run.rms / speed_v0 << "," << run.largest_speed / speed_v0 << "," << run.wall_seconds << "," << run.steps << ","
+      << status(run) << "," << run.rms_own_time / speed_v0 << "," << run.newton_mean << "," << run.newton_max << "," << run.neighbours_mean << ","
+      << run.cpu_seconds << "," << run.overshoot << "," << run.undershoot << "\n";
+}
+
+/// dyka_sweep.csv (Fig. 6, the work-precision chart; the smooth suite reads it), dyka_cfl.csv (every CFL) and
+/// dyka_sweep_authors.csv (LME under the authors' beta, CFL 0.5, on authors_cells; same columns as dyka_sweep.csv).
 inline void write_sweep(const Runs& runs) {
   const std::string columns = "shape,integrator,cells,h,crossing_ratio,band,rms,rms_over_v0,largest_speed_over_v0,wall_seconds,steps,status,"
                               "rms_own_time_over_v0,newton_mean,newton_max,neighbours_mean,cpu_seconds,overshoot,undershoot";
   std::ofstream sweep = csv(runs, "dyka_sweep.csv", columns), all = csv(runs, "dyka_cfl.csv", "cfl," + columns);
-  auto row = [](std::ofstream& out, const DykaResult& run, const std::string& shape, const std::string& integrator, int cells) {
-    out << shape << "," << integrator << "," << cells << "," << 0.1333 / cells << "," << crossing_ratio(cells) << "," << band_of(cells) << ","
-        << run.rms << "," << run.rms / speed_v0 << "," << run.largest_speed / speed_v0 << "," << run.wall_seconds << "," << run.steps << ","
-        << status(run) << "," << run.rms_own_time / speed_v0 << "," << run.newton_mean << "," << run.newton_max << "," << run.neighbours_mean << ","
-        << run.cpu_seconds << "," << run.overshoot << "," << run.undershoot << "\n";
-  };
+  std::ofstream authors = csv(runs, "dyka_sweep_authors.csv", columns);
   for (const auto& shape : shapes)
     for (const auto& integrator : integrators) {
-      for (int cells : sweep_cells) row(sweep, runs.at(sweep_name(shape, integrator, cells)), shape, integrator, cells);
+      for (int cells : sweep_cells) sweep_row(sweep, runs.at(sweep_name(shape, integrator, cells)), shape, integrator, cells);
       for (const auto& [cells, cfl] : comparison_domain()) {
         all << cfl << ",";
-        row(all, runs.at(sweep_name(shape, integrator, cells, cfl)), shape, integrator, cells);
+        sweep_row(all, runs.at(sweep_name(shape, integrator, cells, cfl)), shape, integrator, cells);
       }
     }
+  for (const auto& integrator : integrators)
+    for (int cells : authors_cells)
+      sweep_row(authors, runs.at(sweep_name(authors_lme, integrator, cells)), authors_lme, integrator, cells);
 }
 
 /// dyka_fair.csv: FE against NPC, fairly (the meshes without crossing).
@@ -98,11 +105,12 @@ inline void write_energy_and_gamma(const Runs& runs) {
   }
 }
 
-/// dyka_orders.csv: the fitted order per band (NaN: no fit on fewer than 3 finished runs), with its standard error;
+/// dyka_orders.csv: the fitted order per band (NaN: no fit on fewer than 3 finished runs), with its standard error,
+/// LME under both beta rules (lme_authors: on the meshes it ran);
 /// band "negligible_from_20": the band without crossing less its coarsest mesh.
 inline void write_orders(const Runs& runs) {
   std::ofstream out = csv(runs, "dyka_orders.csv", "shape,integrator,band,order,first_cells,last_cells,meshes,standard_error");
-  for (const auto& shape : shapes)
+  for (const auto& shape : both_rules_shapes)
     for (const auto& integrator : integrators)
       for (const std::string band : {"negligible", "transition", "crossing", "negligible_from_20"}) {
         const auto cells = band == "negligible_from_20" ? without_first(band_cells("negligible")) : band_cells(band);

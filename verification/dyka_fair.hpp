@@ -10,22 +10,19 @@
 
 namespace verification::dyka {
 
-/// FE against NPC, fairly: FE at its own time (every mesh), the Newmark average and the PIC/FLIP blend calibrated per
-/// shape and mesh to the shape's own NPC energy (the meshes without crossing).
-inline Section fair_section(const Runs& runs) {
-  Section section{"FE against NPC, fairly: FE at its own time, the Newmark average, FE damped like NPC (`dyka_fair`)",
-                  "The blend's FLIP fraction is found per shape and mesh, by bisection, so that shape + FE ends (t = 200 µs) with the "
-                  "energy shape + NPC ends with, to 1e-4 of it (data/dyka_fair.csv: flip_fraction, energy_fe_blend, energy_npc).",
-                  {}};
-  const auto meshes = band_cells("negligible");
-  for (const auto& shape : shapes) section.claims.push_back(npc_below_fe(runs, shape, true));
-  for (const auto& shape : shapes) {
-    DomainClaim average{"NPC as printed (Eq. 32, damped) is more accurate than the undamped Newmark average (" + shape + ")",
+/// The fair comparison's claims on `scope`: FE at its own time (every mesh), the Newmark average and the PIC/FLIP blend
+/// calibrated per shape and mesh to the shape's own NPC energy (the meshes without crossing).
+inline std::vector<DomainClaim> fair_claims(const Runs& runs, const Scope& scope) {
+  std::vector<DomainClaim> claims;
+  for (const auto& shape : scope.shapes) claims.push_back(npc_below_fe(runs, shape, true, scope.cells));
+  for (const auto& shape : scope.shapes) {
+    const std::string label = shape_label(shape);
+    DomainClaim average{"NPC as printed (Eq. 32, damped) is more accurate than the undamped Newmark average (" + label + ")",
                         "RMS_Eq.32 / RMS_average < 1 on the meshes without crossing", {}, false};
     DomainClaim blend{"NPC's lower RMS is more than its damping: NPC is more accurate, by more than 1 %, than FE given the same energy loss by a "
-                      "PIC/FLIP blend calibrated on this shape (" + shape + ")",
+                      "PIC/FLIP blend calibrated on this shape (" + label + ")",
                       "RMS_NPC / RMS_FE+blend < 0.99 on the meshes without crossing (where: FLIP fraction; energy at 200 µs blend / NPC)", {}, false};
-    for (int cells : meshes) {
+    for (int cells : band_cells("negligible")) {
       const auto &npc = runs.at(sweep_name(shape, "npc", cells)), &avg = runs.at(fair_name(shape, "npcavg", cells));
       const auto& fe_blend = runs.at(fair_name(shape, "feblend", cells));
       add_pair(average, mesh_text(cells), ": " + rms_text(npc.rms / speed_v0) + " / " + rms_text(avg.rms / speed_v0), npc, "NPC", avg, "average",
@@ -35,8 +32,19 @@ inline Section fair_section(const Runs& runs) {
                           text(npc.final_energy_ratio, "%.5f"),
                npc, "NPC", fe_blend, "FE + blend", npc.rms / fe_blend.rms, npc.rms < 0.99 * fe_blend.rms);
     }
-    section.claims.insert(section.claims.end(), {average, blend});
+    claims.insert(claims.end(), {average, blend});
   }
+  return claims;
+}
+
+/// FE against NPC, fairly: the claims at this project's beta, then LME's under the authors' beta.
+inline Section fair_section(const Runs& runs) {
+  Section section{"FE against NPC, fairly: FE at its own time, the Newmark average, FE damped like NPC (`dyka_fair`)",
+                  "The blend's FLIP fraction is found per shape and mesh, by bisection, so that shape + FE ends (t = 200 µs) with the "
+                  "energy shape + NPC ends with, to 1e-4 of it (data/dyka_fair.csv: flip_fraction, energy_fe_blend, energy_npc).",
+                  fair_claims(runs, full_scope())};
+  for (const auto& claim : under_authors_beta(fair_claims(runs, lme_scope(authors_lme))))
+    section.claims.push_back(claim);
   return section;
 }
 
@@ -68,19 +76,21 @@ inline Section fig8_section(const Runs& runs) {
   return {"Fig. 8: sensitivity to gamma (`dyka_fig8`)", "", {claim}};
 }
 
-/// Figs. 9 and 10: the shapes compared on every mesh without crossing, and the theory's bound on the convergence.
-inline Section fig9_10_section(const Runs& runs) {
+/// The claims of Figs. 9 and 10 on `scope`: the shapes compared on every mesh without crossing (LME: scope.lme), and
+/// the theory's bound on the convergence.
+inline std::vector<DomainClaim> fig9_10_claims(const Runs& runs, const Scope& scope) {
   DomainClaim agree{"Without grid crossing the three shape functions give nearly the same v_A (paper/08_test_cases.md: within about 1%)",
                     "spread of RMS over the shapes, (largest - smallest) / smallest <= 1 % (the paper's figure), every mesh with "
                     "crossing ratio < 1", {}, false};
+  const std::string lme_label = scope.lme == authors_lme ? "LME at the authors' β " : "LME ";
   for (const auto& integrator : integrators)
-    for (int cells : sweep_cells) {
+    for (int cells : scope.cells) {
       if (crossing_ratio(cells) >= 1.0) continue;
       double linear = runs.rms(sweep_name("linear", integrator, cells)), ugimp = runs.rms(sweep_name("ugimp", integrator, cells)),
-             lme = runs.rms(sweep_name("lme", integrator, cells));
+             lme = runs.rms(sweep_name(scope.lme, integrator, cells));
       const double spread = 100.0 * (std::max({linear, ugimp, lme}) - std::min({linear, ugimp, lme})) / std::min({linear, ugimp, lme});
       agree.add(integrator + " " + std::to_string(cells) + " cells: spread " + text(spread, "%.3g") + " % (linear " + rms_text(linear) + ", uGIMP " +
-                    rms_text(ugimp) + ", LME " + rms_text(lme) + ")",
+                    rms_text(ugimp) + ", " + lme_label + rms_text(lme) + ")",
                 spread, spread <= 1.0);
     }
   // A discontinuity smeared over a width ~ sqrt(h) or ringing over a few cells leaves an L2-in-time error that falls at
@@ -88,21 +98,29 @@ inline Section fig9_10_section(const Runs& runs) {
   // times the 40-cell one, means the exact solution is not being approached.
   DomainClaim bound{"Bound: the exact solution is approached under refinement", "order over " + cells_text(band_cells("negligible")) +
                     " cells >= 0.2 and RMS(640) / RMS(40) <= 0.574", {}, true};
-  for (const auto& shape : shapes)
+  for (const auto& shape : scope.shapes)
     for (const auto& integrator : integrators) {
       const OrderFit fit = fit_runs(runs, band_cells("negligible"), shape, integrator);
       const auto &r40 = runs.at(sweep_name(shape, integrator, 40)), &r640 = runs.at(sweep_name(shape, integrator, 640));
-      add_pair(bound, shape + " " + integrator, ": order " + order_text(fit), r640, "640", r40, "40", r640.rms / r40.rms,
+      add_pair(bound, shape_label(shape) + " " + integrator, ": order " + order_text(fit), r640, "640", r40, "40", r640.rms / r40.rms,
                fit.fitted() && fit.order >= 0.2 && r640.rms <= 0.574 * r40.rms);
     }
-  return {"Figs. 9 and 10: shape functions compared (`dyka_fig9`: FE, `dyka_fig10`: NPC)", "", {agree, bound}};
+  return {agree, bound};
+}
+
+/// Figs. 9 and 10: the claims at this project's beta, then under the authors' beta (LME's runs at it).
+inline Section fig9_10_section(const Runs& runs) {
+  Section section{"Figs. 9 and 10: shape functions compared (`dyka_fig9`: FE, `dyka_fig10`: NPC)", "", fig9_10_claims(runs, full_scope())};
+  for (const auto& claim : under_authors_beta(fig9_10_claims(runs, lme_scope(authors_lme))))
+    section.claims.push_back(claim);
+  return section;
 }
 
 /// LME's warm-started Newton iterations, per family of LME runs.
 inline Section newton_section(const Runs& runs) {
   DomainClaim claim{"Warm-started Newton iterations for lambda stay few (paper/09_choices.md: 2-6)",
                     "mean iterations per particle-step over the family's runs <= 6 (where: largest)", {}, false};
-  for (const std::string family : {"dyka_lme_fe_", "dyka_lme_npc_", "dyka_cfl", "dyka_gamma_", "dyka_base_lme"}) {
+  for (const std::string family : {"dyka_lme_fe_", "dyka_lme_npc_", "dyka_lme_authors_", "dyka_cfl", "dyka_gamma_", "dyka_base_lme"}) {
     double mean = 0.0;
     int count = 0, largest = 0;
     for (const auto& [name, run] : runs.by_name)

@@ -12,18 +12,20 @@ echo "figures: dyka: stability map done"
 
 g() { gnuplot -e "dir='$plots'; data='$data'; $1" "$plots/$2" || status=1; }
 g "out='$figures/dyka_fig6'; orders='$data/dyka_orders.csv'" dyka_fig6.gp
-series() {  # series NAME CAPTION INSET FILES... -- TITLES...
-  local name=$1 caption=$2 inset=$3; shift 3
+series() {  # series NAME CAPTION INSET SETTINGS FILES... -- TITLES... (SETTINGS: more gnuplot, e.g. colour_of, dashes)
+  local name=$1 caption=$2 inset=$3 settings=$4; shift 4
   local files="" titles=""
   while [[ $1 != -- ]]; do files="$files $data/$1.csv"; shift; done; shift
   titles="$*"
-  g "out='$figures/$name'; caption='$caption'; files='${files# }'; titles='$titles'; inset=$inset" dyka_series.gp
+  g "out='$figures/$name'; caption='$caption'; files='${files# }'; titles='$titles'; inset=$inset; $settings" dyka_series.gp
 }
 g "out='$figures/dyka_fig7'" dyka_fig7.gp
-series dyka_fig9 "Fig. 9: shape functions, forward Euler (40 cells, CFL 0.5)" 0 \
-  dyka_linear_fe_40 dyka_ugimp_fe_40 dyka_lme_fe_40 -- linear uGIMP LME
-series dyka_fig10 "Fig. 10: shape functions, predictor-corrector (40 cells, CFL 0.5)" 0 \
-  dyka_linear_npc_40 dyka_ugimp_npc_40 dyka_lme_npc_40 -- linear uGIMP LME
+# Figs. 9 and 10: LME also under the authors' beta, dashed in LME's colour.
+authors="colour_of='1 2 3 3'; dashes='1 1 1 2'"
+series dyka_fig9 "Fig. 9: shape functions, forward Euler (40 cells, CFL 0.5)" 0 "$authors" \
+  dyka_linear_fe_40 dyka_ugimp_fe_40 dyka_lme_fe_40 dyka_lme_authors_fe_40 -- linear uGIMP LME '"LME, authors’ β"'
+series dyka_fig10 "Fig. 10: shape functions, predictor-corrector (40 cells, CFL 0.5)" 0 "$authors" \
+  dyka_linear_npc_40 dyka_ugimp_npc_40 dyka_lme_npc_40 dyka_lme_authors_npc_40 -- linear uGIMP LME '"LME, authors’ β"'
 g "out='$figures/dyka_fig8'" dyka_fig8.gp
 g "out='$figures/dyka_fair'" dyka_fair.gp
 g "out='$figures/dyka_work_precision'" dyka_work_precision.gp

@@ -50,14 +50,14 @@ inline void run_all(Runs& runs, std::vector<CaseSpec> cases, bool write_series_f
   for (auto& result : results) runs.by_name[result.name] = std::move(result);
 }
 
-/// Forward Euler given the predictor-corrector's energy loss: per shape and mesh without crossing, bisection on the FLIP
-/// fraction of shape + FE until its energy at 200 µs matches shape + NPC's (to 1e-4 of it; the energy left grows with
-/// the fraction); that run is the shape's "feblend" run on the mesh.
+/// Forward Euler given the predictor-corrector's energy loss: per shape (LME under both beta rules) and mesh without
+/// crossing, bisection on the FLIP fraction of shape + FE until its energy at 200 µs matches shape + NPC's (to 1e-4 of
+/// it; the energy left grows with the fraction); that run is the shape's "feblend" run on the mesh.
 inline void calibrate_blends(Runs& runs) {
   std::vector<std::pair<std::string, int>> tasks;
   std::vector<std::string> names;
   for (int cells : band_cells("negligible"))
-    for (const auto& shape : shapes) tasks.push_back({shape, cells}), names.push_back("dyka_fair_" + shape + "_" + std::to_string(cells));
+    for (const auto& shape : both_rules_shapes) tasks.push_back({shape, cells}), names.push_back("dyka_fair_" + shape + "_" + std::to_string(cells));
   std::vector<DykaResult> blends(tasks.size());
   std::vector<double> fractions(tasks.size());
   run_cases("dyka", names, std::vector<bool>(tasks.size(), false), runs.cores, [&](size_t k, int threads) {

@@ -8,7 +8,8 @@
 // The studies are data (verification/dyka_cases.hpp); the runs (dyka_runs.hpp): every independent case, then forward
 // Euler with a PIC/FLIP blend calibrated per shape and mesh to the shape's own NPC energy, then the runs of the
 // error-cost fronts on 40 and 160 cells timed 5 times more, interleaved (CPU time). One analysis function per figure:
-// dyka_accuracy.hpp (Figs. 6, 7), dyka_fair.hpp (dyka_fair, Figs. 8-10, Newton, energy), dyka_baselines.hpp (fronts).
+// dyka_accuracy.hpp (Figs. 6, 7), dyka_fair.hpp (dyka_fair, Figs. 8-10, Newton, energy), dyka_rules.hpp (LME's claims
+// under both beta rules), dyka_baselines.hpp (fronts).
 
 #include <cstdio>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include "verification/dyka_baselines.hpp"
 #include "verification/dyka_data.hpp"
 #include "verification/dyka_fair.hpp"
+#include "verification/dyka_rules.hpp"
 
 using namespace verification;
 using namespace verification::dyka;
@@ -54,8 +56,8 @@ int main(int argc, char** argv) {
   const auto entries = fronts(runs);
   write_fronts(entries, runs.folder + "/dyka_baselines.csv");
   const std::vector<Section> sections{all_runs_section(runs), fig6_section(runs),  fig7_section(runs),   fair_section(runs),
-                                      fig8_section(runs),     fig9_10_section(runs), newton_section(runs), energy_section(runs),
-                                      baselines_section(runs, entries)};
+                                      fig8_section(runs),     fig9_10_section(runs), rules_section(runs),  newton_section(runs),
+                                      energy_section(runs),   baselines_section(runs, entries)};
   write_report(argv[2], sections);
   bool hard = true;
   for (const auto& section : sections) hard = hard && hard_claims_hold(section.claims);
