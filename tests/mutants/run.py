@@ -42,7 +42,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 LIST = os.path.join(ROOT, "tests", "mutants", "mutants.tsv")
-COPIED = ["CMakeLists.txt", "mpm", "tests", "verification", "scenes"]
+COPIED = ["CMakeLists.txt", "README.md", "mpm", "tests", "verification", "scenes"]
 BUILD_TIMEOUT = 900  # s; a build that takes longer is an error of the run, not a fate
 TEST_TIMEOUT = 300   # s; a test program that takes longer is killed, and so is its mutant
 
