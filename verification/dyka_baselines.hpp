@@ -72,15 +72,17 @@ inline std::vector<FrontEntry> fronts(const Runs& runs) {
       }
       mesh.push_back(e);
     }
-    for (auto& e : mesh) {
-      for (const auto& o : mesh)
-        if (!o.stopped && !e.stopped && o.rms < e.rms && o.run != e.run) {
-          const bool clearly = o.repeats > 1 ? o.cpu_high < e.cpu_low : o.cpu * (1.0 + spread) < e.cpu;
-          std::string* list = clearly ? &e.dominated_by : o.cpu < e.cpu ? &e.ties : nullptr;
-          if (list) *list += (list->empty() ? "" : ", ") + o.method;
-        }
-      e.on_front = !e.stopped && e.dominated_by.empty();
-      all.push_back(e);
+    std::vector<CostPoint> points;
+    for (const auto& e : mesh) {
+      CostPoint point;
+      point.label = e.method, point.error = e.rms, point.stopped = e.stopped, point.repeats = e.repeats;
+      point.cpu = e.cpu, point.cpu_low = e.cpu_low, point.cpu_high = e.cpu_high;
+      points.push_back(point);
+    }
+    mark_front(points, spread);  // error_cost.hpp
+    for (size_t k = 0; k < mesh.size(); ++k) {
+      mesh[k].on_front = points[k].on_front, mesh[k].dominated_by = points[k].dominated_by, mesh[k].ties = points[k].ties;
+      all.push_back(mesh[k]);
     }
   }
   return all;

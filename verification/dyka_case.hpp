@@ -13,6 +13,7 @@
 #include "mpm/analysis/rms_error.hpp"
 #include "mpm/exact/bar.hpp"
 #include "mpm/run.hpp"
+#include "verification/parallel.hpp"
 
 namespace verification {
 
@@ -65,13 +66,6 @@ struct VelocityRecorder : mpm::Monitor<1> {
 inline std::vector<std::string> shape_settings(const std::string& shape) {
   if (shape == "lme_authors") return {"solver.shape=\"lme\"", "solver.lme_beta=\"authors\""};
   return {"solver.shape=\"" + shape + "\""};
-}
-
-/// CPU seconds of the calling thread.
-inline double thread_cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
 }
 
 /// Sets result.overshoot and result.undershoot from its series (see DykaResult). A plateau is a run of samples

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "verification/dyka_case.hpp"
+#include "verification/error_cost.hpp"
 
 namespace verification::dyka {
 
@@ -128,9 +129,9 @@ const std::vector<Baseline> baselines{
     {"lme1.5_fe", {"solver.shape=\"lme\"", "solver.integrator=\"fe\"", "solver.lme_gamma=1.5"}, false},
     {"lme1.5_npc", {"solver.shape=\"lme\"", "solver.integrator=\"npc\"", "solver.lme_gamma=1.5"}, false}};
 const std::vector<int> baseline_cells{40, 160, 640, 2560};
-/// The meshes whose runs are timed 5 times, interleaved, for the error-cost fronts (the others once each).
+/// The meshes whose runs are timed timing_repeats (error_cost.hpp) more times, interleaved, for the error-cost fronts
+/// (the others once each).
 const std::vector<int> repeated_cells{40, 160};
-constexpr int timing_repeats = 5;
 
 /// The choices of paper/09_choices.md, each switched on its own on the sweep's run (or on `reference`).
 struct ChoiceCase {

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdio>
+#include <ctime>
 #include <map>
 #include <mutex>
 #include <string>
@@ -16,6 +17,14 @@
 #include "mpm/core/parallel.hpp"
 
 namespace verification {
+
+/// CPU seconds of the calling thread: a case runs on one thread, so its CPU time, unlike its wall time, hardly moves
+/// with the other processes on the cores.
+inline double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
 
 /// The cores a suite uses: --threads N among its arguments (removed from them), or every core this
 /// process may run on (as nproc counts them). \returns 0 for a bad value.

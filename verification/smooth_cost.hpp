@@ -3,6 +3,7 @@
 #pragma once
 #include <fstream>
 
+#include "verification/parallel.hpp"
 #include "verification/smooth_claims.hpp"
 
 namespace verification::smooth {

@@ -7,16 +7,10 @@
 #include <stdexcept>
 
 #include "verification/claims.hpp"
+#include "verification/parallel.hpp"
 #include "verification/smooth_study.hpp"
 
 namespace verification::smooth {
-
-/// CPU seconds of the calling thread (a case runs on one thread: its CPU time, robust to other processes on the cores).
-inline double thread_cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
-}
 
 /// The scenes the suite runs.
 struct Scenes {

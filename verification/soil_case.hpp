@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "mpm/run.hpp"
+#include "verification/parallel.hpp"
 
 namespace verification {
 
@@ -45,6 +46,7 @@ struct SoilResult {
   long steps = 0;
   double wall_seconds = 0.0;    ///< the whole case: set-up, run and recording
   double solver_seconds = 0.0;  ///< the time-step loop alone (RunSummary)
+  double cpu_seconds = 0.0;     ///< CPU time of the thread that ran it (the run and its recording; one thread per case)
   double newton_mean = 0.0;     ///< LME: Newton iterations per particle-step on average (0 for other shapes)
   int newton_max = 0;           ///< LME: the most in one particle-step
   double neighbours_mean = 0.0; ///< nodes per particle-step on average
@@ -120,6 +122,7 @@ inline SoilResult run_soil_case(const std::string& scene_path, const std::string
   for (double m : setup.particles.mass) result.particle_mass += m;
   SoilRecorder recorder(result, observed, std::abs(result.scene.gravity[1]));
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
   mpm::RunSummary summary;
   try {
     summary = mpm::run_setup<2>(result.scene, setup, recorder, &summary);
@@ -128,6 +131,7 @@ inline SoilResult run_soil_case(const std::string& scene_path, const std::string
     result.failure = failure.message();
   }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.cpu_seconds = thread_cpu_seconds() - cpu_start;
   result.steps = summary.steps;
   result.largest_mass_mismatch = summary.largest_mass_error;
   result.solver_seconds = summary.wall_seconds;

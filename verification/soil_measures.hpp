@@ -176,6 +176,7 @@ inline RatioMeasures measure_stress_ratio(const SoilResult& result, const SoilSn
 struct SoilOutcome {
   SoilResult result;
   SettlementMeasures settlement;
+  std::vector<double> cpu_repeats;  ///< the CPU times of its timing repeats (the runs of an error-cost front; else none)
 };
 
 }  // namespace verification
