@@ -86,9 +86,8 @@ class BsplineShape {
   /// The weights are written in place (a copy through a local array, which the compiler moves in 16-byte pieces
   /// after 8-byte stores, stalled each particle on store forwarding). At an edge the ghost is folded there and
   /// dropped: the last node by the count, the first by moving the others down one place in a loop of fixed
-  /// length. Shifted by a loop over a variable count, the weights stayed in memory for every particle (the 2D
-  /// quadratic's stencil phase 57 ms instead of 40 on the soil block at 10 x 10 cells); folded in local arrays
-  /// and copied into `factors`, the 2D cubic's took 57 ms instead of 50 (benchmarks/README.md).
+  /// length. (Two other forms were slower: shifted by a loop over a variable count, and folded in local arrays
+  /// then copied; benchmarks/README.md, "Optimisations tried", has the measurements.)
   void set_axis_factors(double xi, int cells, AxisFactors<Degree + 1>& factors) const {
     // The nodes of the support: xi - 1.5 < i < xi + 1.5 (quadratic), xi - 2 < i < xi + 2 (cubic).
     // (the cubic's cell is the last one on the upper edge, xi = cells, as Grid::cell_of has it)

@@ -190,7 +190,7 @@ Matrix<Dim> lme_covariance(int count, const Vector<Dim>* offsets, const double* 
 /// (far from the solution, with nearly all weight on one node, Eq. (37) as written can round to 0 or
 /// below). J is symmetric and positive definite when the neighbours span the space, so log Z is
 /// convex and r = 0 has one solution. (The second pass is a function of its own, lme_covariance, and
-/// lme_moments is declared inline: GCC then inlines it into Newton's loop, 5 % faster on the Dyka bar.)
+/// lme_moments is declared inline, so that GCC inlines it into Newton's loop: benchmarks/README.md.)
 template <int Dim>
 inline LmeMoments<Dim> lme_moments(int count, const Vector<Dim>* offsets, const double* weights, double weight_sum) {
   Vector<Dim> first = Vector<Dim>::Zero();
@@ -303,8 +303,8 @@ struct LmeSolution {
 /// (lme_weights_moved). Stops when |r| <= tolerance; leaves the weights of the last lambda in
 /// `weights`. `start`: the weights at `lambda`, already in `weights` (lme_partition, or the particle's
 /// last shape functions moved by lme_weights_moved, whose shift m is unknown: NaN).
-/// `diameter`: that of the neighbourhood, 2 R / h. (Declared inline: GCC then inlines it into
-/// LmeShape::evaluate, and LME + NPC on the Dyka bar runs 6 % faster.)
+/// `diameter`: that of the neighbourhood, 2 R / h. (Declared inline, so that GCC inlines it into
+/// LmeShape::evaluate: benchmarks/README.md.)
 template <int Dim>
 inline LmeSolution<Dim> solve_lme_multiplier(int count, const Vector<Dim>* offsets, double beta, Vector<Dim> lambda,
                                       const LmePartition& start, double diameter, double tolerance, int max_iterations,

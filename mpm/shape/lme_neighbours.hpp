@@ -52,7 +52,7 @@ int lattice_points_in_ball_bound(double radius) {
 /// Searches only the lattice box [x - R, x + R] clipped to the grid. When R >= h sqrt(Dim) (LmeShape
 /// requires it), the corners of the cell that contains x are always among the neighbours, so x is
 /// inside their convex hull. \throws ShapeFailure if there are more than `capacity`. (Declared inline,
-/// so that GCC inlines it into LmeShape::evaluate: 2 % faster on the Dyka bar.)
+/// so that GCC inlines it into LmeShape::evaluate; measured in benchmarks/README.md, "Optimisations tried".)
 template <int Dim>
 inline int lme_neighbours(const Grid<Dim>& grid, double radius_squared, int capacity, int particle, const Vector<Dim>& x,
                    int* nodes, Vector<Dim>* offsets) {
