@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "mpm/cli/options.hpp"
+#include "mpm/cli/run_command.hpp"
 #include "mpm/integrators/forward_euler.hpp"
 #include "mpm/integrators/newmark_predictor_corrector.hpp"
 #include "mpm/integrators/update_stress_last.hpp"
@@ -359,22 +360,18 @@ struct TraceObserver {
 
 /// `mpm trace`'s parser, its options bound to `request`.
 inline std::unique_ptr<CommandParser> trace_parser(TraceRequest& request) {
-  auto app = std::make_unique<CommandParser>(
+  auto app = scene_command_parser(
       "trace",
       "Runs a scene to step N and prints, after each phase of that step of its integrator, the phase's equations,\n"
       "every nodal quantity of the nodes that hold mass (m_I, p_I, v_I, f_I, a_I, the fixed components,\n"
       "reactions r_I) and every particle quantity (x, v, a, strain, stress, density), as CSV or an aligned table;\n"
       "writes no file. "
       "Column names say the time level: _k at t_k, _k1 at t_k + dt, _pred the predictor; f_I and a_I that of the\n"
-      "stress that makes them. The phases are numbered as the integrator numbers them (the book's tables too).");
-  app->add_option("SCENE.toml", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
+      "stress that makes them. The phases are numbered as the integrator numbers them (the book's tables too).",
+      request.scene_path, request.overrides);
   app->add_option("--step", request.step, "the step to trace, numbered from 1 (the first step goes from t = 0)")
       ->required()
       ->check(whole_in(1, 10000000));
-  app->add_option("--set", request.overrides,
-                  "overrides a scene key with a TOML value, as for mpm run; repeat for more")
-      ->allow_extra_args(false)
-      ->type_name("KEY=VALUE");
   app->add_option("--format", request.format, "csv: one row per node or particle and phase; table: aligned columns")
       ->check(one_of({"csv", "table"}));
   return app;
