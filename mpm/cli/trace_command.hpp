@@ -504,6 +504,18 @@ TEST_CASE("mpm trace: a scene run to step 2 and no further, its t_k the first dt
   }
   CHECK(refusal.rfind("--step: the run ends after step 4 (t = 1 s", 0) == 0);
   CHECK(out.str().empty());
+  // USL: the forces of the stress at t_k, f_I^k, and forward Euler's a_p^k after the update, its phase 8 v_I^{k+1}.
+  scene.stress_update = io::StressUpdate::usl;
+  scene.control.last_step = 1;
+  const TraceVariant usl = trace_variant(scene);
+  StepTrace<1> usl_trace(setup.model, 1, usl, true);
+  run_setup<1>(scene, setup, usl_trace);
+  const auto& blocks = usl_trace.blocks();
+  REQUIRE(blocks.size() == 9);
+  CHECK(blocks[4].nodes.header.back() == "r_I_x");
+  CHECK(blocks[4].nodes.header[blocks[4].nodes.header.size() - 2] == "f_I_k_x");
+  CHECK(blocks[6].particles.header[4] == "a_p_k_x");
+  CHECK(phase_number(usl, blocks[7].phase) == 8);
 }
 
 }  // namespace mpm::cli
