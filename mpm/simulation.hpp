@@ -81,8 +81,10 @@ struct Monitor {
   /// True if the monitor watches the phases of step `step` (numbered from 1), which goes from `time` to `time` + `dt`;
   /// asked once before each step.
   virtual bool watches(long /*step*/, double /*time*/, double /*dt*/) { return false; }
-  /// After each phase of a watched step, the loop's own phases (stencils, body_force, checks, output) too.
-  virtual void after(Phase /*phase*/, const Particles<Dim>& /*particles*/, const GridFields<Dim>& /*grid*/) {}
+  /// After each phase of a watched step, the loop's own phases (stencils, body_force, checks, output) too;
+  /// `stencils` holds the step's \f$ N_{Ip} \f$ and \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$.
+  virtual void after(Phase /*phase*/, const Particles<Dim>& /*particles*/, const GridFields<Dim>& /*grid*/,
+                     const Stencils<Dim>& /*stencils*/) {}
 };
 
 /// The observer of the phases that the loop passes to the integrator's step(): it times each phase and, during a
@@ -90,11 +92,12 @@ struct Monitor {
 template <int Dim>
 struct LoopPhases {
   PhaseTimers timers;
-  Monitor<Dim>* watcher = nullptr;  ///< the monitor, while it watches the step; else null
+  Monitor<Dim>* watcher = nullptr;          ///< the monitor, while it watches the step; else null
+  const Stencils<Dim>* stencils = nullptr;  ///< the loop's stencils, shown to the watcher
 
   void after(Phase phase, const Particles<Dim>& particles, const GridFields<Dim>& grid) {
     timers.lap(phase);
-    if (watcher) watcher->after(phase, particles, grid);
+    if (watcher) watcher->after(phase, particles, grid, *stencils);
   }
 };
 
@@ -132,6 +135,7 @@ class Simulation {
     else write_due_samples(step, time, next_sample, survey.balances, monitor);
     write_due_snapshots(time, next_snapshot, monitor);
     LoopPhases<Dim>& phases = phases_;
+    phases.stencils = &stencils_;
     phases.timers.restart();
 
     const bool fixed = control_.fixed_dt > 0.0;

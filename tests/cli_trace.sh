@@ -81,7 +81,7 @@ for method in fe npc; do
   check "$method: p_I at x = 1 m" "$(value "$work/$method.csv" $first node 2 p_I_k_x)" 2 1e-12
 done
 check "fe: the fixed node's momentum held" "$(value "$work/fe.csv" fixed_momentum node 3 p_I_k_x)" 0 0
-check "fe: the fixed node's force moved into its reaction" "$(value "$work/fe.csv" forces node 3 f_I_x)" 0 0
+check "fe: the fixed node's force moved into its reaction" "$(value "$work/fe.csv" forces node 3 f_I_k1_x)" 0 0
 # USF: the stress of step 1 makes the forces. Node 3 (x = 2 m) sees particle 1 only: f = -V_1 sigma_1 dN/dx, dN/dx = 1
 m1=$(value "$work/fe.csv" forces particle 1 m_p)
 rho1=$(value "$work/fe.csv" forces particle 1 rho_p_k1)
@@ -92,17 +92,25 @@ check "fe: the reaction at the held node, -V_p sigma_p" "$(value "$work/fe.csv" 
 # Eq. (12): p_I^{k+1} = p_I^k + dt f_I at node 2, dt from the title line
 dt=$(sed -n '1s/.*, dt = \([^ ]*\) s;.*/\1/p' "$work/fe.csv")
 p_k=$(value "$work/fe.csv" momentum_balance node 2 p_I_k_x)
-f=$(value "$work/fe.csv" momentum_balance node 2 f_I_x)
+f=$(value "$work/fe.csv" momentum_balance node 2 f_I_k1_x)
 check "fe: Eq. (12) at node 2" "$(value "$work/fe.csv" momentum_balance node 2 p_I_k1_x)" \
   "$(awk -v p="$p_k" -v dt="$dt" -v f="$f" 'BEGIN { printf "%.15g", p + dt * f }')" 1e-12
 # Eq. (30): v_I^{k+1} = v_I^pred + gamma dt f_I / m_I at node 2, gamma = 1/2
 dt=$(sed -n '1s/.*, dt = \([^ ]*\) s;.*/\1/p' "$work/npc.csv")
 v=$(value "$work/npc.csv" corrector node 2 v_I_pred_x)
-f=$(value "$work/npc.csv" corrector node 2 f_I_x)
+f=$(value "$work/npc.csv" corrector node 2 f_I_k1_x)
 check "npc: Eq. (30) at node 2" "$(value "$work/npc.csv" corrector node 2 v_I_k1_x)" \
   "$(awk -v v="$v" -v dt="$dt" -v f="$f" 'BEGIN { printf "%.15g", v + 0.5 * dt * f / 4 }')" 1e-12
 
-# Every variant prints its own phases, in order, each with its equations.
+# Forward Euler's particle acceleration a_p^{k+1}, printed after its update: v_p^{k+1} = v_p^k + dt a_p^{k+1}.
+dt=$(sed -n '1s/.*, dt = \([^ ]*\) s;.*/\1/p' "$work/fe.csv")
+v_k=$(value "$work/fe.csv" reset particle 1 v_p_k_x)
+v_k1=$(value "$work/fe.csv" euler_update particle 1 v_p_k1_x)
+check "fe: a_p^{k+1} = (v_p^{k+1} - v_p^k) / dt" "$(value "$work/fe.csv" euler_update particle 1 a_p_k1_x)" \
+  "$(awk -v a="$v_k" -v b="$v_k1" -v dt="$dt" 'BEGIN { printf "%.15g", (b - a) / dt }')" 1e-9
+[[ -z $(value "$work/fe.csv" momentum_balance particle 1 a_p_k1_x) ]] || fail "fe: a_p^{k+1} before the update"
+
+# Every variant prints its own phases, in order, numbered as its step() numbers them, each with its equations.
 phases() { grep '^# phase' "$1" | sed 's/^# phase [0-9]* of [0-9]*: \([a-z_0-9]*\).*/\1/' | tr '\n' ' '; }
 expect_fe="reset mass_momentum fixed_momentum velocity_k stress forces momentum_balance euler_update "
 expect_usl="reset mass_momentum fixed_momentum velocity_k forces momentum_balance euler_update velocity_k1 stress "
@@ -119,6 +127,11 @@ for order in usl musl; do
   expect=expect_$order
   [[ $(phases "$work/$order.csv") == "${!expect}" ]] || fail "$order phases: $(phases "$work/$order.csv")"
 done
+grep -q '^# phase 8 of 9: velocity_k1' "$work/usl.csv" || fail "usl: v_I^{k+1} not phase 8 (7 is MUSL's)"
+grep -q '^# phase 7 of 9: reprojection' "$work/musl.csv" || fail "musl: the reprojection not phase 7"
+grep -q '^# phase 4 of 6: forces' "$work/npc.csv" || fail "npc: the forces not phase 4"
+awk -F, '/^phase,.*,f_I_k_x,/ { f = 1 } /^phase,.*,a_p_k_x,/ { a = 1 } END { exit !(f && a) }' "$work/usl.csv" ||
+  fail "usl: no f_I^k, a_p^k (the forces of the stress at t_k)"
 awk -F, '/^phase,/ && $0 ~ /v_I_k1_musl_x/ { found = 1 } END { exit !found }' "$work/musl.csv" ||
   fail "musl: no column v_I_k1_musl"
 # Each position update of the predictor-corrector names the velocity that moves the particles.

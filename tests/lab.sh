@@ -57,8 +57,17 @@ for expected in "fe at CFL 1.95: exit 0" "fe at CFL 2.05: exit 3" "npc at CFL 1.
 done
 
 grep -q "^failure: .*unstable: energy grew" "$work/out5" || fail "linear at 2560 cells: no energy growth in $(cat "$work/out5")"
+# 3. mpm run warns above each limit and only there.
+for run in fe-2.05:2.000 npc-1.45:1.414; do
+  log=$work/cfl-${run%%:*}.log cfl=${run%%:*} cfl=${cfl#*-}
+  grep -qF "solver.cfl: $cfl is above the stability limit ${run#*:}" "$log" ||
+    fail "exercise 3: no warning above the limit in $log: $(cat "$log")"
+done
+for run in fe-1.95 npc-1.38; do
+  ! grep -q "above the stability limit" "$work/cfl-$run.log" || fail "exercise 3: a warning below the limit ($run)"
+done
 
-# 6. The call the exercise comments out is still there; 7. the planted bug still applies.
+# 6. The call the exercise comments out is still there; 7. the planted bug still applies (its answer: below).
 grep -qF 'newmark_corrector(newmark_gamma, dt, grid);' "$root/mpm/integrators/newmark_predictor_corrector.hpp" ||
   fail "exercise 6: no corrector call to comment out in newmark_predictor_corrector.hpp"
 original=$(awk -F'\t' '$1 == "force_internal_mass" { print $4 }' "$root/tests/mutants/mutants.tsv")
@@ -68,6 +77,57 @@ replacement=$(awk -F'\t' '$1 == "force_internal_mass" { print $5 }' "$root/tests
 for text in "${original#*= }" "${replacement#*= }"; do
   grep -qF "\`${text%;}\`" "$root/paper/13_lab.md" || fail "exercise 7: the page does not quote '${text%;}'"
 done
+
+# 7. The planted bug's answer: forward Euler's step 1 from the trace, with m_p for V_p = m_p / rho_p in Eq. (14)
+# (the mutant's one change) carried through Eqs. (12), (19) and (21) with linear hats, against the page's numbers.
+"$mpm" trace "$root/scenes/worked_example.toml" --step 1 >"$work/trace.csv" 2>"$work/trace.err" ||
+  fail "exercise 7: mpm trace: $(cat "$work/trace.err")"
+answer=$(grep -oE '\\mathbf f_I\^\{int\} = \([^)]*\)|v_p = \([^)]*\)|x_p = \([^)]*\)' "$root/paper/13_lab.md" |
+  sed -n '/f_I/,$p' | tr -d '\\' | head -3 | tr '\n' ';')
+python3 - "$work/trace.csv" "$answer" <<'PY' || fail "exercise 7: the page's answer is not the mutant's step (above)"
+import re, sys
+rows, header, dt = {}, [], None
+for line in open(sys.argv[1]):
+    line = line.strip()
+    if line.startswith("# mpm trace"):
+        dt = float(re.search(r"dt = ([0-9.e+-]+) s", line).group(1))
+    if not line or line.startswith("#"):
+        continue
+    fields = line.split(",")
+    if fields[0] == "phase":
+        header = fields
+    else:
+        rows.setdefault((fields[0], fields[2]), []).append(dict(zip(header, fields)))
+nodes, particles = rows[("forces", "node")], rows[("stress", "particle")]
+x_I = [float(n["x_I"]) for n in nodes]
+h = x_I[1] - x_I[0]
+def hat(x, I): return max(0.0, 1.0 - abs(x - x_I[I]) / h)
+def slope(x, I): return 0.0 if hat(x, I) == 0.0 else (1.0 if x < x_I[I] else -1.0) / h
+f_int, f_int_true = [0.0] * len(nodes), [0.0] * len(nodes)
+for p in particles:
+    x, m, sigma, rho = (float(p[k]) for k in ("x_p_k", "m_p", "sigma_p_k1_xx", "rho_p_k1"))
+    for I in range(len(nodes)):
+        f_int[I] -= sigma * slope(x, I) * m
+        f_int_true[I] -= sigma * slope(x, I) * m / rho
+f = [0.0 if n["fixed"] != "-" else float(n["f_I_k1_x"]) + float(n["r_I_x"]) - f_int_true[I] + f_int[I]
+     for I, n in enumerate(nodes)]
+m_I = [float(n["m_I"]) for n in nodes]
+p_k1 = [float(n["p_I_k_x"]) + dt * f[I] for I, n in enumerate(nodes)]
+v = [float(p["v_p_k_x"]) + dt * sum(hat(float(p["x_p_k"]), I) * f[I] / m_I[I] for I in range(len(nodes)))
+     for p in particles]
+x = [float(p["x_p_k"]) + dt * sum(hat(float(p["x_p_k"]), I) * p_k1[I] / m_I[I] for I in range(len(nodes)))
+     for p in particles]
+got = {"f_I^{int}": f_int, "v_p": v, "x_p": x}
+quoted = dict(re.findall(r"(?:mathbf )?(f_I\^\{int\}|v_p|x_p) = \(([^)]*)\)", sys.argv[2]))
+ok = len(quoted) == 3
+for name, values in got.items():
+    texts = [t.strip().replace("−", "-") for t in quoted.get(name, "").split(",")]
+    for text, value in zip(texts, values):
+        tolerance = 0.5 * 10.0 ** -(len(text.split(".")[1]) if "." in text else 0)
+        ok = ok and len(texts) == len(values) and abs(float(text) - value) <= tolerance + 1e-12
+    print(f"exercise 7: {name}: the page ({quoted.get(name)}), the mutant's step {[round(g, 6) for g in values]}")
+sys.exit(0 if ok else 1)
+PY
 
 echo "lab: $checked numbers of the worked example, 7 exercises, $failures failed"
 [[ $failures -eq 0 ]]

@@ -110,24 +110,34 @@ int run_scene(io::Scene scene, RunRequest request) {
   return run_into_folder<Dim>(scene, setup, request);
 }
 
+/// A parser of a command that runs a scene (`mpm run`, `mpm trace`), with the two options they share, declared
+/// once: SCENE.toml, required, and --set KEY=VALUE, repeatable, bound to `scene_path` and `overrides`.
+inline std::unique_ptr<CommandParser> scene_command_parser(const std::string& name, const std::string& description,
+                                                           std::string& scene_path,
+                                                           std::vector<std::string>& overrides) {
+  auto app = std::make_unique<CommandParser>(name, description);
+  app->add_option("SCENE.toml", scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
+  app->add_option("--set", overrides,
+                  "overrides a scene key with a TOML value: --set solver.cfl=0.2, --set 'solver.shape=\"lme\"',\n"
+                  "--set grid.cells=[160], --set 'body[0].max=[1.0]'; repeat for more")
+      ->allow_extra_args(false)
+      ->type_name("KEY=VALUE");
+  return app;
+}
+
 /// `mpm run`'s parser, its options bound to `request`.
 inline std::unique_ptr<CommandParser> run_parser(RunRequest& request) {
-  auto app = std::make_unique<CommandParser>(
+  auto app = scene_command_parser(
       "run",
       "Runs a scene and writes observers.csv, energy.csv, grid.csv, exact.csv and exact_NNNN.csv (when the scene\n"
       "names an exact solution), snapshot_NNNN.csv/.vtp, snapshots.pvd (ParaView time series) and run.json into\n"
       "its folder; run.json says \"running\", then \"done\", \"failed\" or \"interrupted\". Files of an earlier run\n"
       "there are removed first.\n"
-      "Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.");
-  app->add_option("SCENE.toml", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
+      "Warnings (`warning: FILE:LINE: KEY: ...` on stderr) flag a suspicious but valid scene; they never stop a run.",
+      request.scene_path, request.overrides);
   app->add_option("--out", request.folder, "output folder (default runs/<scene file name>)")
       ->type_name("DIR")
       ->check(CLI::Validator([](const std::string& text) { return text.empty() ? "must not be empty" : ""; }, "DIR"));
-  app->add_option("--set", request.overrides,
-                  "overrides a scene key with a TOML value: --set solver.cfl=0.2, --set 'solver.shape=\"lme\"',\n"
-                  "--set grid.cells=[160], --set 'body[0].max=[1.0]'; repeat for more")
-      ->allow_extra_args(false)
-      ->type_name("KEY=VALUE");
   app->add_option("--threads", request.threads, "cores to run on (0: all; the results are the same bits on any number)")
       ->check(whole_in(0, 4096));
   app->add_flag("--print-scene", request.print_scene,

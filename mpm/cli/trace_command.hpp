@@ -1,9 +1,12 @@
 /// \file
 /// `mpm trace SCENE.toml --step N`: runs the scene to step N and prints, after each phase of that step of the scene's
 /// integrator (mpm/core/step_phases.hpp), every nodal quantity of the nodes that hold mass and every particle
-/// quantity, as CSV (one row per node or particle and phase) or as an aligned table. A column's name says its time
-/// level where the step has two: `v_I_k` is \f$ \mathbf v_I^k \f$, `v_I_k1` is \f$ \mathbf v_I^{k+1} \f$, `v_I_pred`
-/// the predictor of Eq. (29); a nodal value, once computed, stays in the later phases' rows.
+/// quantity, as CSV (one row per node or particle and phase) or as an aligned table. The phases are numbered as the
+/// integrator numbers them (its `phases` list; phase 0 the reset). A column's name says its time level:
+/// `v_I_k` is \f$ \mathbf v_I^k \f$, `v_I_k1` is \f$ \mathbf v_I^{k+1} \f$, `v_I_pred` the predictor of Eq. (29);
+/// the forces and accelerations carry the level of the stress that makes them, `f_I_k1` \f$ \mathbf f_I^{k+1} \f$
+/// (update stress first, the predictor-corrector) and `f_I_k` \f$ \mathbf f_I^k \f$ (USL, MUSL), as the book names
+/// them; a nodal value, once computed, stays in the later phases' rows.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -16,8 +19,10 @@
 #include <vector>
 
 #include "mpm/cli/options.hpp"
+#include "mpm/cli/run_command.hpp"
 #include "mpm/integrators/forward_euler.hpp"
 #include "mpm/integrators/newmark_predictor_corrector.hpp"
+#include "mpm/integrators/update_stress_last.hpp"
 #include "mpm/run.hpp"
 
 namespace mpm::cli {
@@ -35,6 +40,8 @@ struct TraceVariant {
   std::string moving = "v_I_k1";       ///< the name of the nodal velocity that moves the particles (G2P)
   std::string stress_last = "v_I_k1";  ///< USL, MUSL: of the velocity of their stress update (`v_I_k1_musl`)
   bool accelerations = false;          ///< the particles carry a_p (the predictor-corrector)
+  std::string force_level = "k1";      ///< the time level of f_I, a_I and forward Euler's a_p: `k` for USL, MUSL
+  std::vector<Phase> phases{ForwardEuler::phases.begin(), ForwardEuler::phases.end()};  ///< the integrator's, numbered
 };
 
 /// One table of a phase: a header and its rows, the numbers already written.
@@ -70,9 +77,11 @@ class StepTrace : public Monitor<Dim> {
     return true;
   }
 
-  void after(Phase phase, const Particles<Dim>& particles, const GridFields<Dim>& grid) override {
+  void after(Phase phase, const Particles<Dim>& particles, const GridFields<Dim>& grid,
+             const Stencils<Dim>& stencils) override {
     if (!phase_info(phase).of_step) return;
     capture(phase, grid);
+    if (phase == Phase::euler_update) interpolate_acceleration(grid, stencils);
     if (phase == Phase::stress) state_level_ = "k1";
     if (phase == Phase::euler_update || phase == Phase::newmark_update) motion_level_ = "k1";
     blocks_.push_back({phase, node_table(grid), particle_table(particles)});
@@ -92,6 +101,19 @@ class StepTrace : public Monitor<Dim> {
     std::vector<double> values;
   };
 
+  /// Forward Euler's particle acceleration \f$ \mathbf a_p = \sum_I N_{Ip} \mathbf a_I \f$, Eqs. (18)-(19), which its
+  /// update adds to \f$ \mathbf v_p \f$ times dt and does not store: the same sum, in the same order, as
+  /// forward_euler_particle_update.
+  void interpolate_acceleration(const GridFields<Dim>& grid, const Stencils<Dim>& stencils) {
+    const int particles = static_cast<int>(stencils.count.size());
+    acceleration_.assign(particles, Vector<Dim>::Zero());
+    for (int p = 0; p < particles; ++p) {
+      const ParticleStencil<Dim> stencil = stencils.of(p);
+      for (int k = 0; k < stencil.count; ++k)
+        acceleration_[p] += stencil.value[k] * grid.nodal_acceleration[stencil.node[k]];
+    }
+  }
+
   void capture(Phase phase, const GridFields<Dim>& grid) {
     const bool predictor = phase == Phase::mass_predictor || phase == Phase::fixed_predictor;
     if (phase == Phase::mass_momentum || phase == Phase::mass_predictor) keep("m_I", grid.nodal_mass);
@@ -99,13 +121,13 @@ class StepTrace : public Monitor<Dim> {
     if (predictor || phase == Phase::mass_momentum || phase == Phase::fixed_momentum)
       keep("p_I_k", grid.nodal_momentum);
     if (phase == Phase::velocity_k) keep("v_I_k", grid.nodal_velocity);
-    if (phase == Phase::forces) keep("f_I", grid.nodal_force), keep("r_I", grid.reaction);
+    if (phase == Phase::forces) keep("f_I_" + names_.force_level, grid.nodal_force), keep("r_I", grid.reaction);
     if (phase == Phase::momentum_balance) keep("p_I_k1", grid.nodal_momentum);
     if (phase == Phase::reprojection) keep("p_I_k1_musl", grid.nodal_momentum);
     if (phase == Phase::velocity_k1) keep(names_.stress_last, grid.nodal_velocity);
     if (phase == Phase::corrector) keep("v_I_k1", grid.nodal_velocity);
     if (phase == Phase::euler_update || phase == Phase::newmark_update)
-      keep("a_I", grid.nodal_acceleration), keep(names_.moving, grid.moving_velocity);
+      keep("a_I_" + names_.force_level, grid.nodal_acceleration), keep(names_.moving, grid.moving_velocity);
   }
 
   void keep(const std::string& name, const std::vector<double>& field) {
@@ -165,11 +187,13 @@ class StepTrace : public Monitor<Dim> {
   double time_ = 0.0, dt_ = 0.0;
   std::string motion_level_ = "k", state_level_ = "k";  ///< the time level of x_p, v_p, a_p and of eps, sigma, rho
   std::vector<Column> columns_;
+  std::vector<Vector<Dim>> acceleration_;  ///< forward Euler's a_p, once its update has run
   std::vector<TraceBlock> blocks_;
 };
 
 /// The particles' rows: id; mass; position, velocity (and acceleration for the predictor-corrector) at the level of the
-/// motion; strain, stress and density at the level of the state.
+/// motion; forward Euler's acceleration, after its update, at the level of the forces; strain, stress and density at
+/// the level of the state.
 template <int Dim>
 TraceTable StepTrace<Dim>::particle_table(const Particles<Dim>& particles) const {
   const bool accelerations = names_.accelerations;
@@ -179,6 +203,8 @@ TraceTable StepTrace<Dim>::particle_table(const Particles<Dim>& particles) const
   if (Dim == 2) table.header.push_back("y" + motion);
   add_names(table.header, "v" + motion, true);
   if (accelerations) add_names(table.header, "a" + motion, true);
+  const bool interpolated = !accelerations && !acceleration_.empty();
+  if (interpolated) add_names(table.header, "a_p_" + names_.force_level, true);
   const std::vector<std::string> tensor = Dim == 1 ? std::vector<std::string>{"_xx"}
                                                    : std::vector<std::string>{"_xx", "_yy", "_xy"};
   for (const auto& name : tensor) table.header.push_back("eps" + state + name);
@@ -192,6 +218,7 @@ TraceTable StepTrace<Dim>::particle_table(const Particles<Dim>& particles) const
     for (int axis = 0; axis < Dim; ++axis) add(particles.position[p][axis]);
     for (int axis = 0; axis < Dim; ++axis) add(particles.velocity[p][axis]);
     for (int axis = 0; accelerations && axis < Dim; ++axis) add(particles.acceleration[p][axis]);
+    for (int axis = 0; interpolated && axis < Dim; ++axis) add(acceleration_[p][axis]);
     for (const Matrix<Dim>* tensor_p : {&particles.strain[p], &particles.stress[p]}) {
       add((*tensor_p)(0, 0));
       if (Dim == 2) add((*tensor_p)(Dim - 1, Dim - 1)), add((*tensor_p)(0, Dim - 1));
@@ -213,6 +240,7 @@ inline TraceVariant trace_variant(const io::Scene& scene) {
     const int choice = static_cast<int>(scene.npc_position_velocity);
     variant.moving = moving[choice];
     variant.accelerations = true;
+    variant.phases.assign(NewmarkPredictorCorrector::phases.begin(), NewmarkPredictorCorrector::phases.end());
     text << "predictor-corrector (npc), gamma = " << scene.newmark_gamma << ", position update " << position[choice]
          << " (x_p moves with " << moving[choice] << "), particle velocity "
          << (scene.npc_velocity == NewmarkParticleVelocity::eq32 ? "eq32" : "average");
@@ -222,6 +250,10 @@ inline TraceVariant trace_variant(const io::Scene& scene) {
                            "modified update stress last (musl)"};
     variant.moving = start ? "v_I_k" : "v_I_k1";
     if (scene.stress_update == io::StressUpdate::musl) variant.stress_last = "v_I_k1_musl";
+    if (scene.stress_update != io::StressUpdate::usf) {
+      variant.force_level = "k";  // USL, MUSL: the forces of the stress at t_k
+      variant.phases.assign(UpdateStressLast::phases.begin(), UpdateStressLast::phases.end());
+    }
     text << "forward Euler (fe), " << order[static_cast<int>(scene.stress_update)] << ", position update "
          << (start ? "start" : "updated") << " (x_p moves with " << variant.moving << "), flip_fraction "
          << scene.flip_fraction;
@@ -266,6 +298,12 @@ inline std::string equations_text(const std::string& equation) {
   return (equation.size() > 4 ? ", Eqs. " : ", Eq. ") + equation;
 }
 
+/// The number the integrator gives `phase` (its place in the integrator's `phases` list; MUSL's phase 7 is skipped
+/// by USL, whose phases 8 and 9 keep their numbers).
+inline size_t phase_number(const TraceVariant& variant, Phase phase) {
+  return std::find(variant.phases.begin(), variant.phases.end(), phase) - variant.phases.begin();
+}
+
 /// The whole trace: a title, then per phase a line naming it and its equations, its nodes and its particles.
 template <int Dim>
 void print_trace(const StepTrace<Dim>& trace, const TraceRequest& request, const TraceVariant& variant,
@@ -275,15 +313,15 @@ void print_trace(const StepTrace<Dim>& trace, const TraceRequest& request, const
   out << comment << "mpm trace " << request.scene_path << ": step " << request.step
       << " from t_k = " << trace_number(trace.time(), true) << " s to t_k + dt, dt = " << trace_number(trace.dt(), true)
       << " s; " << Dim << "D; " << variant.description << "\n";
-  out << comment << "k: the value at t_k; k1: at t_k + dt; nodes without mass left out; a nodal value stays in the"
-      << " rows of the phases after the one that computed it\n";
-  const auto& blocks = trace.blocks();
-  for (size_t n = 0; n < blocks.size(); ++n) {
-    const PhaseInfo& info = phase_info(blocks[n].phase);
-    out << (csv ? "# " : "\n") << "phase " << n << " of " << blocks.size() - 1 << ": " << info.name
+  out << comment << "k: the value at t_k; k1: at t_k + dt (f_I, a_I: the level of the stress that makes them);"
+      << " nodes without mass left out; a nodal value stays in the rows of the phases after the one that computed it\n";
+  for (const TraceBlock& block : trace.blocks()) {
+    const PhaseInfo& info = phase_info(block.phase);
+    out << (csv ? "# " : "\n") << "phase " << phase_number(variant, block.phase) << " of "
+        << variant.phases.size() - 1 << ": " << info.name
         << equations_text(info.equation) << ": " << info.what
         << "\n";
-    for (const TraceTable* table : {&blocks[n].nodes, &blocks[n].particles})
+    for (const TraceTable* table : {&block.nodes, &block.particles})
       csv ? print_csv_table(*table, info, out) : print_aligned_table(*table, out);
   }
 }
@@ -310,23 +348,30 @@ int trace_run(const io::Scene& scene, const TraceRequest& request, std::ostream&
   return 0;
 }
 
+/// The observer a step() run outside the loop shows a StepTrace (the doctests): the stencils passed along.
+template <int Dim>
+struct TraceObserver {
+  StepTrace<Dim>& trace;
+  const Stencils<Dim>& stencils;
+  void after(Phase phase, const Particles<Dim>& particles, const GridFields<Dim>& grid) {
+    trace.after(phase, particles, grid, stencils);
+  }
+};
+
 /// `mpm trace`'s parser, its options bound to `request`.
 inline std::unique_ptr<CommandParser> trace_parser(TraceRequest& request) {
-  auto app = std::make_unique<CommandParser>(
+  auto app = scene_command_parser(
       "trace",
       "Runs a scene to step N and prints, after each phase of that step of its integrator, the phase's equations,\n"
       "every nodal quantity of the nodes that hold mass (m_I, p_I, v_I, f_I, a_I, the fixed components,\n"
       "reactions r_I) and every particle quantity (x, v, a, strain, stress, density), as CSV or an aligned table;\n"
       "writes no file. "
-      "Column names say the time level: _k at t_k, _k1 at t_k + dt, _pred the predictor.");
-  app->add_option("SCENE.toml", request.scene_path, "the scene file (TOML; README.md, \"Scene files\")")->required();
+      "Column names say the time level: _k at t_k, _k1 at t_k + dt, _pred the predictor; f_I and a_I that of the\n"
+      "stress that makes them. The phases are numbered as the integrator numbers them (the book's tables too).",
+      request.scene_path, request.overrides);
   app->add_option("--step", request.step, "the step to trace, numbered from 1 (the first step goes from t = 0)")
       ->required()
       ->check(whole_in(1, 10000000));
-  app->add_option("--set", request.overrides,
-                  "overrides a scene key with a TOML value, as for mpm run; repeat for more")
-      ->allow_extra_args(false)
-      ->type_name("KEY=VALUE");
   app->add_option("--format", request.format, "csv: one row per node or particle and phase; table: aligned columns")
       ->check(one_of({"csv", "table"}));
   return app;
@@ -344,6 +389,35 @@ inline int trace_command(const std::vector<std::string>& arguments, std::ostream
     scene.control.last_step = request.step;
     return scene.dimension == 1 ? trace_run<1>(scene, request, out, err) : trace_run<2>(scene, request, out, err);
   });
+}
+
+TEST_CASE("Integrators: step() runs its phases in the order of its numbered list, which the trace prints") {
+  auto run = [](const auto& integrator) {
+    testing::WorkedExample example;
+    Model<1> model;
+    model.grid = example.grid;
+    model.materials = {LinearElastic{example.young_modulus, 0.0, example.density}};
+    PhaseRecorder recorder;
+    integrator.step(model, example.stencils, testing::WorkedExample::body_force(), example.dt, example.particles,
+                    example.fields, recorder);
+    return recorder.seen;
+  };
+  auto list = [](const auto& phases) { return std::vector<Phase>(phases.begin(), phases.end()); };
+  CHECK(run(ForwardEuler()) == list(ForwardEuler::phases));
+  CHECK(run(NewmarkPredictorCorrector()) == list(NewmarkPredictorCorrector::phases));
+  UpdateStressLast usl, musl;
+  musl.stress_velocity = StressLastVelocity::reprojected_particles;
+  CHECK(run(musl) == list(UpdateStressLast::phases));
+  std::vector<Phase> usl_phases = list(UpdateStressLast::phases);
+  usl_phases.erase(usl_phases.begin() + 7);  // USL skips MUSL's reprojection
+  CHECK(usl_phases[7] == Phase::velocity_k1);
+  CHECK(run(usl) == usl_phases);
+  TraceVariant variant;  // forward Euler's, unless the scene says otherwise
+  CHECK(phase_number(variant, Phase::forces) == 5);
+  variant.phases = list(NewmarkPredictorCorrector::phases);
+  CHECK(phase_number(variant, Phase::corrector) == 5);
+  variant.phases = list(UpdateStressLast::phases);
+  CHECK(phase_number(variant, Phase::stress) == 9);
 }
 
 TEST_CASE("mpm trace: the phases of one forward-Euler step on two particles by hand, each value under its name") {
@@ -365,7 +439,8 @@ TEST_CASE("mpm trace: the phases of one forward-Euler step on two particles by h
   body_force.per_unit_mass.assign(2, Vector<1>::Zero());
   StepTrace<1> trace(model, 1, TraceVariant{}, true);
   REQUIRE(trace.watches(1, 0.0, 0.1));
-  ForwardEuler().step(model, stencils, body_force, 0.1, particles, grid, trace);
+  TraceObserver<1> observer{trace, stencils};
+  ForwardEuler().step(model, stencils, body_force, 0.1, particles, grid, observer);
   const auto& blocks = trace.blocks();
   REQUIRE(blocks.size() == 8);
   CHECK(blocks[0].phase == Phase::reset);
@@ -380,13 +455,21 @@ TEST_CASE("mpm trace: the phases of one forward-Euler step on two particles by h
   CHECK(blocks[4].particles.header[4] == "eps_p_k1_xx");  // after the stress update
   const TraceTable& balance = blocks[6].nodes;  // Eq. (12): p_I^{k+1} = p_I^k + dt f_I, each under its name
   CHECK(balance.header ==
-        std::vector<std::string>{"node", "x_I", "fixed", "m_I", "p_I_k_x", "v_I_k_x", "f_I_x", "r_I_x", "p_I_k1_x"});
+        std::vector<std::string>{"node", "x_I", "fixed", "m_I", "p_I_k_x", "v_I_k_x", "f_I_k1_x", "r_I_x", "p_I_k1_x"});
   for (const auto& row : balance.rows)
     CHECK(std::stod(row[8]) == doctest::Approx(std::stod(row[4]) + 0.1 * std::stod(row[6])));
   CHECK(std::stod(balance.rows[1][6]) != 0.0);
   const TraceTable& last = blocks[7].nodes;
   CHECK(last.header.back() == "v_I_k1_x");
   CHECK(blocks[7].particles.header[2] == "x_p_k1");
+  // Forward Euler's a_p^{k+1}, which its update does not store: v_p^{k+1} = v_p^k + dt a_p^{k+1} (FLIP).
+  REQUIRE(blocks[7].particles.header[4] == "a_p_k1_x");
+  CHECK(blocks[6].particles.header[4] != "a_p_k1_x");  // none before the update
+  for (int p = 0; p < 2; ++p) {
+    const double v_k = std::stod(blocks[0].particles.rows[p][3]), v_k1 = std::stod(blocks[7].particles.rows[p][3]);
+    CHECK(std::stod(blocks[7].particles.rows[p][4]) == doctest::Approx((v_k1 - v_k) / 0.1));
+  }
+  CHECK(std::stod(blocks[7].particles.rows[1][4]) != 0.0);
   CHECK(!StepTrace<1>(model, 2, TraceVariant{}, true).watches(1, 0.0, 0.1));
   CHECK(equations_text("(30)") == ", Eq. (30)");
   CHECK(equations_text("(16) (17) (3)") == ", Eqs. (16) (17) (3)");
@@ -421,6 +504,18 @@ TEST_CASE("mpm trace: a scene run to step 2 and no further, its t_k the first dt
   }
   CHECK(refusal.rfind("--step: the run ends after step 4 (t = 1 s", 0) == 0);
   CHECK(out.str().empty());
+  // USL: the forces of the stress at t_k, f_I^k, and forward Euler's a_p^k after the update, its phase 8 v_I^{k+1}.
+  scene.stress_update = io::StressUpdate::usl;
+  scene.control.last_step = 1;
+  const TraceVariant usl = trace_variant(scene);
+  StepTrace<1> usl_trace(setup.model, 1, usl, true);
+  run_setup<1>(scene, setup, usl_trace);
+  const auto& blocks = usl_trace.blocks();
+  REQUIRE(blocks.size() == 9);
+  CHECK(blocks[4].nodes.header.back() == "r_I_x");
+  CHECK(blocks[4].nodes.header[blocks[4].nodes.header.size() - 2] == "f_I_k_x");
+  CHECK(blocks[6].particles.header[4] == "a_p_k_x");
+  CHECK(phase_number(usl, blocks[7].phase) == 8);
 }
 
 }  // namespace mpm::cli

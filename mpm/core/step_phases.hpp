@@ -1,12 +1,14 @@
 /// \file
 /// The named phases of a time step, each with the paper's equation it computes. An integrator's step() calls
-/// `observer.after(phase, particles, grid)` after each of its phases, and knows nothing more about who watches:
+/// `observer.after(phase, particles, grid)` after each of its phases, which it numbers in its `phases` list (phase
+/// 0: the reset; the book's tables and `mpm trace` use the same numbers), and knows nothing more about who watches:
 /// the loop's stopwatch (PhaseTimers, mpm/core/phase_timers.hpp) and `mpm trace` (mpm/cli/trace_command.hpp) are
 /// two such observers.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <cstring>
+#include <vector>
 
 namespace mpm {
 
@@ -90,6 +92,15 @@ inline const char* timed_part_name(int part) {
 struct NoPhaseObserver {
   template <class Particles, class Fields>
   void after(Phase /*phase*/, const Particles& /*particles*/, const Fields& /*grid*/) {}
+};
+
+/// An observer that records the phases in the order step() runs them (the tests of the integrators' numbering).
+struct PhaseRecorder {
+  std::vector<Phase> seen;
+  template <class Particles, class Fields>
+  void after(Phase phase, const Particles& /*particles*/, const Fields& /*grid*/) {
+    seen.push_back(phase);
+  }
 };
 
 TEST_CASE("Phases: each named once, with its equation, charged to the part of the step it belongs to") {

@@ -2,6 +2,8 @@
 /// Standard explicit MPM, "forward Euler" (FE), as the authors run it (paper/02_mpm_forward_euler.md): update stress
 /// first (USF), FLIP velocity increment, positions moved with the updated nodal momentum.
 #pragma once
+#include <array>
+
 #include "mpm/core/step_phases.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
@@ -21,7 +23,8 @@ struct ForwardEuler {
   double flip_fraction = 1.0;  ///< 1: FLIP, the paper's scheme; below 1 the PIC/FLIP blend (a damping)
 
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
-  /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle. The steps, as in the code:
+  /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle.
+  /// Its numbered phases, as `mpm trace` numbers them; phase 0 resets the nodal fields (GridFields::reset):
   /// 1. P2G: the lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and the nodal momentum
   ///    \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p \f$, in one pass over the particles (\ref nodal_mass_and_momentum).
   /// 2. Essential boundary conditions: the fixed components of \f$ \mathbf p_I \f$ are set to zero
@@ -29,19 +32,19 @@ struct ForwardEuler {
   /// 3. Nodal velocity \f$ \mathbf v_I^k = \mathbf p_I / m_I \f$ (\ref nodal_velocity_from_momentum).
   /// 4. Update stress first (USF): strain rate, Eq. (16); density, Eq. (17); stress, Eq. (3)
   ///    (\ref update_strain_density_stress).
-  /// 5. Nodal forces \f$ \mathbf f_I = \mathbf f_I^{int} + \mathbf f_I^{ext} \f$, Eqs. (14)-(15)
-  ///    (\ref add_nodal_forces); the fixed components become reactions (\ref store_reactions).
+  /// 5. Nodal forces \f$ \mathbf f_I^{k+1} = \mathbf f_I^{int} + \mathbf f_I^{ext} \f$, Eqs. (14)-(15), from the
+  ///    stress just updated (\ref add_nodal_forces); the fixed components become reactions (\ref store_reactions).
   /// 6. Momentum balance, Eq. (12): \f$ \mathbf p_I \mathrel{+}= \Delta t\, \mathbf f_I \f$ (\ref update_nodal_momentum).
   /// 7. G2P, Eqs. (19)-(22): \f$ \mathbf v_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf f_I / m_I \f$,
   ///    \f$ \mathbf x_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf p_I / m_I \f$ with the updated momentum
   ///    (\ref forward_euler_particle_update).
   ///
-  /// `observer.after(phase, particles, grid)` is called after each of them (Phase: reset, mass_momentum,
-  /// fixed_momentum, velocity_k, stress, forces, momentum_balance, euler_update): the loop times them, `mpm trace`
-  /// prints them; NoPhaseObserver watches nothing.
+  /// `observer.after(phase, particles, grid)` is called after each phase, in the order of `phases`: the loop times
+  /// them, `mpm trace` prints them; NoPhaseObserver watches nothing.
   template <int Dim, class Observer>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
             Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
+    // 0. The nodal fields set to zero.
     grid.reset();
     observer.after(Phase::reset, particles, grid);
     // 1. P2G: lumped mass, Eq. (13), and momentum p_I^k = sum_p N_Ip m_p v_p^k.
@@ -67,6 +70,11 @@ struct ForwardEuler {
     forward_euler_particle_update(stencils, grid, dt, position_velocity, particles, flip_fraction);
     observer.after(Phase::euler_update, particles, grid);
   }
+
+  /// The numbered phases of step(), in the order it runs them: phase n is phases[n].
+  static constexpr std::array<Phase, 8> phases = {Phase::reset,  Phase::mass_momentum, Phase::fixed_momentum,
+                                                  Phase::velocity_k, Phase::stress, Phase::forces,
+                                                  Phase::momentum_balance, Phase::euler_update};
 };
 
 }  // namespace mpm

@@ -1,8 +1,9 @@
 /// \file
-/// The explicit Newmark predictor-corrector (NPC) of the paper, its Algorithm steps 1-9
-/// (paper/03_predictor_corrector.md). Newmark gamma = 1/2 by default; beta is never used. By default the particles
-/// move by Eq. (33) as printed, with v_I^k = p_I^k / m_I (`solver.npc_position_velocity = "projected"`), where the
-/// authors' code moves them with the corrected v_I^{k+1} (`"corrected"`).
+/// The explicit Newmark predictor-corrector (NPC) of the paper, its algorithm's steps 1-9 run as the six numbered
+/// phases of step() (paper/03_predictor_corrector.md). Newmark gamma = 1/2 by default; beta is never used. By
+/// default the particles move by Eq. (33) as printed, with v_I^k = p_I^k / m_I
+/// (`solver.npc_position_velocity = "projected"`), where the authors' code moves them with the corrected v_I^{k+1}
+/// (`"corrected"`).
 ///
 /// The corrector, Eq. (30), matters only when the position update reads the corrected velocity: under the default
 /// nothing reads its output (Eqs. (31)-(32) read f_I / m_I, Eq. (33) reads p_I^k / m_I, the next step rebuilds the
@@ -14,6 +15,8 @@
 /// Eq. (24) for x_p with its beta, Eq. (25) for a_p, and then builds the explicit predictor and
 /// corrector on the grid instead: Eqs. (26)-(30), with the particle update of Eqs. (31)-(33).
 #pragma once
+#include <array>
+
 #include "mpm/core/step_phases.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
@@ -34,56 +37,65 @@ struct NewmarkPredictorCorrector {
   NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32;
 
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
-  /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle. The steps of the
-  /// algorithm, as in the code:
-  /// 1. Lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and
-  /// 2. the velocity predictor by projection, Eqs. (26)-(29),
-  ///    \f$ \mathbf v_I^{pred} = \sum_p N_{Ip} m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) / m_I \f$,
-  ///    in one pass over the particles (\ref nodal_mass_and_velocity_predictor).
-  /// 3. Essential boundary conditions overwrite the predictor (\ref impose_fixed_velocity).
-  /// 4. Strain rate with the predicted velocity, Eq. (16), and strain increment
-  ///    \f$ \Delta t\, \dot{\boldsymbol\varepsilon}_p \f$ (\ref update_strain_density_stress).
-  /// 5. Density, Eq. (17), and stress, Eq. (3), in the same call.
-  /// 6. New nodal forces \f$ \mathbf f_I^{k+1} \f$, Eqs. (14)-(15) (\ref add_nodal_forces);
-  ///    the fixed components become reactions (\ref store_reactions).
-  /// 7. Corrector, Eq. (30): \f$ \mathbf v_I^{k+1} = \mathbf v_I^{pred} + \gamma\,\Delta t\, \mathbf f_I^{k+1} / m_I \f$
-  ///    (\ref newmark_corrector).
-  /// 8. Particle update, Eqs. (31)-(33): \f$ \mathbf a_p^{k+1} = \sum_I N_{Ip} \mathbf f_I / m_I \f$,
+  /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle.
+  /// Its numbered phases, as `mpm trace` numbers them (the paper's algorithm steps they run in brackets); phase 0
+  /// resets the nodal fields (GridFields::reset; the paper's step 9, "reset nodal values", ends the step before):
+  /// 1. Lumped nodal mass \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and the velocity predictor by projection,
+  ///    Eqs. (26)-(29),
+  ///    \f$ \mathbf v_I^{pred} = \sum_p N_{Ip} m_p
+  ///    \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) / m_I \f$,
+  ///    in one pass over the particles (\ref nodal_mass_and_velocity_predictor) [steps 1-2].
+  /// 2. Essential boundary conditions overwrite the predictor (\ref impose_fixed_velocity) [step 3].
+  /// 3. Strain rate with the predicted velocity, Eq. (16), strain increment
+  ///    \f$ \Delta t\, \dot{\boldsymbol\varepsilon}_p \f$, density, Eq. (17), and stress, Eq. (3), in one call
+  ///    (\ref update_strain_density_stress) [steps 4-5].
+  /// 4. New nodal forces \f$ \mathbf f_I^{k+1} \f$, Eqs. (14)-(15) (\ref add_nodal_forces);
+  ///    the fixed components become reactions (\ref store_reactions) [step 6].
+  /// 5. Corrector, Eq. (30):
+  ///    \f$ \mathbf v_I^{k+1} = \mathbf v_I^{pred} + \gamma\,\Delta t\, \mathbf f_I^{k+1} / m_I \f$
+  ///    (\ref newmark_corrector) [step 7].
+  /// 6. Particle update, Eqs. (31)-(33): \f$ \mathbf a_p^{k+1} = \sum_I N_{Ip} \mathbf f_I^{k+1} / m_I \f$,
   ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t\, \mathbf a_p^{k+1} \f$,
-  ///    \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I^k + \tfrac12 \Delta t^2 \mathbf a_p^{k+1} \f$
+  ///    \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I^k
+  ///    + \tfrac12 \Delta t^2 \mathbf a_p^{k+1} \f$
   ///    (\ref newmark_particle_update); with particle_velocity = average, Eq. (23)'s
-  ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t ((1-\gamma) \mathbf a_p^k + \gamma \mathbf a_p^{k+1}) \f$ instead of Eq. (32).
-  /// 9. The nodal fields are reset at the start of the next step (GridFields::reset).
+  ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t ((1-\gamma) \mathbf a_p^k + \gamma \mathbf a_p^{k+1}) \f$
+  ///    instead of Eq. (32) [step 8].
   ///
-  /// `observer.after(phase, particles, grid)` is called after each phase (Phase: reset, mass_predictor,
-  /// fixed_predictor, stress, forces, corrector, newmark_update): the loop times them, `mpm trace` prints them.
+  /// `observer.after(phase, particles, grid)` is called after each phase, in the order of `phases`: the loop times
+  /// them, `mpm trace` prints them.
   template <int Dim, class Observer>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
             Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
+    // 0. The nodal fields set to zero (the paper's step 9 of the step before).
     grid.reset();
     observer.after(Phase::reset, particles, grid);
-    // Steps 1-2. Lumped nodal mass, Eq. (13), and velocity predictor by projection, Eqs. (26)-(29).
+    // 1. Lumped nodal mass, Eq. (13), and velocity predictor by projection, Eqs. (26)-(29).
     nodal_mass_and_velocity_predictor(particles, stencils, newmark_gamma, dt, grid);
     observer.after(Phase::mass_predictor, particles, grid);
-    // Step 3. Essential boundary conditions overwrite the predictor.
+    // 2. Essential boundary conditions overwrite the predictor.
     impose_fixed_velocity(model.fixed, grid.nodal_velocity);
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
     observer.after(Phase::fixed_predictor, particles, grid);
-    // Steps 4-5. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
+    // 3. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
     update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
     observer.after(Phase::stress, particles, grid);
-    // Step 6. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
+    // 4. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
     observer.after(Phase::forces, particles, grid);
-    // Step 7. Corrector, Eq. (30): v_I^{k+1} = v_I^pred + gamma dt f_I / m_I.
+    // 5. Corrector, Eq. (30): v_I^{k+1} = v_I^pred + gamma dt f_I / m_I.
     newmark_corrector(newmark_gamma, dt, grid);
     observer.after(Phase::corrector, particles, grid);
-    // Step 8. Particle update, Eqs. (31)-(33) (or Eq. (23) for the velocity).
+    // 6. Particle update, Eqs. (31)-(33) (or Eq. (23) for the velocity).
     newmark_particle_update(stencils, grid, newmark_gamma, dt, position_velocity, particles, particle_velocity);
     observer.after(Phase::newmark_update, particles, grid);
-    // Step 9. The nodal fields are reset at the start of the next step.
   }
+
+  /// The numbered phases of step(), in the order it runs them: phase n is phases[n].
+  static constexpr std::array<Phase, 7> phases = {Phase::reset,  Phase::mass_predictor, Phase::fixed_predictor,
+                                                  Phase::stress, Phase::forces,         Phase::corrector,
+                                                  Phase::newmark_update};
 };
 
 }  // namespace mpm

@@ -13,6 +13,8 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <array>
+
 #include "mpm/core/step_phases.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
@@ -41,54 +43,68 @@ struct UpdateStressLast {
   EulerPositionVelocity position_velocity = EulerPositionVelocity::updated;
   double flip_fraction = 1.0;
 
-  /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$, the stencils at \f$ \mathbf x_p^k \f$:
-  /// 1. P2G: \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p \f$ (\ref nodal_mass_and_momentum).
-  /// 2. Essential boundary conditions on \f$ \mathbf p_I \f$ (\ref impose_fixed_velocity); \f$ \mathbf v_I^k = \mathbf p_I / m_I \f$.
-  /// 3. Nodal forces from the stress of the step before, Eqs. (14)-(15); reactions (\ref add_nodal_forces, \ref store_reactions).
-  /// 4. Momentum balance, Eq. (12): \f$ \mathbf p_I \mathrel{+}= \Delta t\, \mathbf f_I \f$ (\ref update_nodal_momentum).
-  /// 5. G2P, Eqs. (19)-(22), as forward Euler's (\ref forward_euler_particle_update).
-  /// 6. MUSL only: \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p^{k+1} \f$ (\ref nodal_momentum_from_particles), and the
-  ///    boundary conditions again.
-  /// 7. \f$ \mathbf v_I^{k+1} = \mathbf p_I / m_I \f$; update stress last: strain rate, Eq. (16); density, Eq. (17);
-  ///    stress, Eq. (3) (\ref update_strain_density_stress).
+  /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$, the stencils at \f$ \mathbf x_p^k \f$. Its numbered
+  /// phases, as `mpm trace` numbers them; phase 0 resets the nodal fields (GridFields::reset):
+  /// 1. P2G: \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p \f$
+  ///    (\ref nodal_mass_and_momentum).
+  /// 2. Essential boundary conditions on \f$ \mathbf p_I \f$ (\ref impose_fixed_velocity).
+  /// 3. \f$ \mathbf v_I^k = \mathbf p_I / m_I \f$ (\ref nodal_velocity_from_momentum).
+  /// 4. Nodal forces \f$ \mathbf f_I^k \f$ from the stress of the step before, Eqs. (14)-(15); reactions
+  ///    (\ref add_nodal_forces, \ref store_reactions).
+  /// 5. Momentum balance, Eq. (12): \f$ \mathbf p_I \mathrel{+}= \Delta t\, \mathbf f_I^k \f$
+  ///    (\ref update_nodal_momentum).
+  /// 6. G2P, Eqs. (19)-(22), as forward Euler's (\ref forward_euler_particle_update).
+  /// 7. MUSL only (USL skips it): \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p^{k+1} \f$
+  ///    (\ref nodal_momentum_from_particles), and the boundary conditions again.
+  /// 8. \f$ \mathbf v_I^{k+1} = \mathbf p_I / m_I \f$ (\ref nodal_velocity_from_momentum).
+  /// 9. Update stress last: strain rate, Eq. (16); density, Eq. (17); stress, Eq. (3)
+  ///    (\ref update_strain_density_stress).
   ///
-  /// `observer.after(phase, particles, grid)` is called after each phase (Phase: reset, mass_momentum,
-  /// fixed_momentum, velocity_k, forces, momentum_balance, euler_update, MUSL's reprojection, velocity_k1, stress).
+  /// `observer.after(phase, particles, grid)` is called after each phase, in the order of `phases` (USL without
+  /// phase 7).
   template <int Dim, class Observer>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
             Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
+    // 0. The nodal fields set to zero.
     grid.reset();
     observer.after(Phase::reset, particles, grid);
     // 1. P2G: lumped mass, Eq. (13), and momentum p_I^k = sum_p N_Ip m_p v_p^k.
     nodal_mass_and_momentum(particles, stencils, grid);
     observer.after(Phase::mass_momentum, particles, grid);
-    // 2. Essential boundary conditions on the momentum; v_I^k = p_I^k / m_I.
+    // 2. Essential boundary conditions on the momentum.
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
     observer.after(Phase::fixed_momentum, particles, grid);
+    // 3. v_I^k = p_I^k / m_I.
     nodal_velocity_from_momentum(grid);
     observer.after(Phase::velocity_k, particles, grid);
-    // 3. Nodal forces from the stress of the step before, Eqs. (14)-(15); the fixed components become reactions.
+    // 4. Nodal forces from the stress of the step before, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
     observer.after(Phase::forces, particles, grid);
-    // 4. Momentum balance, Eq. (12): p_I^{k+1} = p_I^k + dt f_I.
+    // 5. Momentum balance, Eq. (12): p_I^{k+1} = p_I^k + dt f_I.
     update_nodal_momentum(dt, grid);
     observer.after(Phase::momentum_balance, particles, grid);
-    // 5. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
+    // 6. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
     forward_euler_particle_update(stencils, grid, dt, position_velocity, particles, flip_fraction);
     observer.after(Phase::euler_update, particles, grid);
-    // 6. MUSL: the new particle velocities projected to the nodes again, and held at the walls.
+    // 7. MUSL: the new particle velocities projected to the nodes again, and held at the walls.
     if (stress_velocity == StressLastVelocity::reprojected_particles) {
       nodal_momentum_from_particles(particles, stencils, grid);
       impose_fixed_velocity(model.fixed, grid.nodal_momentum);
       observer.after(Phase::reprojection, particles, grid);
     }
-    // 7. v_I^{k+1} = p_I^{k+1} / m_I; update stress last: Eq. (16), Eq. (17), Eq. (3).
+    // 8. v_I^{k+1} = p_I^{k+1} / m_I.
     nodal_velocity_from_momentum(grid);
     observer.after(Phase::velocity_k1, particles, grid);
+    // 9. Update stress last: Eq. (16), Eq. (17), Eq. (3).
     update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
     observer.after(Phase::stress, particles, grid);
   }
+
+  /// The numbered phases of step(), in the order it runs them: phase n is phases[n] (USL skips phase 7).
+  static constexpr std::array<Phase, 10> phases = {
+      Phase::reset,  Phase::mass_momentum, Phase::fixed_momentum, Phase::velocity_k,  Phase::forces,
+      Phase::momentum_balance, Phase::euler_update, Phase::reprojection, Phase::velocity_k1, Phase::stress};
 };
 
 TEST_CASE("USL, MUSL: one step of the worked example by hand, node 2 fixed: each stress from its own nodal velocity") {

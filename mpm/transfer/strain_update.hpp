@@ -1,6 +1,6 @@
 /// \file
-/// Particle state from the nodal velocities: strain rate, strain, density, stress (forward Euler's step 4, the
-/// predictor-corrector's steps 4-5: the "update stress first" order of both integrators).
+/// Particle state from the nodal velocities: strain rate, strain, density, stress (forward Euler's phase 4, the
+/// predictor-corrector's phase 3: the "update stress first" order of both integrators).
 ///
 /// The small-strain kinematics of Eq. (1), \f$ \boldsymbol\varepsilon = \nabla^s \mathbf u \f$, are
 /// integrated in time from the velocity gradient (Eq. 16) rather than from displacements, and mass
@@ -56,7 +56,7 @@ inline double updated_density(double density, double dt, double volumetric_strai
   return density / (1.0 + dt * volumetric_strain_rate);
 }
 
-/// Forward Euler's step 4, the predictor-corrector's steps 4-5:
+/// Forward Euler's phase 4, the predictor-corrector's phase 3:
 /// \f$ \boldsymbol\varepsilon_p \mathrel{+}= \Delta t\,\dot{\boldsymbol\varepsilon}_p \f$ (Eq. 16),
 /// the density by Eq. (17), and the stress by Hooke's law, Eq. (3), of the particle's own material.
 template <int Dim>
