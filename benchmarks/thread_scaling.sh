@@ -27,11 +27,14 @@ cores=$(nproc)
 thread_counts=(1 2 4 8 12 16)
 repeats=3
 steps=${THREAD_SCALING_STEPS:-200}  # fewer only to try the script out
-[[ $steps =~ ^[1-9][0-9]*$ ]] || { echo "thread_scaling.sh: THREAD_SCALING_STEPS=$steps: not a positive whole number" >&2; exit 2; }
+if [[ ! $steps =~ ^[1-9][0-9]*$ ]]; then
+  echo "thread_scaling.sh: THREAD_SCALING_STEPS=$steps: not a positive whole number" >&2; exit 2
+fi
 [[ $cores -ge 16 ]] || echo "thread_scaling.sh: warning: $cores cores, fewer than the 16 threads measured" >&2
 # dt = 0.1 h / c = 0.034641 / cells s on this scene (c = 28.87 m/s): `steps` steps at 160 cells
 end_time=$(awk -v s="$steps" 'BEGIN{printf "%.6e", s * 0.034641 / 160}')
-echo "thread_scaling.sh: $("$mpm" --version 2>&1 | head -1) on $cores cores ($(uname -n)), $steps steps of 102400 particles"
+version=$("$mpm" --version 2>&1 | head -1)
+echo "thread_scaling.sh: $version on $cores cores ($(uname -n)), $steps steps of 102400 particles"
 
 # speed RUN_JSON: particles x steps / the sum of the step's phases but output
 speed() {
@@ -40,7 +43,9 @@ speed() {
   steps=$(grep -o '"steps": [0-9]*' "$json" | head -1 | awk '{print $2}')
   busy=$(grep -o '"phase_seconds": {[^}]*}' "$json" | head -1 | tr -d '{}"' | tr ',' '\n' |
     awk -F': ' '$1 !~ /output/ && NF == 2 {sum += $2} END {printf "%.9g", sum}')
-  [[ -n $particles && -n $steps && -n $busy ]] || { echo "thread_scaling.sh: $json: no particles, steps or phase_seconds" >&2; exit 1; }
+  if [[ -z $particles || -z $steps || -z $busy ]]; then
+    echo "thread_scaling.sh: $json: no particles, steps or phase_seconds" >&2; exit 1
+  fi
   awk -v p="$particles" -v s="$steps" -v b="$busy" 'BEGIN{if (b <= 0) exit 1; printf "%.4e", p * s / b}'
 }
 
@@ -68,7 +73,8 @@ echo "threads,median_particle_steps_per_s,spread,speed_up,speed_up_per_thread" >
 one=""
 for threads in "${thread_counts[@]}"; do
   rates=$(awk -F, -v t="$threads" 'NR > 1 && $1 == t {print $3}' "$csv" | sort -g)
-  median=$(echo "$rates" | awk '{v[NR] = $1} END {printf "%.4e", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}')
+  median=$(echo "$rates" |
+    awk '{v[NR] = $1} END {printf "%.4e", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}')
   [[ -n $one ]] || one=$median
   echo "$rates" | awk -v t="$threads" -v m="$median" -v one="$one" 'NR == 1 {lo = $1} {hi = $1}
     END {printf "%d,%s,%.3f,%.2f,%.3f\n", t, m, (hi - lo) / m, m / one, m / one / t}' >>"$summary"

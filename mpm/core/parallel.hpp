@@ -373,7 +373,7 @@ TEST_CASE("Parallel loops: the chunks cover every item once, in order, and depen
   for (int count = 1; count < 1 << 17; count += 97) REQUIRE(chunks_of(count) <= chunks_of(count + 97));  // grows
 }
 
-TEST_CASE("Parallel loops: the model's speed-up of 10^5 items is at least 0.7 x threads up to 8 threads and rises to 16") {
+TEST_CASE("Parallel loops: the model's speed-up of 10^5 items, at least 0.7 x threads up to 8, rises to 16") {
   CHECK(balanced_speedup(8, 8) == 8.0);
   CHECK(balanced_speedup(8, 16) == 8.0);  // the cap of max_chunks chunks
   CHECK(balanced_speedup(100, 8) == doctest::Approx(100.0 / 13));

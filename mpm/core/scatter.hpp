@@ -49,7 +49,9 @@ struct ScatterPlan {
 
 /// The values of each field's buffer of copies for scatters over `count` particles into `nodes` nodes:
 /// max_chunks - 1 grids at most, one per chunk beyond the first.
-inline long copy_room(int count, int nodes) { return static_cast<long>(std::min(chunks_of(count), max_chunks) - 1) * nodes; }
+inline long copy_room(int count, int nodes) {
+  return static_cast<long>(std::min(chunks_of(count), max_chunks) - 1) * nodes;
+}
 
 /// Lays the parts' windows out in the buffer, in part order: part g's copy at offset[g] = the larger of
 /// where part g - 1's ends and window[g].begin, so that the copy indexed by node (from its start less
@@ -131,7 +133,8 @@ inline constexpr int most_node_blocks = 256;
 /// then added to the fields node by node in part order (on the team too, by blocks of nodes) and zeroed
 /// again. `work_per_item`: the stencil entries per particle; `reached`: the nodes each chunk's stencils reach.
 template <class Body, class... T>
-void scatter_to_nodes(int count, long work_per_item, const ChunkNodes& reached, Body body, ScatterTarget<T>... targets) {
+void scatter_to_nodes(int count, long work_per_item, const ChunkNodes& reached, Body body,
+                      ScatterTarget<T>... targets) {
   // The nodes of the first target: every target is a nodal field of the same grid.
   const int nodes = static_cast<int>(std::get<0>(std::forward_as_tuple(targets...)).field.size());
   static thread_local ScatterPlan calling_threads_plan;
@@ -169,7 +172,8 @@ struct RandomScatter {
   std::vector<std::array<double, 4>> share;
   ChunkNodes reached;
 
-  RandomScatter(int count, int columns_, int rows_, bool in_order) : columns(columns_), rows(rows_), nodes((columns_ + 1) * (rows_ + 1)) {
+  RandomScatter(int count, int columns_, int rows_, bool in_order)
+      : columns(columns_), rows(rows_), nodes((columns_ + 1) * (rows_ + 1)) {
     std::mt19937 generator(7);
     std::uniform_real_distribution<double> x(0.0, columns), y(0.0, rows), exponent(-7.0, 7.0);
     std::vector<std::pair<double, double>> at(count);
@@ -206,7 +210,7 @@ struct RandomScatter {
 
 }  // namespace testing
 
-TEST_CASE("Scatter: 10^5 particles in spatial order give the same bits on 1, 2, 3 and 7 threads, the chunks' sums in order") {
+TEST_CASE("Scatter: 10^5 particles in spatial order, the same bits on 1, 2, 3 and 7 threads, chunk by chunk") {
   const testing::RandomScatter scatter(100000, 160, 160, true);
   ScatterPlan plan;
   plan_scatter(scatter.count(), scatter.nodes, scatter.reached, plan);
@@ -221,17 +225,20 @@ TEST_CASE("Scatter: 10^5 particles in spatial order give the same bits on 1, 2, 
   std::vector<double> by_chunks(scatter.nodes, 0.0), serial(scatter.nodes, 0.0), magnitude(scatter.nodes, 0.0);
   for (int chunk = 0; chunk < plan.chunks; ++chunk) {
     std::vector<double> part(scatter.nodes, 0.0);
-    for (int p = chunk_of(scatter.count(), chunk).begin; p < chunk_of(scatter.count(), chunk).end; ++p) scatter.add(p, part.data());
-    for (int node = 0; node < scatter.nodes; ++node) by_chunks[node] = chunk == 0 ? part[node] : by_chunks[node] + part[node];
+    const Range items = chunk_of(scatter.count(), chunk);
+    for (int p = items.begin; p < items.end; ++p) scatter.add(p, part.data());
+    for (int node = 0; node < scatter.nodes; ++node)
+      by_chunks[node] = chunk == 0 ? part[node] : by_chunks[node] + part[node];
   }
   for (int p = 0; p < scatter.count(); ++p) scatter.add(p, serial.data());
   for (int p = 0; p < scatter.count(); ++p) scatter.add(p, magnitude.data(), true);
   CHECK(one == by_chunks);
   CHECK(one != serial);  // the weights tell the order of the additions apart
-  for (int node = 0; node < scatter.nodes; ++node) REQUIRE(std::abs(one[node] - serial[node]) <= 1e-12 * magnitude[node]);
+  for (int node = 0; node < scatter.nodes; ++node)
+    REQUIRE(std::abs(one[node] - serial[node]) <= 1e-12 * magnitude[node]);
 }
 
-TEST_CASE("Scatter: particles in no order whose windows overflow the room add in max_chunks groups, the same bits on any threads") {
+TEST_CASE("Scatter: particles in no order overflow the room, add in max_chunks groups, the same bits on any threads") {
   const testing::RandomScatter scatter(30000, 40, 40, false);  // 29 chunks, each reaching nearly the whole grid
   ScatterPlan plan;
   plan_scatter(scatter.count(), scatter.nodes, scatter.reached, plan);
@@ -246,12 +253,13 @@ TEST_CASE("Scatter: particles in no order whose windows overflow the room add in
     const Range chunks = part_of(plan.chunks, max_chunks, group);
     for (int p = chunk_of(scatter.count(), chunks.begin).begin; p < chunk_of(scatter.count(), chunks.end - 1).end; ++p)
       scatter.add(p, part.data());
-    for (int node = 0; node < scatter.nodes; ++node) by_groups[node] = group == 0 ? part[node] : by_groups[node] + part[node];
+    for (int node = 0; node < scatter.nodes; ++node)
+      by_groups[node] = group == 0 ? part[node] : by_groups[node] + part[node];
   }
   CHECK(one == by_groups);
 }
 
-TEST_CASE("Scatter: the copies' layout never points before the buffer and stays in max_chunks - 1 grids, windows out of order") {
+TEST_CASE("Scatter: the copies' layout never points before the buffer and fits max_chunks - 1 grids, in any order") {
   ScatterPlan plan;
   const int count = 8 * items_per_chunk, nodes = 100;  // 8 chunks: each window may be the whole grid
   ChunkNodes reached{{0, 10}, {90, 100}, {0, 100}, {50, 60}, {5, 6}, {1 << 20, 0}, {-5, 1 << 30}, {99, 100}};

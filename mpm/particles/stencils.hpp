@@ -73,7 +73,8 @@ namespace mpm {
 template <int Dim, class Shape>
 void compute_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, Stencils<Dim>& stencils) {
   const int count = static_cast<int>(positions.size());
-  if (static_cast<int>(stencils.chunk_nodes.size()) != chunks_of(count)) stencils.chunk_nodes.assign(chunks_of(count), all_nodes);
+  if (static_cast<int>(stencils.chunk_nodes.size()) != chunks_of(count))
+    stencils.chunk_nodes.assign(chunks_of(count), all_nodes);
   std::mutex failing;  // guards the first failure: that of the failing chunk first in order
   int failed_chunk = chunks_of(count);
   std::optional<ShapeFailure> failure;
