@@ -2,12 +2,30 @@
 /// The particle-parallel loops of the time step, on the machine's cores, with results that do not
 /// depend on how many threads run them.
 ///
-/// **Chunks.** Every loop cuts [0, count) into chunks_of(count) contiguous chunks: at most max_chunks,
-/// of at least items_per_chunk items, a number set by `count` alone, never by the threads. A sum over
-/// the particles (parallel_sum, and the particle-to-grid scatter into the nodes) is formed chunk by
-/// chunk, each chunk's part from zero, and the parts are added in chunk order. One thread does
-/// exactly the same additions in the same order, so a run gives the same bits on 1, 2 or 64 threads,
-/// on any machine. (A loop of fewer than 2 items_per_chunk items is one chunk: the plain serial loop.)
+/// **Chunks.** Every loop cuts [0, count) into chunks_of(count) contiguous chunks, a number set by `count`
+/// alone, never by the threads. A loop of up to small_loop items has at most max_chunks chunks of at least
+/// items_per_chunk items (a loop of fewer than 2 items_per_chunk items is one chunk: the plain serial
+/// loop); a longer loop has one chunk per large_chunk_items items, so that the chunks grow with the work
+/// and keep many threads busy. A sum over the particles (parallel_sum, and the particle-to-grid scatter
+/// into the nodes, mpm/core/scatter.hpp) is formed chunk by chunk, each chunk's part from zero, and the
+/// parts are added in chunk order. One thread does exactly the same additions in the same order, so a
+/// run gives the same bits on 1, 2 or 64 threads, on any machine.
+///
+/// **The model that sets the chunks.** Let a loop of count items have C = chunks_of(count) chunks of
+/// nearly equal work w = count / C items (at least 1024 items above small_loop). Threads that take chunks
+/// on demand finish a loop of equal chunks in ceil(C / P) chunk times, so P threads speed it up by at most
+/// balanced_speedup(C, P) = C / ceil(C / P): P itself when C is a multiple of P, and at least C / (C / P + 1)
+/// otherwise. 8 chunks cap every loop at 8 threads and leave a thread idle for any chunk slower than the
+/// rest; the 102,400 particles of the soil block at 160 x 160 cells make 100 chunks: at most 7.7 on 8
+/// threads, 11.1 on 12, 14.3 on 16. What more chunks cost is the scatter's reduction: each chunk beyond the
+/// first adds into a copy of the nodal fields that covers only the nodes its particles reach (a window),
+/// and the copies are added to the fields node by node. With the particles in spatial order (as the
+/// scenes make them) a window holds the rows of nodes of its own particles plus a stencil's width, so the
+/// copies together hold about nodes + C x (stencil rows x nodes per row): for the soil block with LME about
+/// 3.4 % of the scatter's own stencil entries, 10 % for linear shapes (estimates of this formula). Their
+/// memory is capped at max_chunks - 1 copies of the grid, what a loop of small_loop items needs; particles
+/// out of order, whose windows would exceed it, are scattered in max_chunks groups of chunks instead
+/// (mpm/core/scatter.hpp).
 ///
 /// **Hand-out on demand.** The calling thread and the workers of its Team each take the next chunk
 /// when they are free. A thread that the operating system sets aside (another program needs the
@@ -51,12 +69,17 @@
 namespace mpm {
 
 inline constexpr int max_threads = 64;
-/// Most chunks per loop: enough that a thread slowed down by another program leaves its share to the
-/// others (on 2 threads, each takes about 4), few enough that the scatter's nodal copies, one per chunk
-/// beyond the first, stay a small part of the memory of a run.
+/// Most chunks of a loop of up to small_loop items: enough that a thread slowed down by another program
+/// leaves its share to the others (on 2 threads, each takes about 4), and the most copies of the whole grid
+/// (one per chunk beyond the first) that the particle-to-grid scatter keeps.
 inline constexpr int max_chunks = 8;
 /// Fewest items per chunk (below it the partial sums cost more than the items).
 inline constexpr int items_per_chunk = 128;
+/// Items per chunk of a loop longer than small_loop: about a millisecond of LME stencils, 20 microseconds
+/// of a linear transfer, against the fraction of a microsecond it costs a thread to take a chunk.
+inline constexpr int large_chunk_items = 1024;
+/// The longest loop cut by the rule of the small loops (at most max_chunks chunks).
+inline constexpr int small_loop = max_chunks * large_chunk_items;
 /// Least work, in stencil entries, of a loop run on the team: on the 2-core development machine waking
 /// the workers and waiting for the last chunk costs about 10 microseconds, the work of some 5,000
 /// entries of a linear transfer; at 16,384 entries the team's cost is below a tenth of the loop's.
@@ -75,15 +98,27 @@ struct Range {
   int begin, end;
 };
 
-/// The number of chunks of a loop over `count` items.
-inline int chunks_of(int count) { return std::clamp(count / items_per_chunk, 1, max_chunks); }
+/// The number of chunks of a loop over `count` items: up to small_loop items, count / items_per_chunk
+/// within [1, max_chunks]; beyond, count / large_chunk_items (which is max_chunks at small_loop, so the
+/// rule has no jump). Never the threads: a result's bits depend on its chunks.
+inline int chunks_of(int count) {
+  return count <= small_loop ? std::clamp(count / items_per_chunk, 1, max_chunks) : count / large_chunk_items;
+}
+
+/// The model's speed-up of a loop of `chunks` chunks of equal work on `threads` threads that take them on
+/// demand: the chunks over the chunk times the busiest thread needs, chunks / ceil(chunks / threads).
+inline double balanced_speedup(int chunks, int threads) {
+  return static_cast<double>(chunks) / ((chunks + threads - 1) / threads);
+}
+
+/// Part `part` of [0, count) cut into `parts` nearly equal contiguous parts, in order.
+inline Range part_of(int count, int parts, int part) {
+  return {static_cast<int>(static_cast<long>(count) * part / parts),
+          static_cast<int>(static_cast<long>(count) * (part + 1) / parts)};
+}
 
 /// Chunk `chunk` of [0, count): chunks_of(count) nearly equal contiguous chunks, in order.
-inline Range chunk_of(int count, int chunk) {
-  const int chunks = chunks_of(count);
-  return {static_cast<int>(static_cast<long>(count) * chunk / chunks),
-          static_cast<int>(static_cast<long>(count) * (chunk + 1) / chunks)};
-}
+inline Range chunk_of(int count, int chunk) { return part_of(count, chunks_of(count), chunk); }
 
 /// The index of the thread that runs the current chunk: 0 for the calling thread, 1, 2, ... for the
 /// workers. A slot for per-thread counters (ShapeDiagnostics), read without a function call.
@@ -267,15 +302,20 @@ inline void use_threads(int threads) {
 /// The threads the loops of the calling thread may run on.
 inline int team_threads() { return calling_team() ? calling_team()->threads() : 1; }
 
+/// work(part) for every part in [0, parts), in order on the calling thread, or on its team when
+/// `work_estimate` (in stencil entries) reaches parallel_work. work must not throw.
+template <class Work>
+void for_each_part(int parts, long work_estimate, Work work) {
+  Team* team = calling_team().get();
+  if (team && parts > 1 && work_estimate >= parallel_work && team->pays()) return team->run(parts, work);
+  for (int part = 0; part < parts; ++part) work(part);
+}
+
 /// work(chunk, items) for every chunk of [0, count), in chunk order on the calling thread, or on
 /// its team when `work_estimate` (in stencil entries) reaches parallel_work. work must not throw.
 template <class Work>
 void for_each_chunk(int count, long work_estimate, Work work) {
-  const int chunks = chunks_of(count);
-  auto run_chunk = [&](int chunk) { work(chunk, chunk_of(count, chunk)); };
-  Team* team = calling_team().get();
-  if (team && chunks > 1 && work_estimate >= parallel_work && team->pays()) return team->run(chunks, run_chunk);
-  for (int chunk = 0; chunk < chunks; ++chunk) run_chunk(chunk);
+  for_each_part(chunks_of(count), work_estimate, [&](int chunk) { work(chunk, chunk_of(count, chunk)); });
 }
 
 /// body(p) for every p in [0, count); `work_per_item`: the stencil entries each p visits.
@@ -286,104 +326,69 @@ void parallel_for(int count, long work_per_item, Body body) {
   });
 }
 
+/// Room for `size` values of type T for the calling thread's loops, kept from call to call so that a loop in
+/// the time step allocates only the first time it needs more.
+template <class T>
+std::vector<T>& scratch(std::size_t size) {
+  static thread_local std::vector<T> room;
+  if (room.size() < size) room.resize(size);
+  return room;
+}
+
 /// The sum over p in [0, count) of what body(p, part) adds into `part`: formed per chunk from `zero`,
 /// the chunks' parts then combined in chunk order by combine(total, part).
 template <class T, class Body, class Combine>
 T parallel_sum(int count, long work_per_item, const T& zero, Body body, Combine combine) {
-  std::array<T, max_chunks> part;
-  part.fill(zero);
+  const int chunks = chunks_of(count);
+  std::vector<T>& part = scratch<T>(chunks);
   for_each_chunk(count, count * work_per_item, [&](int chunk, Range items) {
     T running = zero;  // on the thread's own stack: neighbouring parts share cache lines, which two threads would fight over
     for (int p = items.begin; p < items.end; ++p) body(p, running);
     part[chunk] = running;
   });
   T total = part[0];
-  for (int chunk = 1; chunk < chunks_of(count); ++chunk) combine(total, part[chunk]);
+  for (int chunk = 1; chunk < chunks; ++chunk) combine(total, part[chunk]);
   return total;
 }
 
-inline void set_zero(double& value) { value = 0.0; }
-template <class Derived>
-void set_zero(Eigen::MatrixBase<Derived>& value) { value.setZero(); }
-
-/// For each chunk of the particles, the nodes its stencils reach (compute_stencils sets them): the
-/// scatter reads and clears a chunk's copy of a field on these nodes only. The whole grid by default.
-using ChunkNodes = std::array<Range, max_chunks>;
-inline constexpr Range all_nodes{0, 1 << 30};
-
-/// A nodal field that the particles scatter into (P2G), with its zeroed copies, one per chunk beyond
-/// the first (GridFields::prepare_chunks), each the size of the field.
-template <class T>
-struct ScatterTarget {
-  std::vector<T>& field;
-  std::vector<std::vector<T>>& copies;
-};
-
-/// The copies of one field that a scatter over `count` particles needs: one per chunk beyond the first.
-template <class T>
-void prepare_copies(std::vector<std::vector<T>>& copies, int count, int nodes, const T& zero) {
-  copies.assign(chunks_of(count) - 1, std::vector<T>(nodes, zero));
-}
-
-/// Adds chunk copies 1, 2, ... of `target` to its field, in chunk order, on the nodes of `block`
-/// that each chunk reached, and zeroes them again.
-template <class T>
-void add_copies(ScatterTarget<T>& target, int chunks, const ChunkNodes& reached, Range block) {
-  for (int chunk = 1; chunk < chunks; ++chunk) {
-    std::vector<T>& copy = target.copies[chunk - 1];
-    const int end = std::min({block.end, reached[chunk].end, static_cast<int>(copy.size())});
-    for (int node = std::max(block.begin, reached[chunk].begin); node < end; ++node) {
-      target.field[node] += copy[node];
-      set_zero(copy[node]);
-    }
-  }
-}
-
-/// Scatter into the nodes (P2G) for particles [0, count), into one or more nodal fields in one pass
-/// over the particles: body(p, field...) adds particle p's share into field[I] of each target for the
-/// nodes I of its stencil. Chunk 0 adds into the fields themselves, chunk c > 0 into their copies[c - 1];
-/// the copies are then added to the fields node by node in chunk order (on the team too, by blocks of
-/// nodes) and zeroed again. `work_per_item`: the stencil entries per particle; `reached`: the nodes
-/// each chunk's stencils reach.
-template <class Body, class... T>
-void scatter_to_nodes(int count, long work_per_item, const ChunkNodes& reached, Body body, ScatterTarget<T>... targets) {
-  const int chunks = chunks_of(count);
-  if (((static_cast<int>(targets.copies.size()) < chunks - 1) || ...)) throw std::logic_error("scatter_to_nodes: too few copies");
-  for_each_chunk(count, count * work_per_item, [&](int chunk, Range items) {
-    for (int p = items.begin; p < items.end; ++p)
-      body(p, (chunk == 0 ? targets.field.data() : targets.copies[chunk - 1].data())...);
-  });
-  if (chunks == 1) return;
-  // The nodes of the first target: every target is a nodal field of the same grid.
-  const int nodes = static_cast<int>(std::get<0>(std::forward_as_tuple(targets...)).field.size());
-  long copied = 0;  // the work of adding the copies: the nodes they reached
-  for (int chunk = 1; chunk < chunks; ++chunk) copied += std::max(0, std::min(reached[chunk].end, nodes) - std::max(reached[chunk].begin, 0));
-  for_each_chunk(nodes, copied * static_cast<long>(sizeof...(T)), [&](int, Range block) {
-    (add_copies(targets, chunks, reached, block), ...);
-  });
-}
-
-/// The same for one field: body(p, field).
-template <class T, class Body>
-void scatter_to_nodes(int count, long work_per_item, const ChunkNodes& reached, std::vector<T>& field,
-                      std::vector<std::vector<T>>& copies, Body body) {
-  scatter_to_nodes(count, work_per_item, reached, body, ScatterTarget<T>{field, copies});
-}
-
 TEST_CASE("Parallel loops: the chunks cover every item once, in order, and depend on the count alone") {
-  for (int count : {0, 1, 127, 256, 1000, 5000, 1 << 20}) {
+  for (int count : {0, 1, 127, 256, 1000, 5000, small_loop, small_loop + 1, 102400, 1 << 20}) {
     int covered = 0;
     for (int chunk = 0; chunk < chunks_of(count); ++chunk) {
       const Range items = chunk_of(count, chunk);
       CHECK(items.begin == covered);
       CHECK(items.end - items.begin >= std::min(count, items_per_chunk));
+      if (count > small_loop) CHECK(items.end - items.begin >= large_chunk_items);
       covered = items.end;
     }
     CHECK(covered == count);
   }
   CHECK(chunks_of(255) == 1);  // the plain serial loop
   CHECK(chunks_of(256) == 2);
-  CHECK(chunks_of(1 << 20) == max_chunks);
+  CHECK(chunks_of(small_loop) == max_chunks);  // the small loops' rule, as it was
+  CHECK(chunks_of(small_loop + large_chunk_items - 1) == max_chunks);  // no jump where the rules meet
+  CHECK(chunks_of(small_loop + large_chunk_items) == max_chunks + 1);
+  CHECK(chunks_of(102400) == 100);  // the soil block at 160 x 160 cells
+  CHECK(chunks_of(1 << 20) == 1024);
+  for (int count = 1; count < 1 << 17; count += 97) REQUIRE(chunks_of(count) <= chunks_of(count + 97));  // grows
+}
+
+TEST_CASE("Parallel loops: the model's speed-up of 10^5 items, at least 0.7 x threads up to 8, rises to 16") {
+  CHECK(balanced_speedup(8, 8) == 8.0);
+  CHECK(balanced_speedup(8, 16) == 8.0);  // the cap of max_chunks chunks
+  CHECK(balanced_speedup(100, 8) == doctest::Approx(100.0 / 13));
+  CHECK(balanced_speedup(100, 16) == doctest::Approx(100.0 / 7));
+  for (int count : {100000, 102400, 1 << 20}) {
+    std::array<double, 17> speedup{};
+    for (int threads = 1; threads <= 16; ++threads) {
+      speedup[threads] = balanced_speedup(chunks_of(count), threads);
+      INFO(count, " items on ", threads, " threads: ", speedup[threads]);
+      if (threads <= 8) CHECK(speedup[threads] >= 0.7 * threads);
+      CHECK(speedup[threads] >= speedup[threads - 1]);  // never lower with more threads
+      if (threads > 4) CHECK(speedup[threads] > speedup[threads - 4]);  // and rising beyond 8
+    }
+    CHECK(speedup[16] >= 0.75 * 16);
+  }
 }
 
 TEST_CASE("Parallel loops: every chunk runs once on the team, loop after loop, worker_index names the thread") {
@@ -409,87 +414,33 @@ TEST_CASE("Parallel loops: every chunk runs once on the team, loop after loop, w
   CHECK(team_threads() == 1);
 }
 
-TEST_CASE("Parallel loops: sums and scatters give the same bits on 1, 2 and 3 threads, and the serial loop's sum to 1e-12") {
+TEST_CASE("Parallel loops: sums give the same bits on 1, 2, 3 and 7 threads, and the serial loop's sum to 1e-12") {
   // Terms of 14 orders of magnitude and both signs: their sum depends on the order of the additions.
-  const int count = 5000, nodes = 50;
-  std::vector<double> term(count);
-  for (int p = 0; p < count; ++p) term[p] = std::sin(0.7 * p) * std::pow(10.0, p % 15 - 7);
-  double serial = 0.0, scale = 0.0;
-  for (int p = 0; p < count; ++p) serial += term[p], scale += std::abs(term[p]);
-  // Particle p reaches nodes p / 100 and p / 100 + 1 (particles in spatial order, as the scenes make them).
-  ChunkNodes reached;
-  reached.fill(Range{0, 0});
-  for (int chunk = 0; chunk < chunks_of(count); ++chunk)
-    reached[chunk] = Range{chunk_of(count, chunk).begin / 100, (chunk_of(count, chunk).end - 1) / 100 + 2};
-  std::vector<double> serial_field(nodes + 1, 0.0);
-  for (int p = 0; p < count; ++p) serial_field[p / 100] += term[p], serial_field[p / 100 + 1] += 0.5 * term[p];
-
-  std::vector<double> sums;
-  std::vector<std::vector<double>> fields;
-  const TeamAlways on_the_team;
-  for (int threads : {1, 2, 3}) {
-    use_threads(threads);
-    sums.push_back(parallel_sum(count, parallel_work, 0.0, [&](int p, double& sum) { sum += term[p]; },
-                                [](double& total, double part) { total += part; }));
-    std::vector<double> field(nodes + 1, 0.0);
-    std::vector<std::vector<double>> copies;
-    prepare_copies(copies, count, nodes + 1, 0.0);
-    scatter_to_nodes(count, parallel_work, reached, field, copies, [&](int p, double* into) {
-      into[p / 100] += term[p];
-      into[p / 100 + 1] += 0.5 * term[p];
-    });
-    for (const auto& copy : copies)
-      for (double left : copy) CHECK(left == 0.0);  // the copies are left zeroed for the next scatter
-    fields.push_back(field);
+  for (int count : {5000, 3 * small_loop + 77}) {
+    std::vector<double> term(count);
+    for (int p = 0; p < count; ++p) term[p] = std::sin(0.7 * p) * std::pow(10.0, p % 15 - 7);
+    double serial = 0.0, scale = 0.0;
+    for (int p = 0; p < count; ++p) serial += term[p], scale += std::abs(term[p]);
+    std::vector<double> sums;
+    const TeamAlways on_the_team;
+    for (int threads : {1, 2, 3, 7}) {
+      use_threads(threads);
+      sums.push_back(parallel_sum(count, parallel_work, 0.0, [&](int p, double& sum) { sum += term[p]; },
+                                  [](double& total, double part) { total += part; }));
+    }
+    use_threads(1);
+    CHECK(sums[0] != serial);  // the terms do tell the order of the additions apart...
+    for (double sum : sums) CHECK(sum == sums[0]);  // ...and every thread count adds in the same order
+    CHECK(std::abs(sums[0] - serial) <= 1e-12 * scale);
+    // The chunks' parts, each from zero, added in chunk order.
+    double by_chunks = 0.0;
+    for (int chunk = 0; chunk < chunks_of(count); ++chunk) {
+      double part = 0.0;
+      for (int p = chunk_of(count, chunk).begin; p < chunk_of(count, chunk).end; ++p) part += term[p];
+      by_chunks = chunk == 0 ? part : by_chunks + part;
+    }
+    CHECK(sums[0] == by_chunks);
   }
-  use_threads(1);
-  CHECK(sums[0] != serial);  // the terms do tell the order of the additions apart...
-  CHECK(sums[1] == sums[0]);  // ...and every thread count adds in the same order
-  CHECK(sums[2] == sums[0]);
-  CHECK(std::abs(sums[0] - serial) <= 1e-12 * scale);
-  // The chunks' parts, each from zero, added in chunk order.
-  double by_chunks = 0.0;
-  for (int chunk = 0; chunk < chunks_of(count); ++chunk) {
-    double part = 0.0;
-    for (int p = chunk_of(count, chunk).begin; p < chunk_of(count, chunk).end; ++p) part += term[p];
-    by_chunks = chunk == 0 ? part : by_chunks + part;
-  }
-  CHECK(sums[0] == by_chunks);
-  for (int node = 0; node <= nodes; ++node) {
-    CHECK(fields[1][node] == fields[0][node]);
-    CHECK(fields[2][node] == fields[0][node]);
-    CHECK(std::abs(fields[0][node] - serial_field[node]) <= 1e-12 * scale);
-  }
-}
-
-TEST_CASE("Parallel loops: a scatter into two fields of different types in one pass, too few copies is an error, not a crash") {
-  const int count = 3000;
-  std::vector<double> field(10, 0.0);
-  std::vector<Vector<2>> vectors(10, Vector<2>::Zero());
-  std::vector<std::vector<double>> copies;
-  std::vector<std::vector<Vector<2>>> vector_copies;
-  prepare_copies(copies, count, 10, 0.0);
-  prepare_copies(vector_copies, count, 10, Vector<2>(Vector<2>::Zero()));
-  ChunkNodes everywhere;
-  everywhere.fill(all_nodes);
-  const TeamAlways on_the_team;
-  use_threads(2);
-  scatter_to_nodes(
-      count, parallel_work, everywhere,
-      [](int p, double* f, Vector<2>* g) {
-        f[p % 10] += 2.0;
-        g[p % 5] += Vector<2>(1.0, double(p % 3));
-      },
-      ScatterTarget<double>{field, copies}, ScatterTarget<Vector<2>>{vectors, vector_copies});
-  use_threads(1);
-  for (int node = 0; node < 10; ++node) CHECK(field[node] == 2 * (count / 10));
-  long ones = 0, residues = 0;  // the sums over p with p % 5 == 0: count / 5 ones, and the sum of p % 3
-  for (int p = 0; p < count; p += 5) ++ones, residues += p % 3;
-  CHECK(vectors[0] == Vector<2>(double(ones), double(residues)));
-  for (const auto& copy : vector_copies)
-    for (const Vector<2>& left : copy) CHECK(left.isZero(0.0));
-  copies.pop_back();
-  CHECK_THROWS_AS(scatter_to_nodes(count, 1, everywhere, field, copies, [](int, double*) {}), std::logic_error);
 }
 
 TEST_CASE("Team governor: a team as fast as one thread goes serial for serial_period loops, then tests again, a quiet team never") {

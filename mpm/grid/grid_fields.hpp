@@ -4,7 +4,7 @@
 #pragma once
 #include <vector>
 
-#include "mpm/core/parallel.hpp"
+#include "mpm/core/scatter.hpp"
 #include "mpm/core/types.hpp"
 
 namespace mpm {
@@ -21,10 +21,10 @@ struct GridFields {
   std::vector<Vector<Dim>> nodal_acceleration;  ///< a_I = f_I / m_I
   std::vector<Vector<Dim>> moving_velocity;     ///< the nodal velocity that moves the particles (the integrator's choice)
   std::vector<Vector<Dim>> projected_velocity;  ///< p_I / m_I (the PIC part of forward Euler's PIC/FLIP blend)
-  /// Zeroed copies of the fields the particles scatter into, one per chunk of particles beyond the
-  /// first: the chunks of a particle-to-grid scatter add into them (scatter_to_nodes, mpm/core/parallel.hpp).
-  std::vector<std::vector<double>> mass_copies;
-  std::vector<std::vector<Vector<Dim>>> momentum_copies, velocity_copies, force_copies;
+  /// Zeroed copies of the fields the particles scatter into, for the chunks of particles beyond the first,
+  /// one buffer per field: the chunks of a particle-to-grid scatter add into them (mpm/core/scatter.hpp).
+  std::vector<double> mass_copies;
+  std::vector<Vector<Dim>> momentum_copies, velocity_copies, force_copies;
 
   explicit GridFields(int node_count = 0)
       : nodal_mass(node_count, 0.0),

@@ -7,11 +7,13 @@
 #pragma once
 #include <array>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <vector>
 
 #include "mpm/core/errors.hpp"
 #include "mpm/core/parallel.hpp"
+#include "mpm/core/scatter.hpp"
 #include "mpm/core/types.hpp"
 
 namespace mpm {
@@ -43,7 +45,7 @@ struct Stencils {
   std::vector<double> value;               ///< [p * capacity + k]: N_Ip
   std::vector<Vector<Dim>> gradient;       ///< [p * capacity + k]: grad N_Ip
   /// For each chunk of the particles (mpm/core/parallel.hpp), the nodes [lowest, highest + 1) its
-  /// stencils reach: the scatters into the nodes clear and add a chunk's copy of a field there only.
+  /// stencils reach: a chunk's copy of a field in the scatters covers these nodes only (mpm/core/scatter.hpp).
   ChunkNodes chunk_nodes;
 
   void resize(int particle_count, int nodes_per_particle) {
@@ -52,7 +54,7 @@ struct Stencils {
     node.assign(static_cast<size_t>(particle_count) * capacity, 0);
     value.assign(static_cast<size_t>(particle_count) * capacity, 0.0);
     gradient.assign(static_cast<size_t>(particle_count) * capacity, Vector<Dim>::Zero());
-    chunk_nodes.fill(all_nodes);
+    chunk_nodes.assign(chunks_of(particle_count), all_nodes);
   }
   int begin(int p) const { return p * capacity; }
   ParticleStencil<Dim> of(int p) const {
@@ -71,7 +73,11 @@ namespace mpm {
 template <int Dim, class Shape>
 void compute_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, Stencils<Dim>& stencils) {
   const int count = static_cast<int>(positions.size());
-  std::array<std::optional<ShapeFailure>, max_chunks> failure;  // per chunk: its first
+  if (static_cast<int>(stencils.chunk_nodes.size()) != chunks_of(count))
+    stencils.chunk_nodes.assign(chunks_of(count), all_nodes);
+  std::mutex failing;  // guards the first failure: that of the failing chunk first in order
+  int failed_chunk = chunks_of(count);
+  std::optional<ShapeFailure> failure;
   for_each_chunk(count, static_cast<long>(count) * stencils.capacity, [&](int chunk, Range items) {
     Range reached{std::numeric_limits<int>::max(), 0};
     try {
@@ -92,13 +98,13 @@ void compute_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, S
         }
       }
     } catch (const ShapeFailure& what) {
-      failure[chunk] = what;
       reached = all_nodes;
+      const std::lock_guard<std::mutex> guard(failing);
+      if (chunk < failed_chunk) failed_chunk = chunk, failure = what;
     }
     stencils.chunk_nodes[chunk] = reached;
   });
-  for (const auto& first : failure)
-    if (first) throw *first;
+  if (failure) throw *failure;
 }
 
 }  // namespace mpm
