@@ -79,5 +79,5 @@ for threads in "${thread_counts[@]}"; do
   echo "$rates" | awk -v t="$threads" -v m="$median" -v one="$one" 'NR == 1 {lo = $1} {hi = $1}
     END {printf "%d,%s,%.3f,%.2f,%.3f\n", t, m, (hi - lo) / m, m / one, m / one / t}' >>"$summary"
 done
-column -s, -t "$summary"
+if command -v column >/dev/null; then column -s, -t "$summary"; else cat "$summary"; fi
 echo "thread_scaling.sh: wrote $csv and $summary in $(( $(date +%s) - start )) s"
