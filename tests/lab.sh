@@ -57,6 +57,15 @@ for expected in "fe at CFL 1.95: exit 0" "fe at CFL 2.05: exit 3" "npc at CFL 1.
 done
 
 grep -q "^failure: .*unstable: energy grew" "$work/out5" || fail "linear at 2560 cells: no energy growth in $(cat "$work/out5")"
+# 5, its last sentence: with the scene's own 4 cells of margin the linear run stops earlier, its free end's particle
+# off the grid
+(cd "$work" && "$mpm" run scenes/dyka_bar.toml --out crossing-margin4 --set grid.cells=[2560] --set solver.shape='"linear"' \
+  --set solver.end_time=7.0e-5 --set output.snapshots=[] >/dev/null 2>crossing-margin4.log)
+margin4=$(grep -h "^failure" "$work/crossing-margin4.log") margin400=$(grep -h "^failure" "$work"/crossing-linear.log)
+t4=$(sed -n 's/.*t = \([0-9.e+-]*\) s.*/\1/p' <<<"$margin4") t400=$(sed -n 's/.*t = \([0-9.e+-]*\) s.*/\1/p' <<<"$margin400")
+[[ $margin4 == *"particle left the grid"* ]] || fail "linear at 2560 cells, 4 cells of margin: '$margin4', want a particle off the grid"
+python3 -c "import sys; sys.exit(not float(sys.argv[1]) < float(sys.argv[2]))" "${t4:-nan}" "${t400:-nan}" ||
+  fail "linear at 2560 cells: stopped at t = $t4 s with 4 cells of margin, not before $t400 s with 400"
 # 3. mpm run warns above each limit and only there.
 for run in fe-2.05:2.000 npc-1.45:1.414; do
   log=$work/cfl-${run%%:*}.log cfl=${run%%:*} cfl=${cfl#*-}
