@@ -13,21 +13,8 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 largest_difference() {  # largest_difference RUN CELLS: max |v_ours - v_theirs| / v0, ours interpolated at their times
-  python3 - "$work/$1/observers.csv" "$root/verification/data/nl_partsol_dyka_lme_pce_$2.csv" <<'PY'
-import bisect, csv, sys
-ours, theirs = (list(csv.DictReader(open(path))) for path in sys.argv[1:3])
-t = [float(row["t"]) for row in ours]
-v = [float(row["A.v_x"]) for row in ours]
-worst = 0.0
-for row in theirs:
-    s = float(row["t"])
-    if s > t[-1]:
-        break
-    k = max(1, min(bisect.bisect_left(t, s), len(t) - 1))
-    w = v[k - 1] + (s - t[k - 1]) / (t[k] - t[k - 1]) * (v[k] - v[k - 1])
-    worst = max(worst, abs(w - float(row["A.v_x"])) / 5.0)
-print(worst)
-PY
+  python3 "$root/tests/largest_velocity_difference.py" "$work/$1/observers.csv" \
+    "$root/verification/data/nl_partsol_dyka_lme_pce_$2.csv"
 }
 run() {  # run NAME CELLS SETTINGS...: LME + NPC on the Dyka bar, no snapshot landings
   local name=$1 cells=$2

@@ -46,21 +46,7 @@ score() {  # score CSV CELLS: rms_normalised of mpm compare at X = h/2 over ever
     --column A.v_x=v_x --set "solver.end_time=$last" | awk -F, 'NR == 2 { print $5 }'
 }
 largest_difference() {  # largest_difference OURS THEIRS: max |v_ours - v_theirs| / v0, ours interpolated at theirs
-  python3 - "$1" "$2" <<'PY'
-import bisect, csv, sys
-ours, theirs = (list(csv.DictReader(open(path))) for path in sys.argv[1:3])
-t = [float(row["t"]) for row in ours]
-v = [float(row["A.v_x"]) for row in ours]
-worst = 0.0
-for row in theirs:
-    s = float(row["t"])
-    if s > t[-1]:
-        break
-    k = max(1, min(bisect.bisect_left(t, s), len(t) - 1))
-    w = v[k - 1] + (s - t[k - 1]) / (t[k] - t[k - 1]) * (v[k] - v[k - 1])
-    worst = max(worst, abs(w - float(row["A.v_x"])) / 5.0)
-print("%.3g" % worst)
-PY
+  python3 -c "import sys; print('%.3g' % float(sys.argv[1]))" "$(python3 "$root/tests/largest_velocity_difference.py" "$1" "$2")"
 }
 their_row() {  # their_row STEM: RMS/v0 of the case in other_codes.csv
   python3 - "$data/other_codes.csv" "$1" <<'PY'
