@@ -8,6 +8,8 @@
 # (and `make studies`) fail. Studies:
 #   hydrostatic_column   CB-Geo's hydrostatic column against CB-Geo's published values
 #                        (verification/hydrostatic_column.py, verification/data/other_codes.csv)
+#   authors_code         the authors' code (NL-PartSol) on the Dyka bar, nine cases, against this project
+#                        (tests/authors_table.sh, verification/authors_code.py; not a study file: fixed cases)
 # Each study runs its cases on every core, so the studies run one after the other; their progress lines
 # ("studies: ...") reach the terminal, everything else goes to their logs in results/studies/report/.
 set -uo pipefail
@@ -30,6 +32,11 @@ study hydrostatic_column python3 "$root/verification/hydrostatic_column.py" "$ou
   "$root/verification/data/other_codes.csv" "$out/report/01_hydrostatic_column.md" "$out/data/hydrostatic_column.csv" ||
   { echo "studies: CB-Geo's hydrostatic column failed, see $out/report/hydrostatic_column.log"; status=1; }
 echo "studies: CB-Geo's hydrostatic column done ($(( $(date +%s) - start )) s)"
+{ bash "$root/tests/authors_table.sh" "$bin/mpm" --write "$out/data/authors_table.csv" &&
+    python3 "$root/verification/authors_code.py" "$out/data/authors_table.csv" "$out/report/02_authors_code.md"; } \
+  >"$out/report/authors_code.log" 2>&1 ||
+  { echo "studies: the authors' code beside this project failed, see $out/report/authors_code.log"; status=1; }
+echo "studies: the authors' code on the Dyka bar done ($(( $(date +%s) - start )) s)"
 
 elapsed=$(( $(date +%s) - start ))
 {
