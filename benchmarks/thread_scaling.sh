@@ -9,7 +9,7 @@
 # thread count: the median, the spread (max - min) / median, the speed-up of the medians over one thread's,
 # and the speed-up over the threads), prints the summary, and keeps each run's run.json under OUT_DIR/runs.
 # Speed is particle-steps per second of the step's phases (run.json phase_seconds, output excluded).
-# On one thread a run takes about 8 s at 2.7e6 particle-steps/s, the whole script about 1-2 minutes on
+# On one thread a run takes 4-8 s (2.7e6-5.6e6 particle-steps/s on the machines measured), the script 1-2 minutes on
 # 16 cores; each run is stopped after 120 s.
 set -euo pipefail
 

@@ -1,5 +1,6 @@
 // The CSV files of the soil-block figures (gnuplot reads them; verification/plots/soil_*.gp).
 #pragma once
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <string>
@@ -91,12 +92,13 @@ inline void write_refinement(const std::vector<const SoilOutcome*>& sizes, const
   }
 }
 
-/// One line per run: its settings, cost and measures.
+/// One line per run: its settings, cost and measures; cpu_seconds is the first run's, cpu_fastest and cpu_slowest the
+/// range of its timing repeats (the runs of the 2 m grid's error-cost fronts; else the first run's, repeats 0).
 inline void write_summary(const std::vector<SoilOutcome>& outcomes, const std::string& path) {
   auto out = csv(path,
                  "name,shape,lme_gamma,integrator,h,nu,X,Y,steps,wall_seconds,solver_seconds,u_final,u_exact_final,final_error,"
                  "rms_error,mean_settlement,swing,static_small_strain,static_log_strain,energy_drift,largest_mass_mismatch,status,"
-                 "newton_mean,newton_max,neighbours_mean,stress_update");
+                 "newton_mean,newton_max,neighbours_mean,stress_update,cpu_seconds,cpu_fastest,cpu_slowest,repeats");
   for (const auto& o : outcomes) {
     const auto& r = o.result;
     const auto& s = o.settlement;
@@ -105,7 +107,12 @@ inline void write_summary(const std::vector<SoilOutcome>& outcomes, const std::s
         << r.solver_seconds << "," << s.final_displacement << "," << s.exact_final << "," << s.final_error << "," << s.rms_error << ","
         << s.mean_settlement << "," << s.swing << "," << s.static_small_strain << "," << s.static_log_strain << "," << s.energy_drift
         << "," << r.largest_mass_mismatch << "," << (r.failed ? "failed" : "ok") << "," << r.newton_mean << "," << r.newton_max << ","
-        << r.neighbours_mean << "," << mpm::io::name_of(r.scene.stress_update) << "\n";
+        << r.neighbours_mean << "," << mpm::io::name_of(r.scene.stress_update) << "," << r.cpu_seconds << ",";
+    const auto& t = o.cpu_repeats;
+    if (t.empty())
+      out << r.cpu_seconds << "," << r.cpu_seconds << ",0\n";
+    else
+      out << *std::min_element(t.begin(), t.end()) << "," << *std::max_element(t.begin(), t.end()) << "," << t.size() << "\n";
   }
 }
 
