@@ -16,6 +16,7 @@
 #include <string>
 #include <utility>
 #include <vector>
+#include <unistd.h>
 
 #include "mpm/analysis/rms_error.hpp"
 #include "mpm/cli/exact_command.hpp"
@@ -347,7 +348,8 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   const ColumnScore spike = score_column(times, {1.0, -2.0, 3.5, 4.0}, exact, 1.0);
   CHECK(spike.rms == doctest::Approx(1.5).epsilon(1e-14));
   CHECK(spike.t_of_max == 2.0);
-  const std::string path = (std::filesystem::temp_directory_path() / "mpm_compare_test.csv").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("mpm_compare_test_" + std::to_string(::getpid()) + ".csv")).string();
   std::ofstream(path) << "t,v,w\n0,1,2\n1,1e-310,2\n";
   CHECK(read_csv_columns(path, {"t", "w"}).values.at("w") == std::vector<double>{2.0, 2.0});
   CHECK(read_csv_columns(path, {"t", "w"}).lines == std::vector<int>{2, 3});

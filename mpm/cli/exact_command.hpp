@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "mpm/cli/options.hpp"
 #include "mpm/io/csv_file.hpp"
@@ -284,7 +285,8 @@ TEST_CASE("mpm exact: numbers, points and time ranges are read whole, or refused
   CHECK(parse_time_range("0:1", error).empty());
   CHECK(parse_time_range("0:1e-9:10", error).empty());
   CHECK(error.find("at most 1000000") != std::string::npos);
-  const std::string path = (std::filesystem::temp_directory_path() / "mpm_times_file_test.txt").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("mpm_times_test_" + std::to_string(::getpid()) + ".txt")).string();
   std::FILE* file = std::fopen(path.c_str(), "wb");
   REQUIRE(file);
   std::fputs("\xEF\xBB\xBF" "1e-5\r\n# a comment\n\n 2e-5 \n", file);  // a spreadsheet's byte-order mark and line ends

@@ -129,7 +129,9 @@ TEST_CASE(
   CHECK(gnuplot_page("|touch F.png", 1).find("set output './|touch F.png'\n") != std::string::npos);
   CHECK(gnuplot_page("/tmp/a.png", 2).find("size 1000,520 font ',10'\nset output '/tmp/a.png'") != std::string::npos);
   namespace fs = std::filesystem;
-  const std::string path = (fs::temp_directory_path() / "mpm_gnuplot_test.png").string(), target = path + ".target";
+  const std::string path =
+      (fs::temp_directory_path() / ("mpm_gnuplot_test_" + std::to_string(::getpid()) + ".png")).string();
+  const std::string target = path + ".target";
   const std::string signature("\x89PNG\r\n\x1a\n", 8), iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
   const std::string whole = signature + std::string("\0\0\0\rIHDR...", 11) + iend;
   write_fresh(target, "precious");

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "mpm/cli/gnuplot.hpp"
 #include "mpm/cli/options.hpp"
@@ -200,7 +201,8 @@ TEST_CASE("mpm plot: the script draws each observer's column beside the exact on
   CHECK(plot_script({{"t", hostile}}, {}, {}).find("title 'A.x'' . system(''touch F'') . '''\n") != std::string::npos);
   CHECK(plot_script({{"t"}}, {}, {{"t", "momentum' . system('id') . '"}})
             .find("title 'momentum'' . system(''id'') . '''") != std::string::npos);
-  const std::string path = (std::filesystem::temp_directory_path() / "mpm_plot_header_test.csv").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("mpm_plot_header_" + std::to_string(::getpid()) + ".csv")).string();
   std::ofstream(path) << "\xEF\xBB\xBFt,A.x,B\tx\n0,1,2\n";
   CHECK_THROWS_WITH_AS(plot_header(path), (path + ":1: column 3: its name holds a control character").c_str(), Refused);
   std::ofstream(path) << "\xEF\xBB\xBFt,A.x\n0,1\n";

@@ -242,7 +242,8 @@ class CsvFile {
 
 TEST_CASE("CsvFile: header and rows located, a BOM skipped, comments and blank lines skipped, a line too long refused") {
   namespace fs = std::filesystem;
-  const std::string path = (fs::temp_directory_path() / "mpm_csv_file_test.csv").string();
+  const std::string path =
+      (fs::temp_directory_path() / ("mpm_csv_file_test_" + std::to_string(::getpid()) + ".csv")).string();
   std::FILE* file = std::fopen(path.c_str(), "wb");
   REQUIRE(file);
   std::fputs("\xEF\xBB\xBFt, \"A v\" ,x,\r\n# a comment\n\n0,1,2,\n1,2\nlast", file);
@@ -300,7 +301,8 @@ TEST_CASE("CsvFile: the separator told by the header (comma, semicolon, tab or s
   CHECK(csv_fields("0 \t  1e-3   2", ' ') == std::vector<std::string>{"0", "1e-3", "2"});  // spaces: runs
   for (const char* number : {"0,5", "-1,25e3", ",5", "1,"}) CHECK_MESSAGE(has_decimal_comma(number), number);
   for (const char* text : {"0.5", "1,2,3", "a,b", "1,5 s", ""}) CHECK_MESSAGE(!has_decimal_comma(text), text);
-  const std::string path = (std::filesystem::temp_directory_path() / "mpm_csv_separator_test.csv").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("mpm_csv_separator_" + std::to_string(::getpid()) + ".csv")).string();
   const std::vector<std::pair<std::string, std::string>> files{
       {"t;v\n0;1.5\n1;2\n", ";"}, {"t\tv\n0\t1.5\n1\t2\n", "\t"}, {"  t   v\n0 1.5\n1\t 2\n", " "}};
   for (const auto& [text, separator] : files) {
@@ -336,7 +338,7 @@ TEST_CASE("CsvFile: the separator told by the header (comma, semicolon, tab or s
 TEST_CASE("CsvFile: a folder, a FIFO, a device and a file of /proc are refused at once, never read") {
   namespace fs = std::filesystem;
   CHECK(CsvFile(fs::temp_directory_path().string()).error() == fs::temp_directory_path().string() + ": is a folder, not a regular file; give a file");
-  const std::string fifo = (fs::temp_directory_path() / "mpm_csv_file_fifo").string();
+  const std::string fifo = (fs::temp_directory_path() / ("mpm_csv_file_fifo_" + std::to_string(::getpid()))).string();
   fs::remove(fifo);
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   CHECK(CsvFile(fifo).error() == fifo + ": not a regular file (a FIFO)");  // and no wait for a writer

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "mpm/io/csv_file.hpp"
 
@@ -73,7 +74,8 @@ inline std::vector<FileParticle> read_particle_file(const std::string& path, int
 }
 
 TEST_CASE("Particle file: columns by name, mass from volume, velocity optional, each bad row located") {
-  const std::string path = (std::filesystem::temp_directory_path() / "mpm_particle_file_test.csv").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("mpm_particle_file_" + std::to_string(::getpid()) + ".csv")).string();
   auto read = [&](const std::string& text, int dimension, std::string& error) {
     std::ofstream(path) << text;
     return read_particle_file(path, dimension, 1000.0, {0.5, -0.5}, error);

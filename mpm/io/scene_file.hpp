@@ -20,6 +20,7 @@
 #define TOML_EXCEPTIONS 1
 #define TOML_HEADER_ONLY 0  // the parser is compiled once, in mpm/io/toml_parser.cpp
 #include <toml++/toml.h>
+#include <unistd.h>
 
 #include "mpm/core/errors.hpp"
 #include "mpm/io/csv_file.hpp"
@@ -375,7 +376,8 @@ TEST_CASE("Scene file: a scene that is not a regular file is refused at once, as
     }
     return std::string("accepted");
   };
-  const std::string fifo = (fs::temp_directory_path() / "mpm_scene_file_fifo.toml").string();
+  const std::string fifo =
+      (fs::temp_directory_path() / ("mpm_scene_file_fifo_" + std::to_string(::getpid()) + ".toml")).string();
   fs::remove(fifo);
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   CHECK(message_of(fifo) == "error: " + fifo + ": not a regular file (a FIFO)");  // no writer waited for
@@ -384,7 +386,8 @@ TEST_CASE("Scene file: a scene that is not a regular file is refused at once, as
   const std::string folder = fs::temp_directory_path().string();
   CHECK(message_of(folder) == "error: " + folder + ": is a folder, not a regular file; give a file");
   CHECK(message_of(fifo) == "error: " + fifo + ": cannot be read: no such file, or no permission");
-  const std::string large = (fs::temp_directory_path() / "mpm_scene_file_large.toml").string();
+  const std::string large =
+      (fs::temp_directory_path() / ("mpm_scene_file_large_" + std::to_string(::getpid()) + ".toml")).string();
   std::ofstream(large) << "# " << std::string(max_scene_bytes, 'x') << "\n";
   CHECK(message_of(large) == "error: " + large + ": is larger than 1048576 bytes; a scene is a few kB");
   std::ofstream(large) << "dimension = 1\n";

@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "mpm/study/measures.hpp"
 #include "mpm/study/process.hpp"
@@ -180,7 +181,8 @@ TEST_CASE("study cases: the product of the axes, the last varying fastest, with 
   CHECK(case_folder("runs/s", 42) == "runs/s/cases/0042");
   CHECK(child_arguments({"run", "a.toml"}, {"x=1"}) == std::vector<std::string>{"mpm", "run", "a.toml", "--set", "x=1"});
   // a shifted CSV whose last time is half a step past the end time 2e-4: compare's end time moved to it, not before
-  const std::string shifted = (std::filesystem::temp_directory_path() / "mpm_study_shifted_test.csv").string();
+  const std::string shifted =
+      (std::filesystem::temp_directory_path() / ("mpm_study_shifted_" + std::to_string(::getpid()) + ".csv")).string();
   std::ofstream(shifted) << "t,A.v_x\n0.5e-4,1\n2.5e-4,1\n";
   CHECK(shifted_overrides({"x=1"}, shifted, 2e-4) == std::vector<std::string>{"x=1", "solver.end_time=0.00025000000000000001"});
   CHECK(shifted_overrides({"x=1"}, shifted, 2.5e-4) == std::vector<std::string>{"x=1"});
