@@ -13,7 +13,7 @@
 #include "mpm/io/scene_budget.hpp"
 #include "mpm/io/scene_builder.hpp"
 #include "mpm/shape/bspline.hpp"
-#include "mpm/shape/lme.hpp"
+#include "mpm/fast/lme_fast.hpp"
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/ugimp.hpp"
 #include "mpm/simulation.hpp"

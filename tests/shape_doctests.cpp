@@ -1,8 +1,9 @@
 /// \file
-/// Compiles the doctests of the shape functions (shape/) into the test program.
+/// Compiles the doctests of the shape functions (shape/, and the fast LME form of fast/) into the test program.
+#include "mpm/fast/lme_fast.hpp"
 #include "mpm/shape/bspline.hpp"
 #include "mpm/shape/linear.hpp"
-#include "mpm/shape/lme.hpp"
+#include "mpm/shape/lme_reference.hpp"
 #include "mpm/shape/ugimp.hpp"
 
 #include <random>

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/shape/lme.hpp"
+#include "mpm/fast/lme_fast.hpp"
 #include "verification/parallel.hpp"
 #include "verification/smooth_case.hpp"
 
@@ -140,7 +140,7 @@ inline std::vector<Axes> studies() {
 }
 
 /// Nodes a particle's shape function reaches along one axis, from the shapes' supports: linear 2, uGIMP and the
-/// quadratic B-spline 3, the cubic 4, LME 2R/h + 1 with R/h = sqrt(-ln(support tolerance) / gamma) (mpm/shape/lme.hpp).
+/// quadratic B-spline 3, the cubic 4, LME 2R/h + 1 with R/h = sqrt(-ln(support tolerance) / gamma) (mpm/shape/lme_options.hpp).
 inline double stencil_width(const std::string& shape) {
   if (shape == "linear") return 2.0;
   if (shape == "ugimp" || shape == "bspline2") return 3.0;

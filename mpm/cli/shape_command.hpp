@@ -15,7 +15,7 @@
 
 #include "mpm/cli/options.hpp"
 #include "mpm/shape/bspline.hpp"
-#include "mpm/shape/lme.hpp"
+#include "mpm/fast/lme_fast.hpp"
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/ugimp.hpp"
 

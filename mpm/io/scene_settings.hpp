@@ -19,7 +19,7 @@
 #include "mpm/io/scene_formulas.hpp"
 #include "mpm/particles/body_shape.hpp"
 #include "mpm/particles/seeding.hpp"
-#include "mpm/shape/lme.hpp"
+#include "mpm/shape/lme_options.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/transfer/grid_to_particle.hpp"
 

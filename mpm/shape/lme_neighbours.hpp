@@ -1,5 +1,5 @@
 /// \file
-/// The neighbours of a point for the local max-ent shape functions (mpm/shape/lme.hpp): every grid
+/// The neighbours of a point for the local max-ent shape functions (mpm/shape/lme_reference.hpp): every grid
 /// node within the support radius R, and a bound on how many there can be.
 ///
 /// Everything is in cell units: R/h and the offsets (x - x_I)/h.
@@ -49,10 +49,9 @@ int lattice_points_in_ball_bound(double radius) {
 }
 
 /// Every node within R of x: writes its number and its offset (x - x_I)/h, returns how many.
-/// Searches only the lattice box [x - R, x + R] clipped to the grid. When R >= h sqrt(Dim) (LmeShape
+/// Searches only the lattice box [x - R, x + R] clipped to the grid. When R >= h sqrt(Dim) (lme_radius_squared
 /// requires it), the corners of the cell that contains x are always among the neighbours, so x is
-/// inside their convex hull. \throws ShapeFailure if there are more than `capacity`. (Declared inline,
-/// so that GCC inlines it into LmeShape::evaluate; measured in benchmarks/README.md, "Optimisations tried".)
+/// inside their convex hull. \throws ShapeFailure if there are more than `capacity`.
 template <int Dim>
 inline int lme_neighbours(const Grid<Dim>& grid, double radius_squared, int capacity, int particle, const Vector<Dim>& x,
                    int* nodes, Vector<Dim>* offsets) {
