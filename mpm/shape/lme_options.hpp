@@ -19,8 +19,10 @@
 namespace mpm {
 
 struct LmeOptions {
-  double gamma = 3.0;               ///< regularisation, \f$ \gamma = \beta h^2 \f$ (paper/04_shape_functions.md: beta = gamma / h^2)
-  double support_tolerance = 1e-6;  ///< the prior \f$ e^{-\beta R^2} \f$ at the support radius R (A\&O06; authors: 1e-5)
+  /// regularisation, \f$ \gamma = \beta h^2 \f$ (paper/04_shape_functions.md: beta = gamma / h^2)
+  double gamma = 3.0;
+  /// the prior \f$ e^{-\beta R^2} \f$ at the support radius R (A\&O06; authors: 1e-5)
+  double support_tolerance = 1e-6;
   double newton_tolerance = 1e-10;  ///< convergence when \f$ |r| / h \f$ is at most this (paper/04_shape_functions.md)
   int max_iterations = 100;         ///< Newton updates of lambda per evaluation before ShapeFailure
   /// grid_spacing: beta = gamma / h^2 (the paper, A\&O06). mean_neighbour_distance: beta = gamma / hbar^2,
@@ -32,7 +34,8 @@ struct LmeOptions {
   enum class BetaRule { grid_spacing, mean_neighbour_distance, authors } beta_rule = BetaRule::grid_spacing;
 };
 
-/// \f$ (R/h)^2 = -\ln(\mathrm{tol}) / \gamma \f$, the support radius of the prior \f$ e^{-\beta R^2} = \mathrm{tol} \f$.
+/// \f$ (R/h)^2 = -\ln(\mathrm{tol}) / \gamma \f$, the support radius where the prior
+/// \f$ e^{-\beta R^2} = \mathrm{tol} \f$.
 /// \throws std::invalid_argument if an option is out of range, or if R is shorter than the cell diagonal
 /// \f$ h \sqrt{Dim} \f$: then a point could lie outside the convex hull of its neighbours, where LME does not exist.
 template <int Dim>
@@ -130,7 +133,8 @@ inline ShapeFailure lme_singular_hessian(int particle, int dimension, double det
 TEST_CASE("LME options: the hull condition on gamma and the support tolerance, each option's range") {
   LmeOptions options;
   options.gamma = 7.0;  // R = 1.405 h < sqrt(2) h with tol = 1e-6
-  CHECK_THROWS_WITH_AS(lme_radius_squared<2>(options), doctest::Contains("gamma = 7 is too large for support_tolerance = 1e-06"),
+  CHECK_THROWS_WITH_AS(lme_radius_squared<2>(options),
+                       doctest::Contains("gamma = 7 is too large for support_tolerance = 1e-06"),
                        std::invalid_argument);
   CHECK(lme_radius_squared<1>(options) == doctest::Approx(-std::log(1e-6) / 7.0));  // 1D needs only R >= h
   options.support_tolerance = 1e-7;                                                   // R = 1.52 h
