@@ -1,6 +1,6 @@
 /// \file
 /// The properties every shape function of the method must have, as doctest checks shared by the
-/// doctests of linear.hpp, ugimp.hpp and lme.hpp. At a point x with stencil {I}:
+/// doctests of linear.hpp, ugimp.hpp and both LME forms. At a point x with stencil {I}:
 ///   partition of unity      sum_I N_I = 1
 ///   linear reproduction     sum_I N_I x_I = x
 ///   gradient of unity       sum_I grad N_I = 0
