@@ -38,9 +38,11 @@ constexpr double speed_v0 = 5.0;                   // |v0|, m/s
 constexpr double largest_displacement = 3.298e-5;  // a |v0| / c, m (paper/08_test_cases.md)
 
 /// LME under the authors' beta (shape_settings), run as a shape of its own on `authors_cells`: every mesh of the sweep
-/// (at 2560 cells one run takes about 25 s of one core, as long as this project's LME run there).
+/// in `make studies` (at 2560 cells one run takes about twice this project's LME run there); `make figures` runs it
+/// on the meshes up to authors_figures_cells only (dyka_suite --part figures trims this list).
 const std::string authors_lme = "lme_authors";
-const std::vector<int> authors_cells{10, 20, 40, 80, 160, 320, 640, 1280, 2560};
+inline std::vector<int> authors_cells{10, 20, 40, 80, 160, 320, 640, 1280, 2560};
+constexpr int authors_figures_cells = 640;
 /// The shapes of the sweep with LME under both beta rules.
 const std::vector<std::string> both_rules_shapes{"linear", "ugimp", "lme", authors_lme};
 /// True if the sweep ran `shape` on `cells`: every mesh, but authors_lme only on authors_cells.
@@ -175,8 +177,8 @@ inline std::vector<EnergyCase> energy_cases() {
 }
 
 /// Every run that depends on no other: the sweep, the large CFLs, the Newmark average, the gammas, the baselines,
-/// the choices and the energy runs.
-inline std::vector<CaseSpec> independent_cases() {
+/// the choices and the energy runs (the authors' beta on authors_cells as it stands).
+inline std::vector<CaseSpec> independent_cases_of_both() {
   std::vector<CaseSpec> cases;
   for (int cells : sweep_cells)
     for (const auto& shape : both_rules_shapes)
@@ -208,6 +210,29 @@ inline std::vector<CaseSpec> independent_cases() {
     cases.push_back({c.name(), with(shape_settings(c.shape), {integrator_setting(c.integrator), "solver.cfl=" + text(c.cfl),
                                                               "solver.end_time=1.0551e-3", "output.snapshots=[]"})});
   return cases;
+}
+
+/// The two parts of the suite: `make figures` (the paper's Figs. 6-10: the sweep, the large CFLs that bound its claims,
+/// Fig. 8's gammas) and `make studies` (everything beyond the paper: the fair comparison, the baselines and their
+/// fronts, the choices, the energy over 10 periods, the two beta rules on every mesh; the sweep again as their
+/// reference, not Fig. 8's gammas).
+enum class Part { figures, studies };
+
+/// True if the case `name` belongs to `part`.
+inline bool in_part(const std::string& name, Part part) {
+  auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+  if (starts("dyka_gamma_")) return part == Part::figures;
+  const bool beyond = starts("dyka_base_") || starts("dyka_choice_") || starts("dyka_energy_") ||
+                      name.find("_npcavg_") != std::string::npos;
+  return part == Part::studies || !beyond;
+}
+
+/// The independent cases of `part`.
+inline std::vector<CaseSpec> independent_cases(Part part) {
+  std::vector<CaseSpec> chosen;
+  for (auto& spec : independent_cases_of_both())
+    if (in_part(spec.name, part)) chosen.push_back(std::move(spec));
+  return chosen;
 }
 
 /// Cost weight of a case for the order of the queue (longest first, so that the cores finish together).
