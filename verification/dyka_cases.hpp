@@ -245,3 +245,28 @@ inline double case_weight(const CaseSpec& spec) {
 }
 
 }  // namespace verification::dyka
+
+#ifndef DOCTEST_CONFIG_DISABLE
+#include <doctest/doctest.h>
+
+TEST_CASE("Dyka suite's parts: Fig. 8's gammas only in make figures, the studies beyond the paper only in make studies") {
+  using namespace verification::dyka;
+  CHECK(in_part("dyka_gamma_npc_3", Part::figures));
+  CHECK(!in_part("dyka_gamma_npc_3", Part::studies));
+  for (const char* beyond : {"dyka_base_bspline3_fe_40", "dyka_choice_courant_sum_linear_fe_40", "dyka_energy_lme_npc_cfl0.1",
+                             "dyka_linear_npcavg_40"}) {
+    CHECK(!in_part(beyond, Part::figures));
+    CHECK(in_part(beyond, Part::studies));
+  }
+  // the sweep is both parts': the figures' data, the studies' reference
+  CHECK(in_part("dyka_lme_npc_2560", Part::figures));
+  CHECK(in_part("dyka_lme_npc_2560", Part::studies));
+  // every case runs in one part at least, and neither part runs them all
+  const auto all = independent_cases_of_both();
+  int in_neither = 0;
+  for (const auto& spec : all) in_neither += !in_part(spec.name, Part::figures) && !in_part(spec.name, Part::studies);
+  CHECK(in_neither == 0);
+  CHECK(independent_cases(Part::figures).size() < all.size());
+  CHECK(independent_cases(Part::studies).size() < all.size());
+}
+#endif
