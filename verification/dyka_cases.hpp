@@ -215,13 +215,20 @@ inline std::vector<CaseSpec> independent_cases_of_both() {
 /// The two parts of the suite: `make figures` (the paper's Figs. 6-10: the sweep, the large CFLs that bound its claims,
 /// Fig. 8's gammas) and `make studies` (everything beyond the paper: the fair comparison, the baselines and their
 /// fronts, the choices, the energy over 10 periods, the two beta rules on every mesh; the sweep again as their
-/// reference, not Fig. 8's gammas).
+/// reference, and of Fig. 8's gammas only those a choice is compared with).
 enum class Part { figures, studies };
+
+/// True if a choice of choice_cases is compared with the run `name` (e.g. a gamma of Fig. 8).
+inline bool choice_reference(const std::string& name) {
+  for (const auto& c : choice_cases)
+    if (c.reference_name() == name) return true;
+  return false;
+}
 
 /// True if the case `name` belongs to `part`.
 inline bool in_part(const std::string& name, Part part) {
   auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
-  if (starts("dyka_gamma_")) return part == Part::figures;
+  if (starts("dyka_gamma_")) return part == Part::figures || choice_reference(name);
   const bool beyond = starts("dyka_base_") || starts("dyka_choice_") || starts("dyka_energy_") ||
                       name.find("_npcavg_") != std::string::npos;
   return part == Part::studies || !beyond;
@@ -253,6 +260,9 @@ TEST_CASE("Dyka suite's parts: Fig. 8's gammas only in make figures, the studies
   using namespace verification::dyka;
   CHECK(in_part("dyka_gamma_npc_3", Part::figures));
   CHECK(!in_part("dyka_gamma_npc_3", Part::studies));
+  // a gamma a choice is compared with runs in both (rigid_support_margin_gamma0.8 against LME gamma 0.8, NPC)
+  CHECK(in_part(gamma_name("npc", 0.8), Part::studies));
+  for (const auto& c : choice_cases) CHECK(in_part(c.reference_name(), Part::studies));
   for (const char* beyond : {"dyka_base_bspline3_fe_40", "dyka_choice_courant_sum_linear_fe_40", "dyka_energy_lme_npc_cfl0.1",
                              "dyka_linear_npcavg_40"}) {
     CHECK(!in_part(beyond, Part::figures));
