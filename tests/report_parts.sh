@@ -18,7 +18,8 @@ budget_part busy spin
 budget_part failing false
 row=$(grep '^figures,busy,' "$results/figures_budget.csv")
 awk -F, '{ exit !($4 > 0.2 && $5 == 0) }' <<<"$row" || fail "a busy part's row: $row (want CPU > 0.2 s, exit 0)"
-grep -q '^figures,failing,[0-9.]*,[0-9.]*,1$' "$results/figures_budget.csv" || fail "a failing part's exit code: $(cat "$results/figures_budget.csv")"
+grep -q '^figures,failing,[0-9.]*,[0-9.]*,1$' "$results/figures_budget.csv" ||
+  fail "a failing part's exit code: $(cat "$results/figures_budget.csv")"
 budget_markdown "$results/figures_budget.csv" | grep -q '^| all but the build |' || fail "no sum in the table"
 assemble "$results"
 grep -q 'Not run yet: `make figures`' "$results/report.md" || fail "figures not run: $(cat "$results/report.md")"

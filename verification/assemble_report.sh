@@ -28,11 +28,12 @@ assemble() {  # assemble RESULTS
   {
     echo "# Verification report"
     echo
-    echo "Two targets write this report: \`make figures\` the paper's figures (Figs. 4, 6-13) with their claims, \`make studies\`"
-    echo "everything beyond the paper. Each target's part opens with the commit and time that made it. Figures are in"
-    echo "\`figures/\` and \`studies/figures/\` (PNG and PDF), their data in \`data/\` and \`studies/data/\` (CSV). Each claim is"
-    echo "the paper's (its captions, as read in paper/08_test_cases.md), a bound of the theory or a study's; **holds** /"
-    echo "**does not hold** is what our runs measured."
+    echo "Two targets write this report: \`make figures\` the paper's figures (Figs. 4, 6-13) with their"
+    echo "claims, \`make studies\` everything beyond the paper. Each target's part opens with the commit and"
+    echo "time that made it. Figures are in \`figures/\` and \`studies/figures/\` (PNG and PDF), their data in"
+    echo "\`data/\` and \`studies/data/\` (CSV). Each claim is the paper's (its captions, as read in"
+    echo "paper/08_test_cases.md), a bound of the theory or a study's; **holds** / **does not hold** is what our"
+    echo "runs measured."
     echo
     if [[ -f $results/report/00_made.md ]]; then
       cat "$results"/report/*.md

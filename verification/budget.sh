@@ -10,8 +10,11 @@
 #   budget_part NAME CMD...    runs CMD (in this shell, not a subshell), appends its row, returns its exit code
 #   budget_markdown CSV        the table as Markdown, with the sums
 
-budget_children_cpu() {  # FILE: the CPU seconds (user + system) of the children this shell has waited for, from `times` >FILE
-  tail -n 1 "$1" | awk '{ s = 0; for (k = 1; k <= 2; k++) { split($k, a, /[ms]/); s += 60 * a[1] + a[2] }; printf "%.2f\n", s }'
+# budget_children_cpu FILE: the CPU seconds (user + system) of the children this shell has waited for, from the
+# output of `times` in FILE (its second line: "0m1.234s 0m0.056s")
+budget_children_cpu() {
+  tail -n 1 "$1" |
+    awk '{ s = 0; for (k = 1; k <= 2; k++) { split($k, a, /[ms]/); s += 60 * a[1] + a[2] }; printf "%.2f\n", s }'
 }
 
 budget_open() {
@@ -37,6 +40,11 @@ budget_part() {
 
 budget_markdown() {
   awk -F, 'NR == 1 { print "| part | wall, s | CPU, s | exit |"; print "|---|---|---|---|"; next }
-    { print "| " $2 " | " $3 " | " $4 " | " $5 " |"; if ($2 != "build") { w += $3; c += $4 } else { bw = $3; bc = $4; b = 1 } }
-    END { printf "| all but the build | %.1f | %.1f | |\n", w, c; if (b) printf "| all, the build included | %.1f | %.1f | |\n", w + bw, c + bc }' "$1"
+    { print "| " $2 " | " $3 " | " $4 " | " $5 " |" }
+    $2 != "build" { w += $3; c += $4 }
+    $2 == "build" { bw = $3; bc = $4; b = 1 }
+    END {
+      printf "| all but the build | %.1f | %.1f | |\n", w, c
+      if (b) printf "| all, the build included | %.1f | %.1f | |\n", w + bw, c + bc
+    }' "$1"
 }

@@ -32,7 +32,8 @@ budget_open "$out/figures_budget.csv" figures
 
 status=0
 if [[ -n $jobs ]]; then
-  budget_part build cmake --build "$root/$build" --target figure_programs -j "$jobs" || { echo "figures: the build failed"; exit 1; }
+  budget_part build cmake --build "$root/$build" --target figure_programs -j "$jobs" ||
+    { echo "figures: the build failed"; exit 1; }
   start=$(date +%s)
 fi
 suite() {  # suite NAME LOG: runs verification/NAME.sh, its log to LOG, its progress lines to the terminal

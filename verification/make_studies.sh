@@ -39,7 +39,8 @@ budget_open "$root/results/studies_budget.csv" studies
 
 status=0
 if [[ -n $jobs ]]; then
-  budget_part build cmake --build "$root/$build" --target study_programs -j "$jobs" || { echo "studies: the build failed"; exit 1; }
+  budget_part build cmake --build "$root/$build" --target study_programs -j "$jobs" ||
+    { echo "studies: the build failed"; exit 1; }
   start=$(date +%s)
 fi
 suite() {  # suite NAME LOG [ARGUMENT]: runs verification/NAME.sh, its log to LOG, its progress lines to the terminal
@@ -86,6 +87,8 @@ made_section studies "$root" "$root/results/studies_budget.csv" "$elapsed" >"$ou
 assemble "$root/results"
 echo "studies: wrote $out/ and their sections of $root/results/report.md, in ${elapsed} s"
 (cd "$root" && python3 verification/check_book_numbers.py --target studies "$root/results" paper/*.md README.md) || {
-  echo "studies: a number quoted in paper/ or README.md differs from results/studies/ (above): update the text"; status=1; }
+  echo "studies: a number quoted in paper/ or README.md differs from results/studies/ (above): update the text"
+  status=1
+}
 [[ $status -eq 0 ]] || echo "studies: FAILED (a comparison failed: see the report and the logs in $out/report/)"
 exit $status
