@@ -34,16 +34,17 @@ sanitize: deps
 	@cmake --build $(SANITIZE_DIR) --target test_programs -j $(JOBS)
 	@cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -E '^docs_browser$$'
 
-# Builds only what the figures run (CMake target figure_programs: the CLI and the suites' drivers).
+# The paper's figures (Figs. 4, 6-13) with their claims (verification/make_figures.sh), into results/ and the
+# report's first part; builds only what they run (CMake target figure_programs), timed with the runs
+# (results/figures_budget.csv).
 figures: configure
-	@cmake --build $(BUILD_DIR) --target figure_programs -j $(JOBS)
-	@bash verification/make_figures.sh $(BUILD_DIR)
+	@bash verification/make_figures.sh $(BUILD_DIR) $(JOBS)
 
-# Every study beyond the paper's figures (verification/make_studies.sh: studies/*.toml, each compared with what it
-# is checked against, e.g. another code's published values), into results/studies/; only the CLI is built.
+# Everything beyond the paper's figures (verification/make_studies.sh: baselines, smooth and manufactured
+# solutions, grid crossing, the stability map, work-precision, other codes), into results/studies/ and the
+# report's second part; builds only what they run (study_programs), timed (results/studies_budget.csv).
 studies: configure
-	@cmake --build $(BUILD_DIR) --target mpm_cli -j $(JOBS)
-	@bash verification/make_studies.sh $(BUILD_DIR)
+	@bash verification/make_studies.sh $(BUILD_DIR) $(JOBS)
 
 # Mutation testing (tests/mutants/run.py): each mutant of tests/mutants/mutants.tsv applied to a copy of
 # the tree in $(BUILD_DIR)/mutants/, rebuilt and tested; fates in results/mutants/. At most 2 copies

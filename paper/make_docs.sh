@@ -4,7 +4,8 @@
 # 1. installs what is missing (.ci/install-deps.sh: doxygen, libjs-mathjax, gnuplot, ...);
 # 2. builds docs_trace and writes with it the page of tests by equation (anchors tests_eq16, tests_eqA5);
 # 3. gathers the figures named by `\image html` on paper/*.md: results/figures/NAME.png after
-#    `make figures`, otherwise a placeholder drawn with gnuplot that says to run make figures;
+#    `make figures` (results/studies/figures/NAME.png after `make studies`), otherwise a placeholder drawn
+#    with gnuplot that says to run them;
 # 4. runs Doxygen with paper/Doxyfile, links Debian's MathJax as html/mathjax (nothing from the network);
 # 5. fails when Doxygen wrote a single warning (BUILD_DIR/docs/warnings.log).
 set -euo pipefail
@@ -28,13 +29,15 @@ mutants=(); [[ -f results/mutants/mutants.csv ]] && mutants=(results/mutants/mut
 for name in $(sed -n 's/.*\\image html \([A-Za-z0-9_.-]*\).*/\1/p' paper/*.md | sort -u); do
   if [[ -f results/figures/$name ]]; then
     cp "results/figures/$name" "$out/images/$name"
+  elif [[ -f results/studies/figures/$name ]]; then  # a figure of make studies
+    cp "results/studies/figures/$name" "$out/images/$name"
   else
     stem=${name%.*}
     gnuplot -e "set terminal pngcairo size 900,260 font 'Sans,14'; set output '$out/images/$name';
       unset border; unset tics; unset key; set xrange [0:1]; set yrange [0:1];
       set object 1 rectangle from graph 0.01,0.03 to graph 0.99,0.97 fillstyle empty border lc rgb '#999999' dt 2;
       set label 1 'Figure ${stem//_/\\_} is not made yet.' at graph 0.5,0.62 center font 'Sans,18';
-      set label 2 'Run   make figures   (it writes results/figures/), then   make docs   again.' at graph 0.5,0.35 center;
+      set label 2 'Run   make figures   and   make studies   (results/), then   make docs   again.' at graph 0.5,0.35 center;
       plot -1 notitle"
   fi
 done

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The colliding disks of Sulsky, Chen and Schreyer (1994), scenes/colliding_disks.toml: runs the scene and
 # draws its kinetic, strain and total energy and its momentum against time (results/figures/disks_energy).
-# Called by make_figures.sh (MPM_BIN, MPM_ROOT, MPM_RESULTS set).
+# Called by make_studies.sh (MPM_BIN, MPM_ROOT, MPM_RESULTS set: results/studies/).
 # Hard checks: the total momentum stays zero to round-off (no support, no body force: |p| <= 1e-12 of
 # the disks' sum of |m v|); the total energy stays bounded (within [0.5, 1.01] of the initial energy).
 set -uo pipefail

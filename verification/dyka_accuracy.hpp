@@ -37,6 +37,7 @@ inline Section all_runs_section(const Runs& runs) {
         ++count, worst = std::max(worst, run.mass_error);
         if (run.failed) ++stopped, list += "; `" + name + "` " + stopped_text(run);
       }
+    if (count == 0) continue;  // a study of the other part (make figures or make studies)
     const std::string where = study + ", " + std::to_string(count) + " runs";
     mass.add(where, worst, worst <= 1e-12);
     finished.add(where + list, stopped, stopped == 0);

@@ -38,9 +38,11 @@ constexpr double speed_v0 = 5.0;                   // |v0|, m/s
 constexpr double largest_displacement = 3.298e-5;  // a |v0| / c, m (paper/08_test_cases.md)
 
 /// LME under the authors' beta (shape_settings), run as a shape of its own on `authors_cells`: every mesh of the sweep
-/// (at 2560 cells one run takes about 25 s of one core, as long as this project's LME run there).
+/// in `make studies` (at 2560 cells one run takes about twice this project's LME run there); `make figures` runs it
+/// on the meshes up to authors_figures_cells only (dyka_suite --part figures trims this list).
 const std::string authors_lme = "lme_authors";
-const std::vector<int> authors_cells{10, 20, 40, 80, 160, 320, 640, 1280, 2560};
+inline std::vector<int> authors_cells{10, 20, 40, 80, 160, 320, 640, 1280, 2560};
+constexpr int authors_figures_cells = 640;
 /// The shapes of the sweep with LME under both beta rules.
 const std::vector<std::string> both_rules_shapes{"linear", "ugimp", "lme", authors_lme};
 /// True if the sweep ran `shape` on `cells`: every mesh, but authors_lme only on authors_cells.
@@ -175,8 +177,8 @@ inline std::vector<EnergyCase> energy_cases() {
 }
 
 /// Every run that depends on no other: the sweep, the large CFLs, the Newmark average, the gammas, the baselines,
-/// the choices and the energy runs.
-inline std::vector<CaseSpec> independent_cases() {
+/// the choices and the energy runs (the authors' beta on authors_cells as it stands).
+inline std::vector<CaseSpec> independent_cases_of_both() {
   std::vector<CaseSpec> cases;
   for (int cells : sweep_cells)
     for (const auto& shape : both_rules_shapes)
@@ -210,6 +212,36 @@ inline std::vector<CaseSpec> independent_cases() {
   return cases;
 }
 
+/// The two parts of the suite: `make figures` (the paper's Figs. 6-10: the sweep, the large CFLs that bound its claims,
+/// Fig. 8's gammas) and `make studies` (everything beyond the paper: the fair comparison, the baselines and their
+/// fronts, the choices, the energy over 10 periods, the two beta rules on every mesh; the sweep again as their
+/// reference, and of Fig. 8's gammas only those a choice is compared with).
+enum class Part { figures, studies };
+
+/// True if a choice of choice_cases is compared with the run `name` (e.g. a gamma of Fig. 8).
+inline bool choice_reference(const std::string& name) {
+  for (const auto& c : choice_cases)
+    if (c.reference_name() == name) return true;
+  return false;
+}
+
+/// True if the case `name` belongs to `part`.
+inline bool in_part(const std::string& name, Part part) {
+  auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+  if (starts("dyka_gamma_")) return part == Part::figures || choice_reference(name);
+  const bool beyond = starts("dyka_base_") || starts("dyka_choice_") || starts("dyka_energy_") ||
+                      name.find("_npcavg_") != std::string::npos;
+  return part == Part::studies || !beyond;
+}
+
+/// The independent cases of `part`.
+inline std::vector<CaseSpec> independent_cases(Part part) {
+  std::vector<CaseSpec> chosen;
+  for (auto& spec : independent_cases_of_both())
+    if (in_part(spec.name, part)) chosen.push_back(std::move(spec));
+  return chosen;
+}
+
 /// Cost weight of a case for the order of the queue (longest first, so that the cores finish together).
 inline double case_weight(const CaseSpec& spec) {
   int cells = 40;
@@ -220,3 +252,31 @@ inline double case_weight(const CaseSpec& spec) {
 }
 
 }  // namespace verification::dyka
+
+#ifndef DOCTEST_CONFIG_DISABLE
+#include <doctest/doctest.h>
+
+TEST_CASE("Dyka suite's parts: Fig. 8's gammas only in make figures, the studies beyond the paper only in make studies") {
+  using namespace verification::dyka;
+  CHECK(in_part("dyka_gamma_npc_3", Part::figures));
+  CHECK(!in_part("dyka_gamma_npc_3", Part::studies));
+  // a gamma a choice is compared with runs in both (rigid_support_margin_gamma0.8 against LME gamma 0.8, NPC)
+  CHECK(in_part(gamma_name("npc", 0.8), Part::studies));
+  for (const auto& c : choice_cases) CHECK(in_part(c.reference_name(), Part::studies));
+  for (const char* beyond : {"dyka_base_bspline3_fe_40", "dyka_choice_courant_sum_linear_fe_40", "dyka_energy_lme_npc_cfl0.1",
+                             "dyka_linear_npcavg_40"}) {
+    CHECK(!in_part(beyond, Part::figures));
+    CHECK(in_part(beyond, Part::studies));
+  }
+  // the sweep is both parts': the figures' data, the studies' reference
+  CHECK(in_part("dyka_lme_npc_2560", Part::figures));
+  CHECK(in_part("dyka_lme_npc_2560", Part::studies));
+  // every case runs in one part at least, and neither part runs them all
+  const auto all = independent_cases_of_both();
+  int in_neither = 0;
+  for (const auto& spec : all) in_neither += !in_part(spec.name, Part::figures) && !in_part(spec.name, Part::studies);
+  CHECK(in_neither == 0);
+  CHECK(independent_cases(Part::figures).size() < all.size());
+  CHECK(independent_cases(Part::studies).size() < all.size());
+}
+#endif

@@ -2,8 +2,8 @@
 # Smooth data: the vibrating bar's convergence, the grid-crossing error isolated, the 2D
 # manufactured solutions, and the Dyka bar at 2 particles per cell; data in $MPM_RESULTS/data/smooth_*.csv
 # (the runs, the orders with their standard errors, the crossing onsets, the CPU time's measured spread)
-# and dyka_2ppc.csv, report fragment $MPM_RESULTS/report/40_smooth.md. Called by make_figures.sh
-# (MPM_BIN, MPM_ROOT, MPM_RESULTS set) in parallel with the other suites; Fig. 6 at 2 particles per
+# and dyka_2ppc.csv, report fragment $MPM_RESULTS/report/40_smooth.md. Called by make_studies.sh
+# (MPM_BIN, MPM_ROOT, MPM_RESULTS set) after the Dyka part; Fig. 6 at 2 particles per
 # cell is drawn afterwards, by `smooth_figures.sh fig6`, once the Dyka suite's sweep is written.
 # Exits 1 when a hard check of the suite fails or a figure cannot be drawn.
 set -uo pipefail

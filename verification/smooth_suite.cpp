@@ -1,4 +1,4 @@
-// The smooth-data part of `make figures`: the vibrating bar's convergence per shape function, integrator,
+// The smooth-data part of `make studies`: the vibrating bar's convergence per shape function, integrator,
 // amplitude, particles per cell and CFL; the grid-crossing error isolated (error against amplitude / h on a fixed
 // mesh); the 2D manufactured solutions; the Dyka bar at 2 particles per cell; each with today's baselines beside the
 // paper's methods (B-splines, USL and MUSL, and LME at small gamma in the two crossing studies). The studies are
