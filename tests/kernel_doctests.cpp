@@ -1,10 +1,14 @@
 /// \file
-/// Compiles the doctests that sit beside the kernels of grid/, particles/, material/, transfer/,
+/// Compiles the doctests that sit beside the kernels of grid/, particles/, material/, transfer/, fast/,
 /// integrators/, loading/ and analysis/ into the test program.
 #include "mpm/analysis/energy.hpp"
 #include "mpm/analysis/linearised_step.hpp"
 #include "mpm/analysis/mode_analysis.hpp"
 #include "mpm/analysis/rms_error.hpp"
+#include "mpm/fast/grid_to_particle.hpp"
+#include "mpm/fast/nodal_forces.hpp"
+#include "mpm/fast/particle_to_grid.hpp"
+#include "mpm/fast/strain_update.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/grid/nodal_update.hpp"
