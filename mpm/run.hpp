@@ -1,7 +1,7 @@
 /// \file
-/// From a validated scene to a finished run. The dimension, the shape function and the
-/// integrator are chosen here, once per run, as template arguments of Simulation; nothing in
-/// the time step asks again.
+/// From a validated scene to a finished run. The dimension, the shape function, the integrator and the layer of
+/// kernels (reference or fast, mpm/core/kernels.hpp) are chosen here, once per run, as template arguments of
+/// Simulation; nothing in the time step asks again.
 #pragma once
 #include <optional>
 #include <string>

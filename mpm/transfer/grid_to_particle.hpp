@@ -5,7 +5,7 @@
 /// node, the rates the particles interpolate (nodal_acceleration, moving_velocity, projected_velocity: one
 /// division by m_I per node, not per particle-node pair), then the particles' x_p, v_p (and a_p for the
 /// predictor-corrector). These are the reference kernels, plain serial loops; their fast forms, on every core, are in
-/// mpm/fast/grid_to_particle.hpp.
+/// mpm/fast/fast_grid_to_particle.hpp.
 #pragma once
 #include <doctest/doctest.h>
 

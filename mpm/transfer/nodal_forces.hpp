@@ -11,7 +11,7 @@
 /// force into \f$ \sum_p m_p \mathbf b\cdot\mathbf u^\psi_p \f$ (Eq. 15).
 ///
 /// Contract: read the particles' m_p, rho_p, sigma_p and the stencils; add into nodal_force. This is the reference
-/// kernel, a plain serial loop; its fast form is in mpm/fast/nodal_forces.hpp.
+/// kernel, a plain serial loop; its fast form is in mpm/fast/fast_nodal_forces.hpp.
 #pragma once
 #include <doctest/doctest.h>
 

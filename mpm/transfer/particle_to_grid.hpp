@@ -4,7 +4,7 @@
 /// Contract: read the particles' m_p, v_p, a_p and the step's stencils; write nodal_mass,
 /// nodal_momentum, nodal_velocity. Fields are accumulated into zeroed arrays (GridFields::reset).
 /// These are the reference kernels, plain serial loops; their fast forms, on every core, are in
-/// mpm/fast/particle_to_grid.hpp.
+/// mpm/fast/fast_particle_to_grid.hpp.
 #pragma once
 #include <doctest/doctest.h>
 

@@ -12,7 +12,7 @@
 /// small-strain one (report).
 ///
 /// Contract: read nodal_velocity and the stencils; write the particles' epsilon_p, rho_p, sigma_p. These are the
-/// reference kernels, plain serial loops; their fast forms are in mpm/fast/strain_update.hpp.
+/// reference kernels, plain serial loops; their fast forms are in mpm/fast/fast_strain_update.hpp.
 #pragma once
 #include <doctest/doctest.h>
 
