@@ -1,7 +1,7 @@
 /// \file
-/// From a validated scene to a finished run. The dimension, the shape function and the
-/// integrator are chosen here, once per run, as template arguments of Simulation; nothing in
-/// the time step asks again.
+/// From a validated scene to a finished run. The dimension, the shape function, the integrator and the layer of
+/// kernels (reference or fast, mpm/core/kernels.hpp) are chosen here, once per run, as template arguments of
+/// Simulation; nothing in the time step asks again.
 #pragma once
 #include <optional>
 #include <string>
@@ -74,16 +74,21 @@ inline UpdateStressLast stress_last_integrator(const io::Scene& scene) {
   return integrator;
 }
 
+/// The LME shape function a layer of kernels runs with: today's LmeShape under both (the one line to change when the
+/// reference layer gets its own LME shape).
+template <class Kernels, int Dim>
+using LmeShapeFor = LmeShape<Dim>;
+
 /// Calls visit(shape, integrator) with the scene's shape function and integrator, each built once:
-/// the one place where the scene's choice becomes a type.
-template <int Dim, class Visitor>
+/// the one place where the scene's choice of method becomes a type (its choice of kernels: with_kernels).
+template <int Dim, class Kernels = FastKernels, class Visitor>
 auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit) {
   auto with_shape = [&](auto integrator) {
     switch (scene.shape) {
       case io::ShapeKind::ugimp: return visit(UgimpShape<Dim>(grid), integrator);
       case io::ShapeKind::bspline2: return visit(BsplineShape<Dim, 2>(grid), integrator);
       case io::ShapeKind::bspline3: return visit(BsplineShape<Dim, 3>(grid), integrator);
-      case io::ShapeKind::lme: return visit(LmeShape<Dim>(grid, lme_options(scene)), integrator);
+      case io::ShapeKind::lme: return visit(LmeShapeFor<Kernels, Dim>(grid, lme_options(scene)), integrator);
       default: return visit(LinearShape<Dim>(grid), integrator);
     }
   };
@@ -92,14 +97,21 @@ auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit)
   return with_shape(fe_integrator(scene));
 }
 
-/// Runs the scene's setup with the scene's shape function and integrator.
-/// \throws SimulationFailure when the method fails; `partial` then holds what was done (also when the
-/// monitor throws).
-template <int Dim>
-RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor, RunSummary* partial = nullptr) {
-  return with_method<Dim>(scene, setup.model.grid, [&](auto shape, auto integrator) {
-    Simulation<Dim, decltype(shape), decltype(integrator)> simulation(setup.model, setup.particles, std::move(shape),
-                                                                       integrator, scene.control);
+/// Calls visit(kernels) with the scene's layer of kernels (`solver.kernels`), ReferenceKernels{} or FastKernels{}:
+/// the one place where that choice becomes a type.
+template <class Visitor>
+auto with_kernels(const io::Scene& scene, Visitor&& visit) {
+  if (scene.kernels == io::KernelsKind::reference) return visit(ReferenceKernels{});
+  return visit(FastKernels{});
+}
+
+/// Runs the scene's setup with the scene's shape function and integrator on the kernels of `Kernels`.
+template <int Dim, class Kernels>
+RunSummary run_setup_on(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor, RunSummary* partial) {
+  return with_method<Dim, Kernels>(scene, setup.model.grid, [&](auto shape, auto integrator) {
+    Simulation<Dim, decltype(shape), decltype(integrator), Kernels> simulation(setup.model, setup.particles,
+                                                                                std::move(shape), integrator,
+                                                                                scene.control);
     try {
       return simulation.run(monitor);
     } catch (...) {  // a failure of the method, a stop signal, an output failure: keep what was done
@@ -109,13 +121,31 @@ RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Di
   });
 }
 
-// The runs are compiled once, for Dim = 1 and 2, in mpm/run_1d.cpp and mpm/run_2d.cpp (the library
-// mpm_run of CMakeLists.txt), not again in every program and test file that runs a scene: each
-// instantiates Simulation for 5 shape functions x 3 integrators (USF, USL/MUSL, NPC).
+/// Runs the scene's setup with the scene's shape function, integrator and kernels.
+/// \throws SimulationFailure when the method fails; `partial` then holds what was done (also when the
+/// monitor throws).
+template <int Dim>
+RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor,
+                     RunSummary* partial = nullptr) {
+  return with_kernels(scene, [&](auto kernels) {
+    return run_setup_on<Dim, decltype(kernels)>(scene, setup, monitor, partial);
+  });
+}
+
+// The runs are compiled once, for Dim = 1 and 2, in mpm/run_1d.cpp and mpm/run_2d.cpp (the fast kernels) and
+// mpm/run_reference_1d.cpp and mpm/run_reference_2d.cpp (the reference kernels), in the library mpm of
+// CMakeLists.txt, not again in every program and test file that runs a scene: each instantiates Simulation for
+// 5 shape functions x 3 integrators (USF, USL/MUSL, NPC).
 extern template Setup<1> build_setup<1>(const io::Scene&);
 extern template Setup<2> build_setup<2>(const io::Scene&);
 extern template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
 extern template RunSummary run_setup<2>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
+extern template RunSummary run_setup_on<1, FastKernels>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
+extern template RunSummary run_setup_on<2, FastKernels>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
+extern template RunSummary run_setup_on<1, ReferenceKernels>(const io::Scene&, const Setup<1>&, Monitor<1>&,
+                                                             RunSummary*);
+extern template RunSummary run_setup_on<2, ReferenceKernels>(const io::Scene&, const Setup<2>&, Monitor<2>&,
+                                                             RunSummary*);
 
 /// Reads a scene file, applies `--set` overrides and, when a budget is given, checks the run's
 /// estimated size against it (io/scene_budget.hpp). \throws SceneError.

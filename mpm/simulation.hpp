@@ -12,7 +12,8 @@
 ///   5. the observer samples and snapshots.
 ///
 /// The loop knows no files: a Monitor (io/run_writer.hpp) receives the samples. Every pass over the
-/// particles runs on RunControl::threads cores (mpm/core/parallel.hpp). After each named phase of the step
+/// particles runs on RunControl::threads cores (mpm/core/parallel.hpp), but the transfers of the reference
+/// kernels (`solver.kernels = "reference"`), which run serially. After each named phase of the step
 /// (mpm/core/step_phases.hpp) the loop's LoopPhases times it (PhaseTimers) and shows it to a Monitor that
 /// watches that step (`mpm trace`).
 #pragma once
@@ -29,6 +30,7 @@
 #include "mpm/core/parallel.hpp"
 #include "mpm/core/phase_timers.hpp"
 #include "mpm/core/errors.hpp"
+#include "mpm/core/kernels.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/integrators/time_step.hpp"
 #include "mpm/model.hpp"
@@ -101,7 +103,9 @@ struct LoopPhases {
   }
 };
 
-template <int Dim, class Shape, class Integrator>
+/// The run of one method: `Kernels` is the layer of the transfers (mpm/core/kernels.hpp): the reference kernels of
+/// mpm/transfer/ or, by default, the fast ones of mpm/fast/.
+template <int Dim, class Shape, class Integrator, class Kernels = FastKernels>
 class Simulation {
  public:
   Simulation(Model<Dim> model, Particles<Dim> particles, Shape shape, Integrator integrator, RunControl control)
@@ -158,7 +162,7 @@ class Simulation {
       const double body_force_time = control_.body_force_time == BodyForceTime::step_end ? time + dt : time;
       model_.body_force.evaluate(body_force_time, particles_, body_force_);  // b_p of Eq. (15), at x_p^k
       phases.after(Phase::body_force, particles_, grid_fields_);
-      integrator_.step(model_, stencils_, body_force_, dt, particles_, grid_fields_, phases);
+      integrator_.template step<Kernels>(model_, stencils_, body_force_, dt, particles_, grid_fields_, phases);
       time = lands ? target : fixed ? anchor + static_cast<double>(++since_anchor) * dt : time + dt;
       if (lands) anchor = target, since_anchor = 0;
       ++step;

@@ -15,19 +15,21 @@ namespace corrector_test {
 /// The predictor-corrector's step as NewmarkPredictorCorrector::step() takes it, with or without Eq. (30).
 template <bool with_corrector>
 struct NpcCorrectorSwitch : mpm::NewmarkPredictorCorrector {
-  template <int Dim, class... Rest>
+  template <class Kernels = mpm::FastKernels, int Dim, class... Rest>
   void step(const mpm::Model<Dim>& model, const mpm::Stencils<Dim>& stencils,
             const mpm::ParticleBodyForces<Dim>& body_force, double dt, mpm::Particles<Dim>& particles,
             mpm::GridFields<Dim>& grid, Rest&&...) const {
+    const Kernels kernels{};
     grid.reset();
-    mpm::nodal_mass_and_velocity_predictor(particles, stencils, newmark_gamma, dt, grid);
+    nodal_mass_and_velocity_predictor(kernels, particles, stencils, newmark_gamma, dt, grid);
     mpm::impose_fixed_velocity(model.fixed, grid.nodal_velocity);
     mpm::impose_fixed_velocity(model.fixed, grid.nodal_momentum);
-    mpm::update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
-    mpm::add_nodal_forces(particles, stencils, body_force, grid);
+    update_strain_density_stress(kernels, stencils, grid.nodal_velocity, model.materials, dt, particles);
+    add_nodal_forces(kernels, particles, stencils, body_force, grid);
     mpm::store_reactions(model.fixed, grid.nodal_force, grid.reaction);
     if (with_corrector) mpm::newmark_corrector(newmark_gamma, dt, grid);
-    mpm::newmark_particle_update(stencils, grid, newmark_gamma, dt, position_velocity, particles, particle_velocity);
+    newmark_particle_update(kernels, stencils, grid, newmark_gamma, dt, position_velocity, particles,
+                            particle_velocity);
   }
 };
 

@@ -1,10 +1,14 @@
 /// \file
-/// Compiles the doctests that sit beside the kernels of grid/, particles/, material/, transfer/,
+/// Compiles the doctests that sit beside the kernels of grid/, particles/, material/, transfer/, fast/,
 /// integrators/, loading/ and analysis/ into the test program.
 #include "mpm/analysis/energy.hpp"
 #include "mpm/analysis/linearised_step.hpp"
 #include "mpm/analysis/mode_analysis.hpp"
 #include "mpm/analysis/rms_error.hpp"
+#include "mpm/fast/fast_grid_to_particle.hpp"
+#include "mpm/fast/fast_nodal_forces.hpp"
+#include "mpm/fast/fast_particle_to_grid.hpp"
+#include "mpm/fast/fast_strain_update.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/grid.hpp"
 #include "mpm/grid/nodal_update.hpp"

@@ -110,8 +110,9 @@ int run_scene(io::Scene scene, RunRequest request) {
   return run_into_folder<Dim>(scene, setup, request);
 }
 
-/// A parser of a command that runs a scene (`mpm run`, `mpm trace`), with the two options they share, declared
-/// once: SCENE.toml, required, and --set KEY=VALUE, repeatable, bound to `scene_path` and `overrides`.
+/// A parser of a command that runs a scene (`mpm run`, `mpm trace`), with the options they share, declared
+/// once: SCENE.toml, required, and --set KEY=VALUE, repeatable, bound to `scene_path` and `overrides`, and
+/// --kernels K, which adds the override solver.kernels = K after them.
 inline std::unique_ptr<CommandParser> scene_command_parser(const std::string& name, const std::string& description,
                                                            std::string& scene_path,
                                                            std::vector<std::string>& overrides) {
@@ -122,6 +123,13 @@ inline std::unique_ptr<CommandParser> scene_command_parser(const std::string& na
                   "--set grid.cells=[160], --set 'body[0].max=[1.0]'; repeat for more")
       ->allow_extra_args(false)
       ->type_name("KEY=VALUE");
+  const auto& words = io::choice_words<io::KernelsKind>;
+  app->add_option_function<std::string>(
+         "--kernels",
+         [&overrides](const std::string& kernels) { overrides.push_back("solver.kernels=\"" + kernels + "\""); },
+         "short for --set 'solver.kernels=\"...\"' (after every --set): fast (default) | reference, the plain kernels "
+         "the book shows")
+      ->check(one_of(std::vector<std::string>(words.begin(), words.end())));
   return app;
 }
 

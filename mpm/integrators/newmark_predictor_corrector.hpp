@@ -17,7 +17,12 @@
 #pragma once
 #include <array>
 
+#include "mpm/core/kernels.hpp"
 #include "mpm/core/step_phases.hpp"
+#include "mpm/fast/fast_grid_to_particle.hpp"
+#include "mpm/fast/fast_nodal_forces.hpp"
+#include "mpm/fast/fast_particle_to_grid.hpp"
+#include "mpm/fast/fast_strain_update.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
 #include "mpm/model.hpp"
@@ -36,6 +41,10 @@ struct NewmarkPredictorCorrector {
   NewmarkPositionVelocity position_velocity = NewmarkPositionVelocity::projected;
   NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32;
 
+  /// `Kernels` is the layer every transfer of the step is taken from (mpm/core/kernels.hpp), chosen once per run by
+  /// `solver.kernels`: each call below with `kernels` is, for ReferenceKernels, the plain kernel of mpm/transfer/
+  /// that its phase names; for FastKernels (the default) its fast form in mpm/fast/.
+  ///
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
   /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle.
   /// Its numbered phases, as `mpm trace` numbers them (the paper's algorithm steps they run in brackets); phase 0
@@ -64,31 +73,33 @@ struct NewmarkPredictorCorrector {
   ///
   /// `observer.after(phase, particles, grid)` is called after each phase, in the order of `phases`: the loop times
   /// them, `mpm trace` prints them.
-  template <int Dim, class Observer>
+  template <class Kernels = FastKernels, int Dim, class Observer>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
             Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
+    const Kernels kernels{};  // the layer of every transfer below (mpm/core/kernels.hpp)
     // 0. The nodal fields set to zero (the paper's step 9 of the step before).
     grid.reset();
     observer.after(Phase::reset, particles, grid);
     // 1. Lumped nodal mass, Eq. (13), and velocity predictor by projection, Eqs. (26)-(29).
-    nodal_mass_and_velocity_predictor(particles, stencils, newmark_gamma, dt, grid);
+    nodal_mass_and_velocity_predictor(kernels, particles, stencils, newmark_gamma, dt, grid);
     observer.after(Phase::mass_predictor, particles, grid);
     // 2. Essential boundary conditions overwrite the predictor.
     impose_fixed_velocity(model.fixed, grid.nodal_velocity);
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
     observer.after(Phase::fixed_predictor, particles, grid);
     // 3. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
-    update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
+    update_strain_density_stress(kernels, stencils, grid.nodal_velocity, model.materials, dt, particles);
     observer.after(Phase::stress, particles, grid);
     // 4. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
-    add_nodal_forces(particles, stencils, body_force, grid);
+    add_nodal_forces(kernels, particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
     observer.after(Phase::forces, particles, grid);
     // 5. Corrector, Eq. (30): v_I^{k+1} = v_I^pred + gamma dt f_I / m_I.
     newmark_corrector(newmark_gamma, dt, grid);
     observer.after(Phase::corrector, particles, grid);
     // 6. Particle update, Eqs. (31)-(33) (or Eq. (23) for the velocity).
-    newmark_particle_update(stencils, grid, newmark_gamma, dt, position_velocity, particles, particle_velocity);
+    newmark_particle_update(kernels, stencils, grid, newmark_gamma, dt, position_velocity, particles,
+                            particle_velocity);
     observer.after(Phase::newmark_update, particles, grid);
   }
 

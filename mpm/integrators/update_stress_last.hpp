@@ -15,7 +15,12 @@
 
 #include <array>
 
+#include "mpm/core/kernels.hpp"
 #include "mpm/core/step_phases.hpp"
+#include "mpm/fast/fast_grid_to_particle.hpp"
+#include "mpm/fast/fast_nodal_forces.hpp"
+#include "mpm/fast/fast_particle_to_grid.hpp"
+#include "mpm/fast/fast_strain_update.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
 #include "mpm/model.hpp"
@@ -43,6 +48,10 @@ struct UpdateStressLast {
   EulerPositionVelocity position_velocity = EulerPositionVelocity::updated;
   double flip_fraction = 1.0;
 
+  /// `Kernels` is the layer every transfer of the step is taken from (mpm/core/kernels.hpp), chosen once per run by
+  /// `solver.kernels`: each call below with `kernels` is, for ReferenceKernels, the plain kernel of mpm/transfer/
+  /// that its phase names; for FastKernels (the default) its fast form in mpm/fast/.
+  ///
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$, the stencils at \f$ \mathbf x_p^k \f$. Its numbered
   /// phases, as `mpm trace` numbers them; phase 0 resets the nodal fields (GridFields::reset):
   /// 1. P2G: \f$ m_I = \sum_p N_{Ip} m_p \f$, Eq. (13), and \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p \f$
@@ -62,14 +71,15 @@ struct UpdateStressLast {
   ///
   /// `observer.after(phase, particles, grid)` is called after each phase, in the order of `phases` (USL without
   /// phase 7).
-  template <int Dim, class Observer>
+  template <class Kernels = FastKernels, int Dim, class Observer>
   void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
             Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
+    const Kernels kernels{};  // the layer of every transfer below (mpm/core/kernels.hpp)
     // 0. The nodal fields set to zero.
     grid.reset();
     observer.after(Phase::reset, particles, grid);
     // 1. P2G: lumped mass, Eq. (13), and momentum p_I^k = sum_p N_Ip m_p v_p^k.
-    nodal_mass_and_momentum(particles, stencils, grid);
+    nodal_mass_and_momentum(kernels, particles, stencils, grid);
     observer.after(Phase::mass_momentum, particles, grid);
     // 2. Essential boundary conditions on the momentum.
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
@@ -78,18 +88,18 @@ struct UpdateStressLast {
     nodal_velocity_from_momentum(grid);
     observer.after(Phase::velocity_k, particles, grid);
     // 4. Nodal forces from the stress of the step before, Eqs. (14)-(15); the fixed components become reactions.
-    add_nodal_forces(particles, stencils, body_force, grid);
+    add_nodal_forces(kernels, particles, stencils, body_force, grid);
     store_reactions(model.fixed, grid.nodal_force, grid.reaction);
     observer.after(Phase::forces, particles, grid);
     // 5. Momentum balance, Eq. (12): p_I^{k+1} = p_I^k + dt f_I.
     update_nodal_momentum(dt, grid);
     observer.after(Phase::momentum_balance, particles, grid);
     // 6. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
-    forward_euler_particle_update(stencils, grid, dt, position_velocity, particles, flip_fraction);
+    forward_euler_particle_update(kernels, stencils, grid, dt, position_velocity, particles, flip_fraction);
     observer.after(Phase::euler_update, particles, grid);
     // 7. MUSL: the new particle velocities projected to the nodes again, and held at the walls.
     if (stress_velocity == StressLastVelocity::reprojected_particles) {
-      nodal_momentum_from_particles(particles, stencils, grid);
+      nodal_momentum_from_particles(kernels, particles, stencils, grid);
       impose_fixed_velocity(model.fixed, grid.nodal_momentum);
       observer.after(Phase::reprojection, particles, grid);
     }
@@ -97,7 +107,7 @@ struct UpdateStressLast {
     nodal_velocity_from_momentum(grid);
     observer.after(Phase::velocity_k1, particles, grid);
     // 9. Update stress last: Eq. (16), Eq. (17), Eq. (3).
-    update_strain_density_stress(stencils, grid.nodal_velocity, model.materials, dt, particles);
+    update_strain_density_stress(kernels, stencils, grid.nodal_velocity, model.materials, dt, particles);
     observer.after(Phase::stress, particles, grid);
   }
 

@@ -477,6 +477,9 @@ inline const std::vector<SceneKey> all_keys = {
     key("solver.stress_update", &Scene::stress_update, "\"usf\"", "-",
         "forward Euler's stress update: usf (first, the paper's) | usl (last) | musl (last, from the particle "
         "velocities projected again); paper/11_stress_update.md"),
+    key("solver.kernels", &Scene::kernels, "\"fast\"", "-",
+        "fast (threads, component forms: mpm/fast/) | reference (the plain serial kernels of mpm/transfer/, "
+        "which the book shows; the same results to round-off)"),
     key("solver.energy_growth_limit", &RunControl::energy_growth_limit, "10.0", "-",
         "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off",
         at_least(0.0, " (0: no check)")),

@@ -28,6 +28,8 @@ namespace mpm::io {
 enum class ShapeKind { linear, ugimp, lme, bspline2, bspline3 };
 enum class IntegratorKind { fe, npc };
 enum class StressUpdate { usf, usl, musl };
+/// The layer of kernels a run takes (mpm/core/kernels.hpp): fast (mpm/fast/) or reference (mpm/transfer/).
+enum class KernelsKind { fast, reference };
 enum class ExactKind { none, dyka_bar, soil_column, vibrating_bar, manufactured_small, manufactured_large };
 enum class WallFace { xmin, xmax, ymin, ymax };
 
@@ -37,6 +39,7 @@ constexpr std::array<const char*, 0> choice_words{};
 template <> inline constexpr std::array choice_words<ShapeKind>{"linear", "ugimp", "lme", "bspline2", "bspline3"};
 template <> inline constexpr std::array choice_words<IntegratorKind>{"fe", "npc"};
 template <> inline constexpr std::array choice_words<StressUpdate>{"usf", "usl", "musl"};
+template <> inline constexpr std::array choice_words<KernelsKind>{"fast", "reference"};
 template <> inline constexpr std::array choice_words<ExactKind>{
     "none", "dyka_bar", "soil_column", "vibrating_bar", "manufactured_small", "manufactured_large"};
 template <> inline constexpr std::array choice_words<WallFace>{"xmin", "xmax", "ymin", "ymax"};
@@ -131,6 +134,7 @@ struct Scene {
   NewmarkParticleVelocity npc_velocity{};  ///< eq32 (the paper's Eq. 32) | average (Eq. 23, the Newmark average)
   double flip_fraction = 1.0;              ///< forward Euler's PIC/FLIP blend: 1 = FLIP (the paper's)
   StressUpdate stress_update{};            ///< forward Euler's stress update: usf (the paper's) | usl | musl
+  KernelsKind kernels{};                   ///< the kernels' layer: fast (default) | reference
   RunControl control;
   // [[observer]], [output]
   std::vector<ObserverSettings> observers;

@@ -4,11 +4,14 @@
 /// Contract: read nodal_mass, nodal_momentum, nodal_velocity, nodal_force and the stencils; write, node by
 /// node, the rates the particles interpolate (nodal_acceleration, moving_velocity, projected_velocity: one
 /// division by m_I per node, not per particle-node pair), then the particles' x_p, v_p (and a_p for the
-/// predictor-corrector).
+/// predictor-corrector). These are the reference kernels, plain serial loops; their fast forms, on every core, are in
+/// mpm/fast/fast_grid_to_particle.hpp.
 #pragma once
 #include <doctest/doctest.h>
 
-#include "mpm/core/parallel.hpp"
+#include <vector>
+
+#include "mpm/core/kernels.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/particles/stencils.hpp"
@@ -33,36 +36,40 @@ enum class EulerPositionVelocity {
 ///     + (1-\alpha) \sum_I N_{Ip} \frac{\mathbf p_I^{k+1}}{m_I} . \f]
 /// \f$ \alpha = 1 \f$ (the paper's scheme) is bit for bit the pure FLIP increment.
 template <int Dim>
-void forward_euler_particle_update(const Stencils<Dim>& stencils, GridFields<Dim>& grid, double dt,
+void forward_euler_particle_update(ReferenceKernels, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double dt,
                                    EulerPositionVelocity position_velocity, Particles<Dim>& particles,
                                    double flip_fraction = 1.0) {
-  // The nodes first: a_I = f_I / m_I, p_I / m_I, and the velocity that moves the particles.
-  parallel_for(grid.size(), 1, [&](int node) {
-    const bool has_mass = grid.nodal_mass[node] > 0.0;
-    grid.nodal_acceleration[node] = has_mass ? Vector<Dim>(grid.nodal_force[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
-    grid.projected_velocity[node] = has_mass ? Vector<Dim>(grid.nodal_momentum[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
-    grid.moving_velocity[node] = position_velocity == EulerPositionVelocity::updated ? grid.projected_velocity[node]
-                                 : has_mass                                         ? grid.nodal_velocity[node]
-                                                                                    : Vector<Dim>::Zero();
-  });
-  // Then the particles: sums of N_Ip times nodal values.
-  const bool blend = flip_fraction != 1.0;
-  const Vector<Dim>*nodal_acceleration = grid.nodal_acceleration.data(), *moving_velocity = grid.moving_velocity.data(),
-                    *projected_velocity = grid.projected_velocity.data();
-  parallel_for(particles.size(), stencils.capacity, [&](int p) {
+  // The nodes first (Eq. (18)'s nodal values, 0 on nodes without mass): a_I = f_I / m_I, p_I^{k+1} / m_I, and the
+  // nodal velocity that moves the particles, p_I^{k+1} / m_I (updated) or v_I^k (start).
+  for (int I = 0; I < grid.size(); ++I) {
+    const double m_I = grid.nodal_mass[I];
+    const bool has_mass = m_I > 0.0;
+    grid.nodal_acceleration[I] = has_mass ? Vector<Dim>(grid.nodal_force[I] / m_I) : Vector<Dim>::Zero();
+    grid.projected_velocity[I] = has_mass ? Vector<Dim>(grid.nodal_momentum[I] / m_I) : Vector<Dim>::Zero();
+    const Vector<Dim>& v_I_k = grid.nodal_velocity[I];
+    grid.moving_velocity[I] = position_velocity == EulerPositionVelocity::updated ? grid.projected_velocity[I]
+                              : has_mass                                         ? v_I_k
+                                                                                 : Vector<Dim>::Zero();
+  }
+  // Then the particles: Eq. (18), sums of N_Ip times nodal values, and Eqs. (19)-(22).
+  const std::vector<Vector<Dim>>& a_I = grid.nodal_acceleration;
+  const std::vector<Vector<Dim>>& v_I_moving = grid.moving_velocity;
+  const std::vector<Vector<Dim>>& v_I_k1 = grid.projected_velocity;  // p_I^{k+1} / m_I
+  for (int p = 0; p < particles.size(); ++p) {
     const ParticleStencil<Dim> stencil = stencils.of(p);
-    Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero(), updated_velocity = Vector<Dim>::Zero();
+    Vector<Dim> a_p = Vector<Dim>::Zero(), v_moving = Vector<Dim>::Zero(), v_pic = Vector<Dim>::Zero();
     for (int k = 0; k < stencil.count; ++k) {
-      acceleration += stencil.value[k] * nodal_acceleration[stencil.node[k]];
-      velocity += stencil.value[k] * moving_velocity[stencil.node[k]];
+      const int I = stencil.node[k];
+      const double N_Ip = stencil.value[k];
+      a_p += N_Ip * a_I[I];
+      v_moving += N_Ip * v_I_moving[I];
+      v_pic += N_Ip * v_I_k1[I];
     }
-    if (blend)
-      for (int k = 0; k < stencil.count; ++k) updated_velocity += stencil.value[k] * projected_velocity[stencil.node[k]];
-    const Vector<Dim> flip_velocity = particles.velocity[p] + dt * acceleration;
-    particles.velocity[p] = blend ? Vector<Dim>(flip_fraction * flip_velocity + (1.0 - flip_fraction) * updated_velocity)
-                                  : flip_velocity;
-    particles.position[p] += dt * velocity;
-  });
+    const Vector<Dim> v_p_flip = particles.velocity[p] + dt * a_p;  // v_p^k + dt sum_I N_Ip f_I / m_I
+    const Vector<Dim> v_p_blend = flip_fraction * v_p_flip + (1.0 - flip_fraction) * v_pic;  // PIC/FLIP
+    particles.velocity[p] = flip_fraction == 1.0 ? v_p_flip : v_p_blend;
+    particles.position[p] += dt * v_moving;
+  }
 }
 
 /// Which nodal velocity enters the position update Eq. (33) of the predictor-corrector (paper/09_choices.md).
@@ -89,39 +96,48 @@ enum class NewmarkParticleVelocity {
 /// with \f$ \mathbf a_p^k \f$ the acceleration the particle stored in the step before.
 /// Expects nodal_velocity = the corrected v_I^{k+1} and nodal_momentum = sum_p N_Ip m_p v_p^k.
 template <int Dim>
-void newmark_particle_update(const Stencils<Dim>& stencils, GridFields<Dim>& grid, double newmark_gamma, double dt,
-                             NewmarkPositionVelocity position_velocity, Particles<Dim>& particles,
+void newmark_particle_update(ReferenceKernels, const Stencils<Dim>& stencils, GridFields<Dim>& grid,
+                             double newmark_gamma, double dt, NewmarkPositionVelocity position_velocity,
+                             Particles<Dim>& particles,
                              NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32) {
-  // The nodes first: a_I = f_I / m_I and the velocity that moves the particles.
-  parallel_for(grid.size(), 1, [&](int node) {
-    if (grid.nodal_mass[node] <= 0.0) {
-      grid.nodal_acceleration[node].setZero();
-      grid.moving_velocity[node].setZero();
-      return;
+  // The nodes first (0 on nodes without mass): a_I^{k+1} = f_I^{k+1} / m_I and the nodal velocity that moves the
+  // particles: v_I^k = p_I^k / m_I (projected), v_I^{k+1} (corrected) or v_I^{pred} = v_I^{k+1} - gamma dt a_I^{k+1}.
+  for (int I = 0; I < grid.size(); ++I) {
+    const double m_I = grid.nodal_mass[I];
+    if (m_I <= 0.0) {
+      grid.nodal_acceleration[I].setZero();
+      grid.moving_velocity[I].setZero();
+      continue;
     }
-    const Vector<Dim> nodal_acceleration_I = grid.nodal_force[node] / grid.nodal_mass[node];
-    Vector<Dim> nodal_velocity_I = grid.nodal_velocity[node];
-    if (position_velocity == NewmarkPositionVelocity::predicted) nodal_velocity_I -= newmark_gamma * dt * nodal_acceleration_I;
-    if (position_velocity == NewmarkPositionVelocity::projected) nodal_velocity_I = grid.nodal_momentum[node] / grid.nodal_mass[node];
-    grid.nodal_acceleration[node] = nodal_acceleration_I;
-    grid.moving_velocity[node] = nodal_velocity_I;
-  });
-  // Then the particles: sums of N_Ip times nodal values.
-  const Vector<Dim>*nodal_acceleration = grid.nodal_acceleration.data(), *moving_velocity = grid.moving_velocity.data();
-  parallel_for(particles.size(), stencils.capacity, [&](int p) {
+    const Vector<Dim> a_I_k1 = grid.nodal_force[I] / m_I;
+    const Vector<Dim>& v_I_k1 = grid.nodal_velocity[I];
+    grid.nodal_acceleration[I] = a_I_k1;
+    switch (position_velocity) {
+      case NewmarkPositionVelocity::projected: grid.moving_velocity[I] = grid.nodal_momentum[I] / m_I; break;
+      case NewmarkPositionVelocity::corrected: grid.moving_velocity[I] = v_I_k1; break;
+      case NewmarkPositionVelocity::predicted: grid.moving_velocity[I] = v_I_k1 - newmark_gamma * dt * a_I_k1; break;
+    }
+  }
+  // Then the particles: Eq. (31) for a_p^{k+1}, Eq. (32) (or Eq. (23)) for v_p^{k+1}, Eq. (33) for x_p^{k+1}.
+  const std::vector<Vector<Dim>>& a_I_k1 = grid.nodal_acceleration;
+  const std::vector<Vector<Dim>>& v_I_moving = grid.moving_velocity;
+  for (int p = 0; p < particles.size(); ++p) {
     const ParticleStencil<Dim> stencil = stencils.of(p);
-    Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
+    Vector<Dim> a_p_k1 = Vector<Dim>::Zero(), v_moving = Vector<Dim>::Zero();
     for (int k = 0; k < stencil.count; ++k) {
-      acceleration += stencil.value[k] * nodal_acceleration[stencil.node[k]];
-      velocity += stencil.value[k] * moving_velocity[stencil.node[k]];
+      const int I = stencil.node[k];
+      const double N_Ip = stencil.value[k];
+      a_p_k1 += N_Ip * a_I_k1[I];
+      v_moving += N_Ip * v_I_moving[I];
     }
-    const Vector<Dim> old_acceleration = particles.acceleration[p];
-    particles.acceleration[p] = acceleration;
-    particles.velocity[p] += particle_velocity == NewmarkParticleVelocity::eq32
-                                 ? Vector<Dim>(dt * acceleration)
-                                 : Vector<Dim>(dt * ((1.0 - newmark_gamma) * old_acceleration + newmark_gamma * acceleration));
-    particles.position[p] += dt * velocity + 0.5 * dt * dt * acceleration;
-  });
+    const Vector<Dim> a_p_k = particles.acceleration[p];
+    particles.acceleration[p] = a_p_k1;
+    if (particle_velocity == NewmarkParticleVelocity::eq32)
+      particles.velocity[p] += dt * a_p_k1;
+    else
+      particles.velocity[p] += dt * ((1.0 - newmark_gamma) * a_p_k + newmark_gamma * a_p_k1);
+    particles.position[p] += dt * v_moving + 0.5 * dt * dt * a_p_k1;
+  }
 }
 
 TEST_CASE("Eq. (18), Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (31), Eq. (32), Eq. (33): G2P on the worked example by hand") {
@@ -132,7 +148,7 @@ TEST_CASE("Eq. (18), Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (31), Eq. (32),
   const double dt = example.dt;
   testing::worked_example_grid(grid, false);
   Particles<1> euler = example.particles;
-  forward_euler_particle_update(example.stencils, grid, dt, EulerPositionVelocity::updated, euler);
+  forward_euler_particle_update(ReferenceKernels{}, example.stencils, grid, dt, EulerPositionVelocity::updated, euler);
   // p_I^{k+1} / m_I = (2.6, 1.72, 0):
   // x = (0.25 + 0.2 (0.75 * 2.6 + 0.25 * 1.72), 1.5 + 0.2 (0.5 * 1.72)) = (0.726, 1.672)
   CHECK(euler.velocity[0][0] == doctest::Approx(2.88));
@@ -140,14 +156,15 @@ TEST_CASE("Eq. (18), Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (31), Eq. (32),
   CHECK(euler.position[0][0] == doctest::Approx(0.726));
   CHECK(euler.position[1][0] == doctest::Approx(1.672));
   Particles<1> literal = example.particles;
-  forward_euler_particle_update(example.stencils, grid, dt, EulerPositionVelocity::start, literal);
+  forward_euler_particle_update(ReferenceKernels{}, example.stencils, grid, dt, EulerPositionVelocity::start, literal);
   // v_I^k = (1, -1, 0): x = (0.25 + 0.2 (0.75 - 0.25), 1.5 + 0.2 (-0.5)) = (0.35, 1.4)
   CHECK(literal.position[0][0] == doctest::Approx(0.35));
   CHECK(literal.position[1][0] == doctest::Approx(1.4));
 
   testing::worked_example_grid(grid, true);
   Particles<1> newmark = example.particles;
-  newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::corrected, newmark);
+  newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::corrected,
+                          newmark);
   // corrected v_I = (1.8, 0.36, 0): x0 = 0.25 + 0.2 (1.35 + 0.09) + 0.02 (9.4) = 0.726,
   // x1 = 1.5 + 0.2 (0.18) + 0.02 (6.8) = 1.672
   CHECK(newmark.acceleration[0][0] == doctest::Approx(9.4));
@@ -157,11 +174,13 @@ TEST_CASE("Eq. (18), Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (31), Eq. (32),
   CHECK(newmark.position[0][0] == doctest::Approx(0.726));
   CHECK(newmark.position[1][0] == doctest::Approx(1.672));
   Particles<1> predicted = example.particles;
-  newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::predicted, predicted);
+  newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::predicted,
+                          predicted);
   // v_I - gamma dt a_I = (1.8 - 0.8, 0.36 - 1.36, 0) = (1, -1, 0): x0 = 0.25 + 0.2 (0.5) + 0.188 = 0.538
   CHECK(predicted.position[0][0] == doctest::Approx(0.538));
   Particles<1> projected = example.particles;
-  newmark_particle_update(example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::projected, projected);
+  newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.5, dt, NewmarkPositionVelocity::projected,
+                          projected);
   // p_I / m_I = (1, -1, 0): x = (0.25 + 0.1 + 0.188, 1.5 - 0.1 + 0.136) = (0.538, 1.536)
   CHECK(projected.position[0][0] == doctest::Approx(0.538));
   CHECK(projected.position[1][0] == doctest::Approx(1.536));
@@ -179,9 +198,9 @@ TEST_CASE("Eq. (30), Eq. (33): the position update as printed reads no corrected
   for (const auto position_velocity : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected}) {
     Particles<1> before = example.particles, after = example.particles;
     grid.nodal_velocity = predictor;
-    newmark_particle_update(example.stencils, grid, 0.5, example.dt, position_velocity, before);
+    newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.5, example.dt, position_velocity, before);
     grid.nodal_velocity = corrected;
-    newmark_particle_update(example.stencils, grid, 0.5, example.dt, position_velocity, after);
+    newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.5, example.dt, position_velocity, after);
     CHECK(before.velocity == after.velocity);
     CHECK(before.acceleration == after.acceleration);
     if (position_velocity == NewmarkPositionVelocity::projected) {
@@ -202,19 +221,21 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (31), Eq. (33): G2P skips the nodes without m
   grid.nodal_mass[2] = 0.0;
   grid.nodal_force[2] = grid.nodal_velocity[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
   Particles<1> updated = example.particles, start = example.particles, blend = example.particles;
-  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::updated, updated);
+  forward_euler_particle_update(ReferenceKernels{}, example.stencils, grid, 0.2, EulerPositionVelocity::updated,
+                                updated);
   CHECK(updated.velocity[1][0] == doctest::Approx(-0.14));
   CHECK(updated.position[1][0] == doctest::Approx(1.672));  // 1.5 + 0.2 (0.5 * 4.3 / 2.5)
-  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::start, start);
+  forward_euler_particle_update(ReferenceKernels{}, example.stencils, grid, 0.2, EulerPositionVelocity::start, start);
   CHECK(start.position[1][0] == doctest::Approx(1.4));      // 1.5 + 0.2 (0.5 * -1)
-  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::start, blend, 0.5);
+  forward_euler_particle_update(ReferenceKernels{}, example.stencils, grid, 0.2, EulerPositionVelocity::start, blend,
+                                0.5);
   CHECK(blend.velocity[1][0] == doctest::Approx(0.36));     // 0.5 (-0.14) + 0.5 (0.5 * 1.72)
   testing::worked_example_grid(grid, true);
   grid.nodal_mass[2] = 0.0;
   grid.nodal_force[2] = grid.nodal_velocity[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
   for (const auto position_velocity : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected, NewmarkPositionVelocity::predicted}) {
     Particles<1> newmark = example.particles;
-    newmark_particle_update(example.stencils, grid, 0.6, 0.2, position_velocity, newmark);
+    newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.6, 0.2, position_velocity, newmark);
     CHECK(newmark.acceleration[1][0] == doctest::Approx(6.8));
     CHECK(newmark.velocity[1][0] == doctest::Approx(-0.14));
     // projected: 0.5 * -2.5 / 2.5 = -0.5; corrected: 0.5 * 0.36 = 0.18; predicted: 0.5 (0.36 - 0.12 * 13.6) = -0.636;
@@ -233,14 +254,16 @@ TEST_CASE("Eq. (23): the Newmark average of the particle velocity by hand, at ga
   auto& grid = example.fields;
   testing::worked_example_grid(grid, true);
   Particles<1> first = example.particles;
-  newmark_particle_update(example.stencils, grid, 0.6, example.dt, NewmarkPositionVelocity::projected, first,
+  newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.6, example.dt,
+                          NewmarkPositionVelocity::projected, first,
                           NewmarkParticleVelocity::average);
   CHECK(first.velocity[0][0] == doctest::Approx(2.128));
   CHECK(first.acceleration[0][0] == doctest::Approx(9.4));
   // With a_p^k = -3 set by hand (a check of the old acceleration's weight): v = 1 + 0.2 (0.4 (-3) + 0.6 (9.4)) = 1.888.
   Particles<1> particles = example.particles;
   particles.acceleration[0] = Vector<1>(-3.0);
-  newmark_particle_update(example.stencils, grid, 0.6, example.dt, NewmarkPositionVelocity::projected, particles,
+  newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.6, example.dt,
+                          NewmarkPositionVelocity::projected, particles,
                           NewmarkParticleVelocity::average);
   CHECK(particles.velocity[0][0] == doctest::Approx(1.888));
   CHECK(particles.acceleration[0][0] == doctest::Approx(9.4));
@@ -251,8 +274,10 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): the PIC/FLIP blend of forward
   auto& grid = example.fields;
   testing::worked_example_grid(grid, false);  // p_I^{k+1} / m_I = (2.6, 1.72, 0)
   Particles<1> flip = example.particles, blend = example.particles;
-  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::updated, flip, 1.0);
-  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::updated, blend, 0.8);
+  forward_euler_particle_update(ReferenceKernels{}, example.stencils, grid, 0.2, EulerPositionVelocity::updated, flip,
+                                1.0);
+  forward_euler_particle_update(ReferenceKernels{}, example.stencils, grid, 0.2, EulerPositionVelocity::updated,
+                                blend, 0.8);
   // p0: FLIP 2.88 (above); PIC sum N p_I/m_I = 0.75 * 2.6 + 0.25 * 1.72 = 2.38; blend 0.8 * 2.88 + 0.2 * 2.38 = 2.78
   CHECK(flip.velocity[0][0] == doctest::Approx(2.88));
   CHECK(blend.velocity[0][0] == doctest::Approx(2.78));
@@ -260,7 +285,8 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): the PIC/FLIP blend of forward
   // the PIC part takes the updated p_I / m_I whatever moves the particle: with the literal Eqs. (20)-(21)
   // (positions from v_I^k = 1, -1, 0) the velocity is still 0.8 * 2.88 + 0.2 * 2.38
   Particles<1> literal = example.particles;
-  forward_euler_particle_update(example.stencils, grid, 0.2, EulerPositionVelocity::start, literal, 0.8);
+  forward_euler_particle_update(ReferenceKernels{}, example.stencils, grid, 0.2, EulerPositionVelocity::start,
+                                literal, 0.8);
   CHECK(literal.velocity[0][0] == doctest::Approx(2.78));
 }
 
@@ -272,7 +298,8 @@ TEST_CASE("Eq. (33): the position update with the predicted nodal velocity at ga
   auto& grid = example.fields;
   testing::worked_example_grid(grid, true);
   grid.nodal_velocity = {Vector<1>(1.96), Vector<1>(0.632), Vector<1>(0.0)};
-  newmark_particle_update(example.stencils, grid, 0.6, example.dt, NewmarkPositionVelocity::predicted,
+  newmark_particle_update(ReferenceKernels{}, example.stencils, grid, 0.6, example.dt,
+                          NewmarkPositionVelocity::predicted,
                           example.particles);
   CHECK(example.particles.position[0][0] == doctest::Approx(0.538));
 }

@@ -10,11 +10,14 @@
 /// term into \f$ \sum_p V_p \boldsymbol\sigma_p : \boldsymbol\varepsilon^\psi_p \f$ (Eq. 14) and Eq. (10) the body
 /// force into \f$ \sum_p m_p \mathbf b\cdot\mathbf u^\psi_p \f$ (Eq. 15).
 ///
-/// Contract: read the particles' m_p, rho_p, sigma_p and the stencils; add into nodal_force.
+/// Contract: read the particles' m_p, rho_p, sigma_p and the stencils; add into nodal_force. This is the reference
+/// kernel, a plain serial loop; its fast form is in mpm/fast/fast_nodal_forces.hpp.
 #pragma once
 #include <doctest/doctest.h>
 
-#include "mpm/core/parallel.hpp"
+#include <vector>
+
+#include "mpm/core/kernels.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/loading/body_force.hpp"
 #include "mpm/particles/particles.hpp"
@@ -23,7 +26,8 @@
 
 namespace mpm {
 
-/// Eqs. (14)-(15), in one pass over the stencils: the internal force of the stresses, Eq. (14),
+/// Eqs. (14)-(15), in one pass over the particles and their stencil nodes: the internal force of the stresses,
+/// Eq. (14),
 /// \f$ \mathbf f_I^{int} = -\sum_p \boldsymbol\sigma_p \nabla N_{Ip}\, \frac{m_p}{\rho_p} \f$, with the particle
 /// volume V_p = m_p / rho_p of the current density, and the body-force part of Eq. (15),
 /// \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b_p \f$, with b_p the body force per unit mass at each
@@ -31,28 +35,20 @@ namespace mpm {
 /// not implemented):
 /// \f[ \mathbf f_I = \sum_p \left( N_{Ip}\, m_p \mathbf b_p - \boldsymbol\sigma_p \nabla N_{Ip}\, V_p \right) . \f]
 template <int Dim>
-void add_nodal_forces(const Particles<Dim>& particles, const Stencils<Dim>& stencils,
+void add_nodal_forces(ReferenceKernels, const Particles<Dim>& particles, const Stencils<Dim>& stencils,
                       const ParticleBodyForces<Dim>& body_force, GridFields<Dim>& grid) {
-  scatter_to_nodes(particles.size(), stencils.capacity, stencils.chunk_nodes, grid.nodal_force, grid.force_copies, [&](int p, Vector<Dim>* nodal_force) {
-    const Matrix<Dim> volume_stress = particles.volume(p) * particles.stress[p];
-    const Vector<Dim> weight =  // m_p b_p (per_unit_mass is not filled when every b_p is zero)
+  std::vector<Vector<Dim>>& f_I = grid.nodal_force;
+  for (int p = 0; p < particles.size(); ++p) {
+    const Matrix<Dim> V_p_sigma_p = particles.volume(p) * particles.stress[p];
+    const Vector<Dim> m_p_b_p =  // (per_unit_mass is not filled when every b_p is zero)
         body_force.all_zero ? Vector<Dim>::Zero() : Vector<Dim>(particles.mass[p] * body_force.per_unit_mass[p]);
     const ParticleStencil<Dim> stencil = stencils.of(p);
-    if constexpr (Dim == 1) {
-      for (int k = 0; k < stencil.count; ++k)
-        nodal_force[stencil.node[k]] += stencil.value[k] * weight - volume_stress * stencil.gradient[k];
-    } else {
-      // sigma is symmetric (Eq. (3) of a symmetric strain; set_initial_stress refuses any other), so in components
-      // \f$ \boldsymbol\sigma \nabla N = (\sigma_{xx}, \sigma_{yy}) \odot \nabla N + \sigma_{xy} (\partial_y N, \partial_x N) \f$:
-      // two products per node, where the matrix-vector product takes four (benchmarks/README.md).
-      const Eigen::Array2d diagonal(volume_stress(0, 0), volume_stress(1, 1));
-      const double shear = volume_stress(0, 1);
-      for (int k = 0; k < stencil.count; ++k) {
-        const Eigen::Array2d gradient = stencil.gradient[k].array();
-        nodal_force[stencil.node[k]] += stencil.value[k] * weight - (diagonal * gradient + shear * gradient.reverse()).matrix();
-      }
+    for (int k = 0; k < stencil.count; ++k) {
+      const double N_Ip = stencil.value[k];
+      const Vector<Dim>& grad_N_Ip = stencil.gradient[k];
+      f_I[stencil.node[k]] += N_Ip * m_p_b_p - V_p_sigma_p * grad_N_Ip;
     }
-  });
+  }
 }
 
 TEST_CASE("Eq. (9), Eq. (10), Eq. (14), Eq. (15): nodal forces on the worked example: the internal force by hand, the body force sums to the weight") {
@@ -60,7 +56,7 @@ TEST_CASE("Eq. (9), Eq. (10), Eq. (14), Eq. (15): nodal forces on the worked exa
   // (0.75 * 2 * 10, 0.25 * 2 * 10 + 0.5 * 4 * 10, 0.5 * 4 * 10) = (15, 25, 20), summing to (2 + 4) 10 = 60.
   testing::WorkedExample example;
   const ParticleBodyForces<1> gravity = testing::WorkedExample::body_force();
-  add_nodal_forces(example.particles, example.stencils, gravity, example.fields);
+  add_nodal_forces(ReferenceKernels{}, example.particles, example.stencils, gravity, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(15.0));
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(25.0));
   CHECK(example.fields.nodal_force[0][0] + example.fields.nodal_force[1][0] + example.fields.nodal_force[2][0] ==
@@ -77,12 +73,12 @@ TEST_CASE("Eq. (9), Eq. (10), Eq. (14), Eq. (15): nodal forces on the worked exa
   }
   example.fields.reset();
   const ParticleBodyForces<1> none{{Vector<1>(0.0), Vector<1>(0.0)}, true, true};
-  add_nodal_forces(example.particles, example.stencils, none, example.fields);
+  add_nodal_forces(ReferenceKernels{}, example.particles, example.stencils, none, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-3.0));
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(9.0));
   CHECK(example.fields.nodal_force[2][0] == doctest::Approx(-6.0));
   example.fields.reset();
-  add_nodal_forces(example.particles, example.stencils, gravity, example.fields);
+  add_nodal_forces(ReferenceKernels{}, example.particles, example.stencils, gravity, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(12.0));
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(34.0));
   CHECK(example.fields.nodal_force[2][0] == doctest::Approx(14.0));
@@ -90,7 +86,7 @@ TEST_CASE("Eq. (9), Eq. (10), Eq. (14), Eq. (15): nodal forces on the worked exa
   // plus the internal force: (1.5, 6.5, -10); the body forces still sum to sum_p m_p b_p = 6 - 8 = -2.
   example.fields.reset();
   const ParticleBodyForces<1> field{{Vector<1>(3.0), Vector<1>(-2.0)}, false, false};
-  add_nodal_forces(example.particles, example.stencils, field, example.fields);
+  add_nodal_forces(ReferenceKernels{}, example.particles, example.stencils, field, example.fields);
   CHECK(example.fields.nodal_force[0][0] == doctest::Approx(-3.0 + 4.5));
   CHECK(example.fields.nodal_force[1][0] == doctest::Approx(9.0 - 2.5));
   CHECK(example.fields.nodal_force[2][0] == doctest::Approx(-6.0 - 4.0));
@@ -112,7 +108,7 @@ TEST_CASE("Eq. (14): the internal force in 2D by hand, with a shear stress: f_I 
   compute_stencils(q4, particles.position, stencils);
   GridFields<2> fields(grid.node_count());
   const ParticleBodyForces<2> none{{Vector<2>::Zero()}, true, true};
-  add_nodal_forces(particles, stencils, none, fields);
+  add_nodal_forces(ReferenceKernels{}, particles, stencils, none, fields);
   const int lower = grid.node_index({0, 0}), upper = grid.node_index({1, 1});
   CHECK(fields.nodal_force[lower][0] == doctest::Approx(6.25).epsilon(1e-14));
   CHECK(fields.nodal_force[lower][1] == doctest::Approx(5.75).epsilon(1e-14));

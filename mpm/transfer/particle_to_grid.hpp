@@ -2,12 +2,15 @@
 /// Particle-to-grid transfers (P2G): the nodal mass, momentum and the Newmark velocity predictor.
 ///
 /// Contract: read the particles' m_p, v_p, a_p and the step's stencils; write nodal_mass,
-/// nodal_momentum, nodal_velocity. Fields are accumulated into zeroed arrays (GridFields::reset),
-/// on every core: scatter_to_nodes gives each thread its own copy of the field (mpm/core/parallel.hpp).
+/// nodal_momentum, nodal_velocity. Fields are accumulated into zeroed arrays (GridFields::reset).
+/// These are the reference kernels, plain serial loops; their fast forms, on every core, are in
+/// mpm/fast/fast_particle_to_grid.hpp.
 #pragma once
 #include <doctest/doctest.h>
 
-#include "mpm/core/parallel.hpp"
+#include <vector>
+
+#include "mpm/core/kernels.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/particles/particles.hpp"
 #include "mpm/particles/stencils.hpp"
@@ -15,43 +18,46 @@
 
 namespace mpm {
 
-/// P2G of forward Euler, in one pass over the stencils: the lumped mass of Eq. (13),
+/// P2G of forward Euler, in one pass over the particles and their stencil nodes: the lumped mass of Eq. (13),
 /// \f$ m_I = \sum_J m_{IJ} = \sum_p N_{Ip}\, m_p \f$ (by the partition of unity), and the nodal momentum of
-/// Eqs. (21)-(22), \f$ \mathbf p_I = \sum_p N_{Ip}\, m_p \mathbf v_p \f$.
+/// Eqs. (21)-(22), \f$ \mathbf p_I^k = \sum_p N_{Ip}\, m_p \mathbf v_p^k \f$. Adds into the zeroed fields.
 template <int Dim>
-void nodal_mass_and_momentum(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  scatter_to_nodes(
-      particles.size(), stencils.capacity, stencils.chunk_nodes,
-      [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum) {
-        const ParticleStencil<Dim> stencil = stencils.of(p);
-        const double mass = particles.mass[p];
-        const Vector<Dim> velocity = particles.velocity[p];
-        for (int k = 0; k < stencil.count; ++k) {
-          const double weighted_mass = stencil.value[k] * mass;  // N_Ip m_p
-          nodal_mass[stencil.node[k]] += weighted_mass;
-          nodal_momentum[stencil.node[k]] += weighted_mass * velocity;
-        }
-      },
-      ScatterTarget<double>{grid.nodal_mass, grid.mass_copies},
-      ScatterTarget<Vector<Dim>>{grid.nodal_momentum, grid.momentum_copies});
-}
-
-/// The nodal momentum alone, projected afresh from the particles' current velocities:
-/// \f$ \mathbf p_I = \sum_p N_{Ip}\, m_p \mathbf v_p \f$ (Eqs. (21)-(22)), overwriting what nodal_momentum held. MUSL
-/// projects the updated particle velocities again with it (mpm/integrators/update_stress_last.hpp).
-template <int Dim>
-void nodal_momentum_from_particles(const Particles<Dim>& particles, const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  for (Vector<Dim>& momentum : grid.nodal_momentum) momentum.setZero();
-  scatter_to_nodes(particles.size(), stencils.capacity, stencils.chunk_nodes, grid.nodal_momentum, grid.momentum_copies,
-                   [&](int p, Vector<Dim>* nodal_momentum) {
+void nodal_mass_and_momentum(ReferenceKernels, const Particles<Dim>& particles, const Stencils<Dim>& stencils,
+                             GridFields<Dim>& grid) {
+  std::vector<double>& m_I = grid.nodal_mass;
+  std::vector<Vector<Dim>>& p_I_k = grid.nodal_momentum;
+  for (int p = 0; p < particles.size(); ++p) {
+    const double m_p = particles.mass[p];
+    const Vector<Dim>& v_p_k = particles.velocity[p];
     const ParticleStencil<Dim> stencil = stencils.of(p);
-    const double mass = particles.mass[p];
-    const Vector<Dim> velocity = particles.velocity[p];
-    for (int k = 0; k < stencil.count; ++k) nodal_momentum[stencil.node[k]] += stencil.value[k] * mass * velocity;
-  });
+    for (int k = 0; k < stencil.count; ++k) {
+      const int I = stencil.node[k];
+      const double N_Ip = stencil.value[k];
+      m_I[I] += N_Ip * m_p;
+      p_I_k[I] += N_Ip * m_p * v_p_k;
+    }
+  }
 }
 
-/// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere.
+/// The nodal momentum alone, projected afresh from the particles' updated velocities:
+/// \f$ \mathbf p_I^{k+1} = \sum_p N_{Ip}\, m_p \mathbf v_p^{k+1} \f$ (Eqs. (21)-(22)), overwriting what
+/// nodal_momentum held. MUSL projects the updated particle velocities again with it
+/// (mpm/integrators/update_stress_last.hpp).
+template <int Dim>
+void nodal_momentum_from_particles(ReferenceKernels, const Particles<Dim>& particles, const Stencils<Dim>& stencils,
+                                   GridFields<Dim>& grid) {
+  std::vector<Vector<Dim>>& p_I_k1 = grid.nodal_momentum;
+  for (Vector<Dim>& momentum : p_I_k1) momentum.setZero();
+  for (int p = 0; p < particles.size(); ++p) {
+    const double m_p = particles.mass[p];
+    const Vector<Dim>& v_p_k1 = particles.velocity[p];
+    const ParticleStencil<Dim> stencil = stencils.of(p);
+    for (int k = 0; k < stencil.count; ++k) p_I_k1[stencil.node[k]] += stencil.value[k] * m_p * v_p_k1;
+  }
+}
+
+/// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere (one kernel for both layers:
+/// a loop over the nodes, no particles).
 template <int Dim>
 void nodal_velocity_from_momentum(GridFields<Dim>& grid) {
   for (int node = 0; node < grid.size(); ++node)
@@ -60,36 +66,37 @@ void nodal_velocity_from_momentum(GridFields<Dim>& grid) {
                                     : Vector<Dim>::Zero();
 }
 
-/// P2G of the predictor-corrector, in one pass over the stencils: the lumped mass of Eq. (13) and
-/// Eqs. (27)-(29), the Newmark velocity predictor built by mass-weighted projection: Eq. (26)'s
+/// P2G of the predictor-corrector, in one pass over the particles and their stencil nodes: the lumped mass of
+/// Eq. (13) and Eqs. (27)-(29), the Newmark velocity predictor built by mass-weighted projection: Eq. (26)'s
 /// \f$ \mathbf v_I^k + (1-\gamma)\Delta t\, \mathbf a_I^k \f$ with both nodal terms projected from the particles
 /// by Eq. (27), which is Eq. (28), gathered into
-/// \f[ \mathbf v_I^{pred} = \frac{1}{m_I}\sum_p N_{Ip}\, m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\, \mathbf a_p^k\right) . \f]
-/// Also leaves \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p^k \f$ in nodal_momentum (the projected
-/// velocity p_I/m_I of the literal reading of Eq. (33)).
+/// \f[ \mathbf v_I^{pred} = \frac{1}{m_I}\sum_p N_{Ip}\, m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\,
+///     \mathbf a_p^k\right) . \f]
+/// Also leaves \f$ \mathbf p_I^k = \sum_p N_{Ip} m_p \mathbf v_p^k \f$ in nodal_momentum (the projected
+/// velocity p_I^k/m_I of the literal reading of Eq. (33)). Adds into the zeroed fields.
 template <int Dim>
-void nodal_mass_and_velocity_predictor(const Particles<Dim>& particles, const Stencils<Dim>& stencils, double newmark_gamma,
-                                       double dt, GridFields<Dim>& grid) {
-  scatter_to_nodes(
-      particles.size(), stencils.capacity, stencils.chunk_nodes,
-      [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum, Vector<Dim>* nodal_velocity) {
-        const ParticleStencil<Dim> stencil = stencils.of(p);
-        const double mass = particles.mass[p];
-        const Vector<Dim> momentum = mass * particles.velocity[p];
-        const Vector<Dim> predicted = momentum + (1.0 - newmark_gamma) * dt * mass * particles.acceleration[p];
-        for (int k = 0; k < stencil.count; ++k) {
-          const int node = stencil.node[k];
-          nodal_mass[node] += stencil.value[k] * mass;
-          nodal_momentum[node] += stencil.value[k] * momentum;
-          nodal_velocity[node] += stencil.value[k] * predicted;  // divided by m_I below
-        }
-      },
-      ScatterTarget<double>{grid.nodal_mass, grid.mass_copies},
-      ScatterTarget<Vector<Dim>>{grid.nodal_momentum, grid.momentum_copies},
-      ScatterTarget<Vector<Dim>>{grid.nodal_velocity, grid.velocity_copies});
-  for (int node = 0; node < grid.size(); ++node)
-    grid.nodal_velocity[node] = grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_velocity[node] / grid.nodal_mass[node])
-                                                            : Vector<Dim>::Zero();
+void nodal_mass_and_velocity_predictor(ReferenceKernels, const Particles<Dim>& particles,
+                                       const Stencils<Dim>& stencils, double newmark_gamma, double dt,
+                                       GridFields<Dim>& grid) {
+  std::vector<double>& m_I = grid.nodal_mass;
+  std::vector<Vector<Dim>>& p_I_k = grid.nodal_momentum;
+  std::vector<Vector<Dim>>& v_I_pred = grid.nodal_velocity;
+  for (int p = 0; p < particles.size(); ++p) {
+    const double m_p = particles.mass[p];
+    const Vector<Dim>& v_p_k = particles.velocity[p];
+    const Vector<Dim>& a_p_k = particles.acceleration[p];
+    const Vector<Dim> predicted_momentum = m_p * v_p_k + (1.0 - newmark_gamma) * dt * m_p * a_p_k;
+    const ParticleStencil<Dim> stencil = stencils.of(p);
+    for (int k = 0; k < stencil.count; ++k) {
+      const int I = stencil.node[k];
+      const double N_Ip = stencil.value[k];
+      m_I[I] += N_Ip * m_p;
+      p_I_k[I] += N_Ip * (m_p * v_p_k);
+      v_I_pred[I] += N_Ip * predicted_momentum;  // divided by m_I below
+    }
+  }
+  for (int I = 0; I < grid.size(); ++I)
+    v_I_pred[I] = m_I[I] > 0.0 ? Vector<Dim>(v_I_pred[I] / m_I[I]) : Vector<Dim>::Zero();
 }
 
 TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), Eq. (29): P2G on the worked example: nodal mass, momentum, velocity and predictor by hand") {
@@ -98,7 +105,7 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   // so v_I = (1, -1, -1.5) before the wall holds node 2.
   testing::WorkedExample example;
   auto& grid = example.fields;
-  nodal_mass_and_momentum(example.particles, example.stencils, grid);
+  nodal_mass_and_momentum(ReferenceKernels{}, example.particles, example.stencils, grid);
   CHECK(grid.nodal_mass[0] == doctest::Approx(1.5));
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
   CHECK(grid.nodal_mass[2] == doctest::Approx(2.0));
@@ -109,7 +116,7 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-1.5));
   // The momentum alone, projected afresh over whatever the field held (MUSL's second projection): the same p_I.
   for (auto& momentum : grid.nodal_momentum) momentum.setConstant(99.0);
-  nodal_momentum_from_particles(example.particles, example.stencils, grid);
+  nodal_momentum_from_particles(ReferenceKernels{}, example.particles, example.stencils, grid);
   CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.5));
   CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
   CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-3.0));
@@ -117,14 +124,14 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   // The predictor of the first step: a_p = 0 at t = 0, so v_I^pred is the projected p_I / m_I, bit for bit.
   const std::vector<Vector<1>> projected = grid.nodal_velocity;
   grid.reset();
-  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.5, example.dt, grid);
+  nodal_mass_and_velocity_predictor(ReferenceKernels{}, example.particles, example.stencils, 0.5, example.dt, grid);
   for (int node = 0; node < 3; ++node) CHECK(grid.nodal_velocity[node][0] == projected[node][0]);
   // With the accelerations the first step leaves, a_p = (9.4, 6.8) (Eq. (31)), on the particles as they are at
   // t = 0 (a check of the weights, not a state of the run): (1 - gamma) dt = 0.1, v_p + 0.1 a_p = (1.94, -0.82);
   // node 1 gets (0.25 * 2 * 1.94 + 0.5 * 4 * -0.82) / 2.5 = (0.97 - 1.64) / 2.5 = -0.268.
   example.particles.acceleration = {Vector<1>(9.4), Vector<1>(6.8)};
   grid.reset();
-  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.5, example.dt, grid);
+  nodal_mass_and_velocity_predictor(ReferenceKernels{}, example.particles, example.stencils, 0.5, example.dt, grid);
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
   CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.94));
   CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.268));
@@ -140,7 +147,7 @@ TEST_CASE("Eq. (26), Eq. (28), Eq. (29): the predictor at gamma = 0.6 by hand: (
   testing::WorkedExample example;
   example.particles.acceleration = {Vector<1>(9.4), Vector<1>(6.8)};
   auto& grid = example.fields;
-  nodal_mass_and_velocity_predictor(example.particles, example.stencils, 0.6, example.dt, grid);
+  nodal_mass_and_velocity_predictor(ReferenceKernels{}, example.particles, example.stencils, 0.6, example.dt, grid);
   CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.752));
   CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.4144));
   CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-0.956));

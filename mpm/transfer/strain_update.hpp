@@ -11,13 +11,16 @@
 /// soil block is such a confined column: its settlement converges to the finite-strain column, not the
 /// small-strain one (report).
 ///
-/// Contract: read nodal_velocity and the stencils; write the particles' epsilon_p, rho_p, sigma_p.
+/// Contract: read nodal_velocity and the stencils; write the particles' epsilon_p, rho_p, sigma_p. These are the
+/// reference kernels, plain serial loops; their fast forms are in mpm/fast/fast_strain_update.hpp.
 #pragma once
 #include <doctest/doctest.h>
 
 #include <cmath>
 
-#include "mpm/core/parallel.hpp"
+#include <vector>
+
+#include "mpm/core/kernels.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/material/linear_elastic.hpp"
 #include "mpm/particles/particles.hpp"
@@ -26,29 +29,16 @@
 
 namespace mpm {
 
-/// Eq. (16): \f$ \dot{\boldsymbol\varepsilon}_p = \tfrac12 \sum_I \left[\nabla N_{Ip} \otimes \mathbf v_I + \mathbf v_I \otimes \nabla N_{Ip}\right] \f$.
+/// Eq. (16), the rate of deformation of particle p from the nodal velocities \f$ \mathbf v_I \f$:
+/// \f[ \dot{\boldsymbol\varepsilon}_p = \tfrac12 \sum_I \left[\nabla N_{Ip} \otimes \mathbf v_I
+///     + \mathbf v_I \otimes \nabla N_{Ip}\right] , \f]
+/// the symmetric part of the velocity gradient \f$ \sum_I \mathbf v_I \otimes \nabla N_{Ip} \f$.
 template <int Dim>
-Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<Vector<Dim>>& nodal_velocity) {
+Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<Vector<Dim>>& v_I) {
   const ParticleStencil<Dim> stencil = stencils.of(p);
-  const Vector<Dim>* velocity = nodal_velocity.data();
-  if constexpr (Dim == 1) {
-    return stencil_sum<Matrix<1>>(stencil, [&](int k) { return velocity[stencil.node[k]] * stencil.gradient[k].transpose(); });
-  } else {
-    // In components: \f$ \dot\varepsilon_{aa} = \sum_I v_{Ia}\, \partial_a N_I \f$ and
-    // \f$ \dot\varepsilon_{xy} = \tfrac12 \sum_I (v_{Iy}\, \partial_x N_I + v_{Ix}\, \partial_y N_I) \f$: the products
-    // \f$ \nabla N \odot \mathbf v \f$ and \f$ \nabla N \odot (v_y, v_x) \f$: two products per node, where the full
-    // velocity gradient \f$ \sum_I \mathbf v_I \otimes \nabla N_I \f$ takes four (benchmarks/README.md).
-    Eigen::Array2d diagonal = Eigen::Array2d::Zero(), crossed = Eigen::Array2d::Zero();
-    for (int k = 0; k < stencil.count; ++k) {
-      const Eigen::Array2d gradient = stencil.gradient[k].array(), v = velocity[stencil.node[k]].array();
-      diagonal += gradient * v;
-      crossed += gradient * v.reverse();
-    }
-    Matrix<2> rate;
-    rate(0, 0) = diagonal[0], rate(1, 1) = diagonal[1];
-    rate(0, 1) = rate(1, 0) = 0.5 * (crossed[0] + crossed[1]);
-    return rate;
-  }
+  Matrix<Dim> velocity_gradient = Matrix<Dim>::Zero();
+  for (int k = 0; k < stencil.count; ++k) velocity_gradient += v_I[stencil.node[k]] * stencil.gradient[k].transpose();
+  return 0.5 * (velocity_gradient + velocity_gradient.transpose());
 }
 
 /// Eq. (17) discretised as the authors do (paper/09_choices.md, 'The density update'): \f$ \rho_p^{k+1} = \rho_p^k / (1 + \Delta t\,\mathrm{tr}\,\dot{\boldsymbol\varepsilon}_p) \f$.
@@ -56,20 +46,23 @@ inline double updated_density(double density, double dt, double volumetric_strai
   return density / (1.0 + dt * volumetric_strain_rate);
 }
 
-/// Forward Euler's phase 4, the predictor-corrector's phase 3:
-/// \f$ \boldsymbol\varepsilon_p \mathrel{+}= \Delta t\,\dot{\boldsymbol\varepsilon}_p \f$ (Eq. 16),
-/// the density by Eq. (17), and the stress by Hooke's law, Eq. (3), of the particle's own material.
+/// Forward Euler's phase 4, the predictor-corrector's phase 3, particle by particle: the strain rate of Eq. (16)
+/// from the nodal velocity v_I the integrator passes (\f$ \mathbf v_I^k \f$, \f$ \mathbf v_I^{pred} \f$ or
+/// \f$ \mathbf v_I^{k+1} \f$), the strain \f$ \boldsymbol\varepsilon_p^{k+1} = \boldsymbol\varepsilon_p^k +
+/// \Delta t\,\dot{\boldsymbol\varepsilon}_p \f$, the density by Eq. (17), \f$ \rho_p^{k+1} = \rho_p^k /
+/// (1 + \Delta t\,\mathrm{tr}\,\dot{\boldsymbol\varepsilon}_p) \f$, and the stress by Hooke's law, Eq. (3),
+/// \f$ \boldsymbol\sigma_p^{k+1} = \mathbf D\, \boldsymbol\varepsilon_p^{k+1} \f$ of the particle's own material.
 template <int Dim>
-void update_strain_density_stress(const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& nodal_velocity,
+void update_strain_density_stress(ReferenceKernels, const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& v_I,
                                   const std::vector<LinearElastic>& materials, double dt, Particles<Dim>& particles) {
-  parallel_for(particles.size(), stencils.capacity, [&](int p) {
+  for (int p = 0; p < particles.size(); ++p) {
     const LinearElastic& material = materials[particles.material[p]];
-    const Matrix<Dim> rate = strain_rate(stencils, p, nodal_velocity);
+    const Matrix<Dim> rate = strain_rate(stencils, p, v_I);
     particles.strain[p] += dt * rate;
     particles.density[p] = updated_density(particles.density[p], dt, rate.trace());
     particles.stress[p] = material.stress<Dim>(particles.strain[p]);
     particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
-  });
+  }
 }
 
 TEST_CASE("Eq. (3): each particle's stress by its own material: two bodies, E = 25 and 75 Pa, the same strain") {
@@ -79,7 +72,8 @@ TEST_CASE("Eq. (3): each particle's stress by its own material: two bodies, E = 
   example.particles.material[1] = 1;
   const std::vector<Vector<1>> nodal_velocity{Vector<1>(1.0), Vector<1>(-1.0), Vector<1>(0.0)};
   const std::vector<LinearElastic> materials{LinearElastic{25.0, 0.0, 4.0}, LinearElastic{75.0, 0.0, 4.0}};
-  update_strain_density_stress(example.stencils, nodal_velocity, materials, example.dt, example.particles);
+  update_strain_density_stress(ReferenceKernels{}, example.stencils, nodal_velocity, materials, example.dt,
+                               example.particles);
   CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-10.0));
   CHECK(example.particles.stress[1](0, 0) == doctest::Approx(15.0));
 }
@@ -93,7 +87,8 @@ TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density a
   CHECK(strain_rate(example.stencils, 0, nodal_velocity)(0, 0) == doctest::Approx(-2.0));
   CHECK(strain_rate(example.stencils, 1, nodal_velocity)(0, 0) == doctest::Approx(1.0));
   const std::vector<LinearElastic> material{LinearElastic{example.young_modulus, 0.0, example.density}};
-  update_strain_density_stress(example.stencils, nodal_velocity, material, example.dt, example.particles);
+  update_strain_density_stress(ReferenceKernels{}, example.stencils, nodal_velocity, material, example.dt,
+                               example.particles);
   CHECK(example.particles.strain[0](0, 0) == doctest::Approx(-0.4));
   CHECK(example.particles.strain[1](0, 0) == doctest::Approx(0.2));
   CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-10.0));
@@ -104,7 +99,8 @@ TEST_CASE("Eq. (16), Eq. (17), Eq. (1), Eq. (4), Eq. (3): strain rate, density a
   CHECK(example.particles.volume(1) == doctest::Approx(1.2));
   // The same rates once more: the strain accumulates (-0.8, 0.4), the stress is E times the total strain (-20, 10),
   // the density is divided again: 20/3 / 0.6 = 100/9.
-  update_strain_density_stress(example.stencils, nodal_velocity, material, example.dt, example.particles);
+  update_strain_density_stress(ReferenceKernels{}, example.stencils, nodal_velocity, material, example.dt,
+                               example.particles);
   CHECK(example.particles.strain[0](0, 0) == doctest::Approx(-0.8));
   CHECK(example.particles.stress[0](0, 0) == doctest::Approx(-20.0));
   CHECK(example.particles.stress[1](0, 0) == doctest::Approx(10.0));
@@ -167,7 +163,8 @@ TEST_CASE("Eq. (16), Eq. (17): a uniaxial stretch v = r x on moving particles: t
   const std::vector<Vector<1>> nodal_velocity{Vector<1>(0.0), Vector<1>(r), Vector<1>(2.0 * r)};
   for (int step = 0; step < 5000; ++step) {
     compute_stencils(shape, particles.position, stencils);
-    update_strain_density_stress(stencils, nodal_velocity, {LinearElastic{100.0, 0.0, 4.0}}, dt, particles);
+    update_strain_density_stress(ReferenceKernels{}, stencils, nodal_velocity, {LinearElastic{100.0, 0.0, 4.0}}, dt,
+                                 particles);
     for (int p = 0; p < 2; ++p) particles.position[p][0] += dt * r * particles.position[p][0];
   }
   const double stretch = (particles.position[1][0] - particles.position[0][0]) / 0.2;
