@@ -14,6 +14,7 @@
 #include "mpm/io/scene_builder.hpp"
 #include "mpm/shape/bspline.hpp"
 #include "mpm/fast/lme_fast.hpp"
+#include "mpm/shape/lme_reference.hpp"
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/ugimp.hpp"
 #include "mpm/simulation.hpp"
@@ -74,10 +75,19 @@ inline UpdateStressLast stress_last_integrator(const io::Scene& scene) {
   return integrator;
 }
 
-/// The LME shape function a layer of kernels runs with: today's LmeShape under both (the one line to change when the
-/// reference layer gets its own LME shape).
+/// The LME shape function a layer of kernels runs with: the fast form (mpm/fast/lme_fast.hpp: warm start, cache,
+/// Taylor exp) under FastKernels, the reference form of Eqs. (34)-(41) (mpm/shape/lme_reference.hpp) under
+/// ReferenceKernels.
 template <class Kernels, int Dim>
-using LmeShapeFor = LmeShape<Dim>;
+struct LmeShapeOf {
+  using type = LmeShape<Dim>;
+};
+template <int Dim>
+struct LmeShapeOf<ReferenceKernels, Dim> {
+  using type = LmeReferenceShape<Dim>;
+};
+template <class Kernels, int Dim>
+using LmeShapeFor = typename LmeShapeOf<Kernels, Dim>::type;
 
 /// Calls visit(shape, integrator) with the scene's shape function and integrator, each built once:
 /// the one place where the scene's choice of method becomes a type (its choice of kernels: with_kernels).
