@@ -129,19 +129,14 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
 }
 
 /// \f$ \rho(\mathbf S) = \max_j |\lambda_j| \f$ (Eigen's real Schur-based eigensolver, eigenvalues only).
-inline double spectral_radius(const Eigen::MatrixXd& step) {
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(step, false);
-  return solver.eigenvalues().cwiseAbs().maxCoeff();
-}
+/// Compiled once, in mpm/analysis/eigenvalues.cpp: Eigen's eigensolver costs every file that includes this header
+/// seconds of compilation (this header comes with the integrators).
+double spectral_radius(const Eigen::MatrixXd& step);
 
 /// The largest \f$ \Omega = \omega\Delta t \f$ among the modes of a step whose modes all keep their energy
 /// (\f$ |\lambda| = 1 \f$, forward Euler): \f$ \lambda + \lambda^{-1} = 2 - \Omega^2 \f$, so \f$ \Omega = \sqrt{2 - 2\,\mathrm{Re}\,\lambda} \f$.
-inline double highest_mode_omega_dt(const Eigen::MatrixXd& energy_keeping_step) {
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(energy_keeping_step, false);
-  double highest = 0.0;
-  for (const auto& eigenvalue : solver.eigenvalues()) highest = std::max(highest, std::sqrt(std::max(0.0, 2.0 - 2.0 * eigenvalue.real())));
-  return highest;
-}
+/// Compiled once, in mpm/analysis/eigenvalues.cpp.
+double highest_mode_omega_dt(const Eigen::MatrixXd& energy_keeping_step);
 
 TEST_CASE("Linearised step: a bar of 4 cells held at both ends, its highest mode and the limits by hand") {
   // Linear shapes, one particle per cell at the centres, c = h = 1: the modes sin(j pi x / 4) have
