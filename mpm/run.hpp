@@ -5,6 +5,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "mpm/integrators/forward_euler.hpp"
@@ -116,12 +117,21 @@ auto with_kernels(const io::Scene& scene, Visitor&& visit) {
 }
 
 /// Runs the scene's setup with the scene's shape function and integrator on the kernels of `Kernels`.
+/// The run's control on a layer of kernels: on the reference kernels every loop of the step runs on one thread (the
+/// stencils and the balances too), so that a learner's run is the plain serial loop the reference files show; the
+/// results are the same bits on any number of threads either way (mpm/core/parallel.hpp).
+template <class Kernels>
+RunControl control_on(RunControl control) {
+  if constexpr (std::is_same_v<Kernels, ReferenceKernels>) control.threads = 1;
+  return control;
+}
+
 template <int Dim, class Kernels>
 RunSummary run_setup_on(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor, RunSummary* partial) {
   return with_method<Dim, Kernels>(scene, setup.model.grid, [&](auto shape, auto integrator) {
     Simulation<Dim, decltype(shape), decltype(integrator), Kernels> simulation(setup.model, setup.particles,
                                                                                 std::move(shape), integrator,
-                                                                                scene.control);
+                                                                                control_on<Kernels>(scene.control));
     try {
       return simulation.run(monitor);
     } catch (...) {  // a failure of the method, a stop signal, an output failure: keep what was done

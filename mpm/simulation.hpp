@@ -12,8 +12,9 @@
 ///   5. the observer samples and snapshots.
 ///
 /// The loop knows no files: a Monitor (io/run_writer.hpp) receives the samples. Every pass over the
-/// particles runs on RunControl::threads cores (mpm/core/parallel.hpp), but the transfers of the reference
-/// kernels (`solver.kernels = "reference"`), which run serially. After each named phase of the step
+/// particles runs on RunControl::threads cores (mpm/core/parallel.hpp); on the reference kernels
+/// (`solver.kernels = "reference"`) run.hpp's control_on sets one thread, so every loop runs serially. After each
+/// named phase of the step
 /// (mpm/core/step_phases.hpp) the loop's LoopPhases times it (PhaseTimers) and shows it to a Monitor that
 /// watches that step (`mpm trace`).
 #pragma once
