@@ -21,7 +21,9 @@ namespace mpm::testing {
 
 /// A random state: `count` particles in the middle of a grid of 12 cells per axis (h = 0.5), at least 3 cells from
 /// its edges (the cubic B-spline's reach), in random order, with the stencils of one shape function; nodal fields
-/// random on every node, the mass 0 on about one node in five.
+/// random on every node, the mass 0 on about one node in five. The 1200 particles by default make max_chunks chunks
+/// (chunks_of, mpm/core/parallel.hpp), so the fast scatter adds into its chunks' copies and sums them in chunk order,
+/// the path its threads take (on the team where a loop has parallel_work stencil entries: 2D cubic B-splines).
 template <int Dim>
 struct RandomState {
   static constexpr int dimension = Dim;
@@ -33,7 +35,7 @@ struct RandomState {
 };
 
 template <int Dim, class Shape>
-RandomState<Dim> random_state(unsigned seed, int count = 150) {
+RandomState<Dim> random_state(unsigned seed, int count = 1200) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0), centred(-1.0, 1.0);
   auto vector = [&](double scale) {
