@@ -29,8 +29,8 @@ namespace mpm::fast {
 
 /// Whether a shape function lists the nodes of each stencil in ascending order, so that the nodes a chunk of
 /// particles reaches are bounded by each stencil's first and last node instead of a search over all of them. True
-/// for the tensor products (x fastest, mpm/shape/tensor_product.hpp), checked for each by a doctest below; false
-/// (the search) for any other shape, the LME neighbours among them.
+/// for the tensor products (x fastest, mpm/shape/tensor_product.hpp), each checked in tests/shape_doctests.cpp, at
+/// the grid's edges too; false (the search) for any other shape, the LME neighbours among them.
 template <class Shape>
 inline constexpr bool lists_nodes_ascending = false;
 template <int Dim>
