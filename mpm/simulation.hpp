@@ -32,6 +32,8 @@
 #include "mpm/core/phase_timers.hpp"
 #include "mpm/core/errors.hpp"
 #include "mpm/core/kernels.hpp"
+#include "mpm/fast/fast_kernels.hpp"
+#include "mpm/fast/fast_stencils.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/integrators/time_step.hpp"
 #include "mpm/model.hpp"
@@ -125,7 +127,6 @@ class Simulation {
     shape_.initialise(particles_);
     stencils_.resize(particles_.size(), shape_.capacity());
     body_force_.per_unit_mass.resize(particles_.size());
-    grid_fields_.prepare_chunks(particles_.size());
     ParticleSurvey<Dim> survey = survey_particles(particles_, model_.grid, model_.materials);
     initial_energy_ = survey.balances.total();
 
@@ -163,7 +164,7 @@ class Simulation {
       const double body_force_time = control_.body_force_time == BodyForceTime::step_end ? time + dt : time;
       model_.body_force.evaluate(body_force_time, particles_, body_force_);  // b_p of Eq. (15), at x_p^k
       phases.after(Phase::body_force, particles_, grid_fields_);
-      integrator_.template step<Kernels>(model_, stencils_, body_force_, dt, particles_, grid_fields_, phases);
+      integrator_.step(kernels_, model_, stencils_, body_force_, dt, particles_, grid_fields_, phases);
       time = lands ? target : fixed ? anchor + static_cast<double>(++since_anchor) * dt : time + dt;
       if (lands) anchor = target, since_anchor = 0;
       ++step;
@@ -244,7 +245,7 @@ class Simulation {
 
   void locate_particles(long step, double time) {
     try {
-      compute_stencils(shape_, particles_.position, stencils_);
+      compute_stencils(kernels_, shape_, particles_.position, stencils_);
     } catch (const ShapeFailure& failure) {
       throw SimulationFailure(step, time, particles_.id[failure.particle], position_text(failure.particle), failure.what());
     }
@@ -282,6 +283,9 @@ class Simulation {
   Particles<Dim> particles_;
   Shape shape_;
   Integrator integrator_;
+  /// The layer of the transfers, one per run: the fast layer holds the workspace of its scatters (ReferenceKernels
+  /// holds nothing).
+  Kernels kernels_;
   RunControl control_;
   GridFields<Dim> grid_fields_;
   Stencils<Dim> stencils_;

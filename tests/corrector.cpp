@@ -15,11 +15,10 @@ namespace corrector_test {
 /// The predictor-corrector's step as NewmarkPredictorCorrector::step() takes it, with or without Eq. (30).
 template <bool with_corrector>
 struct NpcCorrectorSwitch : mpm::NewmarkPredictorCorrector {
-  template <class Kernels = mpm::FastKernels, int Dim, class... Rest>
-  void step(const mpm::Model<Dim>& model, const mpm::Stencils<Dim>& stencils,
+  template <class Kernels, int Dim, class... Rest>
+  void step(const Kernels& kernels, const mpm::Model<Dim>& model, const mpm::Stencils<Dim>& stencils,
             const mpm::ParticleBodyForces<Dim>& body_force, double dt, mpm::Particles<Dim>& particles,
             mpm::GridFields<Dim>& grid, Rest&&...) const {
-    const Kernels kernels{};
     grid.reset();
     nodal_mass_and_velocity_predictor(kernels, particles, stencils, newmark_gamma, dt, grid);
     mpm::impose_fixed_velocity(model.fixed, grid.nodal_velocity);

@@ -48,7 +48,7 @@ ModeHistory run_mode(const Integrator& integrator, int cells, int mode, double O
   mpm::ParticleBodyForces<1> no_body_force;
   no_body_force.per_unit_mass.assign(particles.size(), mpm::Vector<1>::Zero());
   mpm::GridFields<1> grid(setup.model.grid.node_count());
-  grid.prepare_chunks(particles.size());
+  const mpm::FastKernels kernels;
   mpm::NoPhaseObserver observer;
   ModeHistory history;
   auto record = [&] {
@@ -62,7 +62,7 @@ ModeHistory run_mode(const Integrator& integrator, int cells, int mode, double O
   record();
   for (int n = 0; n < steps; ++n) {
     mpm::compute_stencils(shape, particles.position, stencils);
-    integrator.step(setup.model, stencils, no_body_force, Omega / omega, particles, grid, observer);
+    integrator.step(kernels, setup.model, stencils, no_body_force, Omega / omega, particles, grid, observer);
     record();
     if (history.energy.back() > 1e6 * history.energy.front()) break;  // unstable: stop before it leaves the grid
   }

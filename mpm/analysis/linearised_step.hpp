@@ -104,7 +104,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
   ParticleBodyForces<Dim> no_body_force;
   no_body_force.per_unit_mass.assign(particles.size(), Vector<Dim>::Zero());
   GridFields<Dim> grid(model.grid.node_count());
-  grid.prepare_chunks(particles.size());
+  const FastKernels kernels;  // one for every step below: the workspace of its scatters
   NoPhaseObserver observer;
   const int size = particles.size() * linearised_states_per_particle<Dim>();
   const double perturbation = 1e-6;
@@ -120,7 +120,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
         particles.stress[p] = material.stress<Dim>(particles.strain[p]);
         particles.stress_zz[p] = material.stress_zz<Dim>(particles.strain[p]);
       }
-      integrator.step(model, stencils, no_body_force, dt, particles, grid, observer);
+      integrator.step(kernels, model, stencils, no_body_force, dt, particles, grid, observer);
       response[side] = detail::state_vector(particles);
     }
     step.col(column) = (response[0] - response[1]).cwiseQuotient(unit) / (2.0 * perturbation);

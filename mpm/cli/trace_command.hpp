@@ -398,8 +398,8 @@ TEST_CASE("Integrators: step() runs its phases in the order of its numbered list
     model.grid = example.grid;
     model.materials = {LinearElastic{example.young_modulus, 0.0, example.density}};
     PhaseRecorder recorder;
-    integrator.step(model, example.stencils, testing::WorkedExample::body_force(), example.dt, example.particles,
-                    example.fields, recorder);
+    integrator.step(FastKernels{}, model, example.stencils, testing::WorkedExample::body_force(), example.dt,
+                    example.particles, example.fields, recorder);
     return recorder.seen;
   };
   auto list = [](const auto& phases) { return std::vector<Phase>(phases.begin(), phases.end()); };
@@ -440,7 +440,7 @@ TEST_CASE("mpm trace: the phases of one forward-Euler step on two particles by h
   StepTrace<1> trace(model, 1, TraceVariant{}, true);
   REQUIRE(trace.watches(1, 0.0, 0.1));
   TraceObserver<1> observer{trace, stencils};
-  ForwardEuler().step(model, stencils, body_force, 0.1, particles, grid, observer);
+  ForwardEuler().step(FastKernels{}, model, stencils, body_force, 0.1, particles, grid, observer);
   const auto& blocks = trace.blocks();
   REQUIRE(blocks.size() == 8);
   CHECK(blocks[0].phase == Phase::reset);

@@ -6,7 +6,9 @@
 /// - ReferenceKernels: the kernels paper/ and the Doxygen pages show, in mpm/transfer/ and mpm/grid/: each a
 ///   plain serial loop over the particles and their stencil nodes, in the paper's symbols.
 /// - fast::FastKernels (the default): the same equations in mpm/fast/, run on every core (mpm/core/parallel.hpp,
-///   mpm/core/scatter.hpp) and in component forms; each is tested against its reference on random states.
+///   mpm/fast/scatter.hpp) and in component forms; each is tested against its reference on random states. Defined in
+///   mpm/fast/fast_kernels.hpp: it holds the workspace of the fast layer's scatters, so a run holds one and its
+///   integrator's step() takes it as its first argument.
 #pragma once
 
 namespace mpm {
@@ -17,11 +19,7 @@ struct ReferenceKernels {
 };
 
 namespace fast {
-/// The fast kernels of mpm/fast/: threads and component forms (`solver.kernels = "fast"`, the default). Declared in
-/// mpm::fast so that a call with this tag finds the overloads of mpm/fast/ (and only those) by its argument.
-struct FastKernels {
-  static constexpr const char* name = "fast";
-};
+struct FastKernels;  // mpm/fast/fast_kernels.hpp
 }  // namespace fast
 
 using fast::FastKernels;

@@ -7,7 +7,7 @@
 /// items_per_chunk items (a loop of fewer than 2 items_per_chunk items is one chunk: the plain serial
 /// loop); a longer loop has one chunk per large_chunk_items items, so that the chunks grow with the work
 /// and keep many threads busy. A sum over the particles (parallel_sum, and the particle-to-grid scatter
-/// into the nodes, mpm/core/scatter.hpp) is formed chunk by chunk, each chunk's part from zero, and the
+/// into the nodes, mpm/fast/scatter.hpp) is formed chunk by chunk, each chunk's part from zero, and the
 /// parts are added in chunk order. One thread does exactly the same additions in the same order, so a
 /// run gives the same bits on 1, 2 or 64 threads, on any machine.
 ///
@@ -25,7 +25,7 @@
 /// 3.4 % of the scatter's own stencil entries, 10 % for linear shapes (estimates of this formula). Their
 /// memory is capped at max_chunks - 1 copies of the grid, what a loop of small_loop items needs; particles
 /// out of order, whose windows would exceed it, are scattered in max_chunks groups of chunks instead
-/// (mpm/core/scatter.hpp).
+/// (mpm/fast/scatter.hpp).
 ///
 /// **Hand-out on demand.** The calling thread and the workers of its Team each take the next chunk
 /// when they are free. A thread that the operating system sets aside (another program needs the

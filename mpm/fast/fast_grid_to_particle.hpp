@@ -6,6 +6,7 @@
 
 #include "mpm/core/kernels.hpp"
 #include "mpm/core/parallel.hpp"
+#include "mpm/fast/fast_kernels.hpp"
 #include "mpm/fast/random_state.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/particles/particles.hpp"
@@ -16,7 +17,7 @@ namespace mpm::fast {
 
 /// Eqs. (19)-(22) and the PIC/FLIP blend on every core (the reference: mpm::forward_euler_particle_update).
 template <int Dim>
-void forward_euler_particle_update(FastKernels, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double dt,
+void forward_euler_particle_update(const FastKernels&, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double dt,
                                    EulerPositionVelocity position_velocity, Particles<Dim>& particles,
                                    double flip_fraction = 1.0) {
   // The nodes first: a_I = f_I / m_I, p_I / m_I, and the velocity that moves the particles.
@@ -53,8 +54,8 @@ void forward_euler_particle_update(FastKernels, const Stencils<Dim>& stencils, G
 
 /// Eqs. (31)-(33), or Eq. (23) for the velocity, on every core (the reference: mpm::newmark_particle_update).
 template <int Dim>
-void newmark_particle_update(FastKernels, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double newmark_gamma,
-                             double dt,
+void newmark_particle_update(const FastKernels&, const Stencils<Dim>& stencils, GridFields<Dim>& grid,
+                             double newmark_gamma, double dt,
                              NewmarkPositionVelocity position_velocity, Particles<Dim>& particles,
                              NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32) {
   // The nodes first: a_I = f_I / m_I and the velocity that moves the particles.

@@ -1,12 +1,13 @@
 /// \file
 /// The fast form of the nodal forces of mpm/transfer/nodal_forces.hpp (its reference): the particles scattered to
-/// the nodes on every core (scatter_to_nodes, mpm/core/scatter.hpp), and in 2D the internal force in components.
+/// the nodes on every core (scatter_to_nodes, mpm/fast/scatter.hpp), and in 2D the internal force in components.
 #pragma once
 #include <doctest/doctest.h>
 
 #include "mpm/core/kernels.hpp"
 #include "mpm/core/parallel.hpp"
-#include "mpm/core/scatter.hpp"
+#include "mpm/fast/fast_kernels.hpp"
+#include "mpm/fast/fast_stencils.hpp"
 #include "mpm/fast/random_state.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/loading/body_force.hpp"
@@ -22,10 +23,9 @@ namespace mpm::fast {
 /// \f$ \boldsymbol\sigma \nabla N = (\sigma_{xx}, \sigma_{yy}) \odot \nabla N + \sigma_{xy} (\partial_y N,
 /// \partial_x N) \f$: two products per node, where the matrix-vector product takes four (benchmarks/README.md).
 template <int Dim>
-void add_nodal_forces(FastKernels, const Particles<Dim>& particles, const Stencils<Dim>& stencils,
+void add_nodal_forces(const FastKernels& kernels, const Particles<Dim>& particles, const Stencils<Dim>& stencils,
                       const ParticleBodyForces<Dim>& body_force, GridFields<Dim>& grid) {
-  scatter_to_nodes(particles.size(), stencils.capacity, stencils.chunk_nodes, grid.nodal_force, grid.force_copies,
-                   [&](int p, Vector<Dim>* nodal_force) {
+  scatter_to_nodes(kernels, stencils, [&](int p, Vector<Dim>* nodal_force) {
     const Matrix<Dim> volume_stress = particles.volume(p) * particles.stress[p];
     const Vector<Dim> weight =  // m_p b_p (per_unit_mass is not filled when every b_p is zero)
         body_force.all_zero ? Vector<Dim>::Zero() : Vector<Dim>(particles.mass[p] * body_force.per_unit_mass[p]);
@@ -42,7 +42,7 @@ void add_nodal_forces(FastKernels, const Particles<Dim>& particles, const Stenci
         nodal_force[stencil.node[k]] += stencil.value[k] * weight - sigma_grad_N.matrix();
       }
     }
-  });
+  }, grid.nodal_force);
 }
 
 TEST_CASE("Eq. (14), Eq. (15): the fast nodal forces against their reference on random states, 1D and 2D, four shapes, with and without body forces") {

@@ -8,6 +8,7 @@
 
 #include "mpm/core/kernels.hpp"
 #include "mpm/core/parallel.hpp"
+#include "mpm/fast/fast_kernels.hpp"
 #include "mpm/fast/random_state.hpp"
 #include "mpm/material/linear_elastic.hpp"
 #include "mpm/particles/particles.hpp"
@@ -45,7 +46,7 @@ Matrix<Dim> strain_rate(const Stencils<Dim>& stencils, int p, const std::vector<
 /// Eqs. (16), (17) and (3) on every core: strain, density and stress of each particle (the reference:
 /// mpm::update_strain_density_stress).
 template <int Dim>
-void update_strain_density_stress(FastKernels, const Stencils<Dim>& stencils,
+void update_strain_density_stress(const FastKernels&, const Stencils<Dim>& stencils,
                                   const std::vector<Vector<Dim>>& nodal_velocity,
                                   const std::vector<LinearElastic>& materials, double dt, Particles<Dim>& particles) {
   parallel_for(particles.size(), stencils.capacity, [&](int p) {

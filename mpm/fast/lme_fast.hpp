@@ -339,9 +339,6 @@ class LmeShape {
     inverse_spacing_ = 1.0 / grid.spacing();
   }
 
-  /// The neighbours are not listed in ascending node order (compute_stencils searches them for the nodes it reaches).
-  static constexpr bool nodes_ascending = false;
-
   /// An upper bound of the neighbours of any point: the most lattice points a ball of radius R can
   /// hold, wherever its centre (computed once, in the constructor).
   int capacity() const { return capacity_; }

@@ -63,7 +63,6 @@ RandomState<Dim> random_state(unsigned seed, int count = 1200) {
   compute_stencils(shape, state.particles.position, state.stencils);
   const int nodes = state.grid.node_count();
   state.fields = GridFields<Dim>(nodes);
-  state.fields.prepare_chunks(count);
   for (int node = 0; node < nodes; ++node) {
     state.fields.nodal_mass[node] = unit(random) < 0.2 ? 0.0 : 0.5 + unit(random);
     state.fields.nodal_momentum[node] = vector(3.0);

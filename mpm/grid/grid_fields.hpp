@@ -4,7 +4,6 @@
 #pragma once
 #include <vector>
 
-#include "mpm/core/scatter.hpp"
 #include "mpm/core/types.hpp"
 
 namespace mpm {
@@ -21,10 +20,6 @@ struct GridFields {
   std::vector<Vector<Dim>> nodal_acceleration;  ///< a_I = f_I / m_I
   std::vector<Vector<Dim>> moving_velocity;     ///< the nodal velocity that moves the particles (the integrator's choice)
   std::vector<Vector<Dim>> projected_velocity;  ///< p_I / m_I (the PIC part of forward Euler's PIC/FLIP blend)
-  /// Zeroed copies of the fields the particles scatter into, for the chunks of particles beyond the first,
-  /// one buffer per field: the chunks of a particle-to-grid scatter add into them (mpm/core/scatter.hpp).
-  std::vector<double> mass_copies;
-  std::vector<Vector<Dim>> momentum_copies, velocity_copies, force_copies;
 
   explicit GridFields(int node_count = 0)
       : nodal_mass(node_count, 0.0),
@@ -37,13 +32,6 @@ struct GridFields {
         projected_velocity(node_count, Vector<Dim>::Zero()) {}
 
   int size() const { return static_cast<int>(nodal_mass.size()); }
-
-  /// Allocates the copies for scatters over `particles` particles (once per run, before the first step).
-  void prepare_chunks(int particles) {
-    prepare_copies(mass_copies, particles, size(), 0.0);
-    for (auto* copies : {&momentum_copies, &velocity_copies, &force_copies})
-      prepare_copies(*copies, particles, size(), Vector<Dim>(Vector<Dim>::Zero()));
-  }
 
   void reset() {
     for (int node = 0; node < size(); ++node) {

@@ -50,10 +50,10 @@ struct ForwardEuler {
   ///
   /// `observer.after(phase, particles, grid)` is called after each phase, in the order of `phases`: the loop times
   /// them, `mpm trace` prints them; NoPhaseObserver watches nothing.
-  template <class Kernels = FastKernels, int Dim, class Observer>
-  void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
-            Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
-    const Kernels kernels{};  // the layer of every transfer below (mpm/core/kernels.hpp)
+  template <class Kernels, int Dim, class Observer>
+  void step(const Kernels& kernels, const Model<Dim>& model, const Stencils<Dim>& stencils,
+            const ParticleBodyForces<Dim>& body_force, double dt, Particles<Dim>& particles, GridFields<Dim>& grid,
+            Observer& observer) const {
     // 0. The nodal fields set to zero.
     grid.reset();
     observer.after(Phase::reset, particles, grid);

@@ -71,10 +71,10 @@ struct UpdateStressLast {
   ///
   /// `observer.after(phase, particles, grid)` is called after each phase, in the order of `phases` (USL without
   /// phase 7).
-  template <class Kernels = FastKernels, int Dim, class Observer>
-  void step(const Model<Dim>& model, const Stencils<Dim>& stencils, const ParticleBodyForces<Dim>& body_force, double dt,
-            Particles<Dim>& particles, GridFields<Dim>& grid, Observer& observer) const {
-    const Kernels kernels{};  // the layer of every transfer below (mpm/core/kernels.hpp)
+  template <class Kernels, int Dim, class Observer>
+  void step(const Kernels& kernels, const Model<Dim>& model, const Stencils<Dim>& stencils,
+            const ParticleBodyForces<Dim>& body_force, double dt, Particles<Dim>& particles, GridFields<Dim>& grid,
+            Observer& observer) const {
     // 0. The nodal fields set to zero.
     grid.reset();
     observer.after(Phase::reset, particles, grid);
@@ -135,7 +135,8 @@ TEST_CASE("USL, MUSL: one step of the worked example by hand, node 2 fixed: each
     NoPhaseObserver observer;
     UpdateStressLast integrator;
     integrator.stress_velocity = velocity;
-    integrator.step(model, example.stencils, body_force, example.dt, example.particles, example.fields, observer);
+    integrator.step(FastKernels{}, model, example.stencils, body_force, example.dt, example.particles, example.fields,
+                    observer);
     return example.particles;
   };
   for (auto velocity : {StressLastVelocity::updated_nodal, StressLastVelocity::reprojected_particles}) {

@@ -53,9 +53,6 @@ class BsplineShape {
 
   explicit BsplineShape(const Grid<Dim>& grid) : grid_(grid), inverse_h_(1.0 / grid.spacing()) {}
 
-  /// The stencil lists its nodes in ascending order (the tensor product, x fastest).
-  static constexpr bool nodes_ascending = true;
-
   /// Nodes per particle: 3 (quadratic) or 4 (cubic) per axis.
   int capacity() const { return Dim == 1 ? Degree + 1 : (Degree + 1) * (Degree + 1); }
 

@@ -22,9 +22,6 @@ class LinearShape {
 
   explicit LinearShape(const Grid<Dim>& grid) : grid_(grid), inverse_h_(1.0 / grid.spacing()) {}
 
-  /// The stencil lists its nodes in ascending order (the tensor product, x fastest).
-  static constexpr bool nodes_ascending = true;
-
   /// Nodes per particle: the corners of one cell.
   int capacity() const { return 1 << Dim; }
 

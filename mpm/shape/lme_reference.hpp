@@ -163,9 +163,6 @@ template <int Dim>
 class LmeReferenceShape {
  public:
   static constexpr const char* name = "lme";
-  /// The neighbours are not listed in ascending node order.
-  static constexpr bool nodes_ascending = false;
-
   /// \throws std::invalid_argument for options out of range or a support radius too short (lme_radius_squared).
   explicit LmeReferenceShape(const Grid<Dim>& grid, const LmeOptions& options = LmeOptions())
       : grid_(grid), options_(options), radius_squared_(lme_radius_squared<Dim>(options)),

@@ -113,9 +113,6 @@ class UgimpShape {
 
   explicit UgimpShape(const Grid<Dim>& grid) : grid_(grid) {}
 
-  /// The stencil lists its nodes in ascending order (the tensor product, x fastest).
-  static constexpr bool nodes_ascending = true;
-
   /// Nodes per particle: the product over the axes of the largest per-axis count,
   /// \f$ \lceil 2 (1 + l_p / h) \rceil \f$ (3 per axis for every \f$ l_p \le h/2 \f$), over all particles.
   /// Fixed by initialise(); set_half_length() may raise it, so call that before sizing stencils.

@@ -1,12 +1,13 @@
 /// \file
-/// The particle-to-grid scatter (P2G) on the machine's cores, with nodal sums that do not depend on how
-/// many threads run them (the chunks and their model: mpm/core/parallel.hpp).
+/// The fast layer's particle-to-grid scatter (P2G) on the machine's cores, with nodal sums that do not depend on
+/// how many threads run them (the chunks and their model: mpm/core/parallel.hpp), and its workspace, ScatterScratch.
 ///
 /// Chunk 0 of the particles adds into the nodal fields themselves; chunk c > 0 adds, from zero, into a copy
-/// of the fields that covers only its window, the nodes its stencils reach (compute_stencils notes them).
-/// The copies are then added to the fields node by node in chunk order, and zeroed again. The copies of
-/// all chunks lie one after another in one buffer per field, allocated once per run with room for
-/// max_chunks - 1 whole grids (copy_room): with the particles in spatial order the windows take about one
+/// of the fields that covers only its window, the nodes its stencils reach (fast::compute_stencils notes them,
+/// mpm/fast/fast_stencils.hpp). The copies are then added to the fields node by node in chunk order, and zeroed
+/// again. The copies of all chunks lie one after another in one buffer per field, allocated by the first scatter
+/// of a run with room for max_chunks - 1 whole grids (copy_room): with the particles in spatial order the windows
+/// take about one
 /// grid together, however many chunks there are. Should they need more room (particles in no spatial
 /// order), the scatter adds in max_chunks groups of consecutive chunks instead, each group's window the
 /// union of its chunks': a group's sum is then formed over all its particles from zero. Which way a
@@ -22,18 +23,19 @@
 #include <random>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "mpm/core/parallel.hpp"
 #include "mpm/core/types.hpp"
 
-namespace mpm {
+namespace mpm::fast {
 
 inline void set_zero(double& value) { value = 0.0; }
 template <class Derived>
 void set_zero(Eigen::MatrixBase<Derived>& value) { value.setZero(); }
 
-/// For each chunk of the particles, the nodes [begin, end) its stencils reach (compute_stencils sets them).
+/// For each chunk of the particles, the nodes [begin, end) its stencils reach (fast::compute_stencils notes them).
 /// A list of another length than the chunks counts as every chunk reaching every node.
 using ChunkNodes = std::vector<Range>;
 inline constexpr Range all_nodes{0, 1 << 30};
@@ -91,8 +93,7 @@ inline void plan_scatter(int count, int nodes, const ChunkNodes& reached, Scatte
   lay_out(groups, [&](int group) { return window_of_chunks(part_of(plan.chunks, groups, group)); }, plan);
 }
 
-/// A nodal field that the particles scatter into (P2G), with its buffer of zeroed copies
-/// (GridFields::prepare_chunks).
+/// A nodal field that the particles scatter into (P2G), with its buffer of zeroed copies (ScatterScratch::copies).
 template <class T>
 struct ScatterTarget {
   std::vector<T>& field;
@@ -131,14 +132,13 @@ inline constexpr int most_node_blocks = 256;
 /// over the particles: body(p, field...) adds particle p's share into field[I] of each target for the
 /// nodes I of its stencil. The parts of plan_scatter add into the fields and into their copies, which are
 /// then added to the fields node by node in part order (on the team too, by blocks of nodes) and zeroed
-/// again. `work_per_item`: the stencil entries per particle; `reached`: the nodes each chunk's stencils reach.
+/// again. `work_per_item`: the stencil entries per particle; `reached`: the nodes each chunk's stencils reach;
+/// `plan`: where the plan is formed (the workers read it).
 template <class Body, class... T>
-void scatter_to_nodes(int count, long work_per_item, const ChunkNodes& reached, Body body,
+void scatter_to_nodes(int count, long work_per_item, const ChunkNodes& reached, ScatterPlan& plan, Body body,
                       ScatterTarget<T>... targets) {
   // The nodes of the first target: every target is a nodal field of the same grid.
   const int nodes = static_cast<int>(std::get<0>(std::forward_as_tuple(targets...)).field.size());
-  static thread_local ScatterPlan calling_threads_plan;
-  ScatterPlan& plan = calling_threads_plan;  // a reference: the workers read the calling thread's plan, not their own
   plan_scatter(count, nodes, reached, plan);
   if (((static_cast<long>(targets.copies.size()) < plan.room_used()) || ...))
     throw std::logic_error("scatter_to_nodes: too few copies");
@@ -154,14 +154,47 @@ void scatter_to_nodes(int count, long work_per_item, const ChunkNodes& reached, 
   });
 }
 
-/// The same for one field: body(p, field).
-template <class T, class Body>
-void scatter_to_nodes(int count, long work_per_item, const ChunkNodes& reached, std::vector<T>& field,
-                      std::vector<T>& copies, Body body) {
-  scatter_to_nodes(count, work_per_item, reached, body, ScatterTarget<T>{field, copies});
-}
+/// The fast layer's workspace for its chunked sums, held by FastKernels (one per run, mpm/fast/fast_kernels.hpp)
+/// and by no type of the method's data: the buffers of copies that the scatters' chunks add into, the nodes each
+/// chunk of particles reaches and the plan of the current scatter. Between two scatters every copy is zero.
+class ScatterScratch {
+ public:
+  ScatterScratch() = default;
+  /// Not copied: a kernel that took the fast layer by value would copy the buffers at every call.
+  ScatterScratch(const ScatterScratch&) = delete;
+  ScatterScratch& operator=(const ScatterScratch&) = delete;
+  ScatterScratch(ScatterScratch&&) = default;
+  ScatterScratch& operator=(ScatterScratch&&) = default;
 
-namespace testing {
+  /// For each chunk of the particles, the nodes its stencils reach, as fast::compute_stencils noted them for the
+  /// stencils at `noted_for` (null: noted for none; the scatters over other stencils search them).
+  ChunkNodes reached;
+  const void* noted_for = nullptr;
+  ScatterPlan plan;  ///< how the current scatter adds (plan_scatter)
+
+  /// Buffer number `index` of the copies of values of type T (a double, or a vector of 1 or 2 components):
+  /// `room` values, all zero, allocated by its first use in a run (and again should the room change); later uses
+  /// allocate nothing.
+  template <class T>
+  std::vector<T>& copies(std::size_t index, long room) {
+    std::vector<std::vector<T>>& buffers = std::get<std::vector<std::vector<T>>>(buffers_);
+    if (buffers.size() <= index) buffers.resize(index + 1);
+    if (static_cast<long>(buffers[index].size()) != room) {
+      T zero;
+      set_zero(zero);
+      buffers[index].assign(room, zero);
+    }
+    return buffers[index];
+  }
+
+ private:
+  std::tuple<std::vector<std::vector<double>>, std::vector<std::vector<Vector<1>>>,
+             std::vector<std::vector<Vector<2>>>> buffers_;
+};
+
+}  // namespace mpm::fast
+
+namespace mpm::testing {
 
 /// A random 2D scatter: `count` particles in a grid of `columns` x `rows` cells (unit cells, nodes numbered
 /// row by row), each adding its weight to the 4 nodes of its cell with bilinear shares; in spatial order
@@ -170,7 +203,7 @@ struct RandomScatter {
   int columns, rows, nodes;
   std::vector<int> cell;                // the node at the lower left of each particle's cell
   std::vector<std::array<double, 4>> share;
-  ChunkNodes reached;
+  fast::ChunkNodes reached;
 
   RandomScatter(int count, int columns_, int rows_, bool in_order)
       : columns(columns_), rows(rows_), nodes((columns_ + 1) * (rows_ + 1)) {
@@ -200,15 +233,19 @@ struct RandomScatter {
     const TeamAlways on_the_team;
     use_threads(threads);
     std::vector<double> field(nodes, 0.0), copies;
-    prepare_copies(copies, count(), nodes, 0.0);
-    scatter_to_nodes(count(), parallel_work, reached, field, copies, [&](int p, double* into) { add(p, into); });
+    fast::prepare_copies(copies, count(), nodes, 0.0);
+    fast::ScatterPlan plan;
+    fast::scatter_to_nodes(count(), parallel_work, reached, plan, [&](int p, double* into) { add(p, into); },
+                           fast::ScatterTarget<double>{field, copies});
     use_threads(1);
     CHECK(std::all_of(copies.begin(), copies.end(), [](double left) { return left == 0.0; }));  // zeroed for the next
     return field;
   }
 };
 
-}  // namespace testing
+}  // namespace mpm::testing
+
+namespace mpm::fast {
 
 TEST_CASE("Scatter: 10^5 particles in spatial order, the same bits on 1, 2, 3 and 7 threads, chunk by chunk") {
   const testing::RandomScatter scatter(100000, 160, 160, true);
@@ -287,8 +324,9 @@ TEST_CASE("Scatter: two fields of different types in one pass, too few copies is
   const ChunkNodes everywhere(chunks_of(count), all_nodes);
   const TeamAlways on_the_team;
   use_threads(2);
+  ScatterPlan plan;
   scatter_to_nodes(
-      count, parallel_work, everywhere,
+      count, parallel_work, everywhere, plan,
       [](int p, double* f, Vector<2>* g) {
         f[p % 10] += 2.0;
         g[p % 5] += Vector<2>(1.0, double(p % 3));
@@ -301,7 +339,24 @@ TEST_CASE("Scatter: two fields of different types in one pass, too few copies is
   CHECK(vectors[0] == Vector<2>(double(ones), double(residues)));
   for (const Vector<2>& left : vector_copies) CHECK(left.isZero(0.0));
   copies.pop_back();
-  CHECK_THROWS_AS(scatter_to_nodes(count, 1, everywhere, field, copies, [](int, double*) {}), std::logic_error);
+  auto nothing = [](int, double*) {};
+  CHECK_THROWS_AS(scatter_to_nodes(count, 1, everywhere, plan, nothing, ScatterTarget<double>{field, copies}),
+                  std::logic_error);
 }
 
-}  // namespace mpm
+TEST_CASE("Scatter: the workspace's buffers of copies, zero, allocated at their first use and kept") {
+  ScatterScratch scratch;
+  std::vector<Vector<2>>& copies = scratch.copies<Vector<2>>(2, 30);
+  CHECK(copies.size() == 30);
+  for (const Vector<2>& value : copies) CHECK(value.isZero(0.0));
+  copies[7] = Vector<2>(1.0, 2.0);  // a scatter leaves them zero; a value left here shows whether they are kept
+  const Vector<2>* kept = copies.data();
+  CHECK(scratch.copies<Vector<2>>(2, 30).data() == kept);
+  CHECK(scratch.copies<Vector<2>>(2, 30)[7] == Vector<2>(1.0, 2.0));
+  CHECK(scratch.copies<double>(0, 5) == std::vector<double>(5, 0.0));  // a buffer of each type and number of its own
+  CHECK(scratch.copies<Vector<2>>(0, 4).size() == 4);
+  CHECK(scratch.copies<Vector<2>>(2, 40).size() == 40);  // another room: allocated again, zero
+  CHECK(scratch.copies<Vector<2>>(2, 40)[7].isZero(0.0));
+}
+
+}  // namespace mpm::fast
