@@ -1,13 +1,12 @@
 /// \file
 /// The runs of 1D scenes, compiled once (mpm/run.hpp declares them extern): Simulation<1, Shape,
-/// Integrator> for every shape function and integrator, on the fast kernels
-/// (mpm/run_reference_1d.cpp: on the reference kernels).
+/// Integrator> for every shape function and integrator, on the fast kernels (mpm/run_reference_1d.cpp: on the
+/// reference kernels, and run_setup, which takes either).
 #include "mpm/run.hpp"
 #include "mpm/stability.hpp"
 
 namespace mpm {
 template Setup<1> build_setup<1>(const io::Scene&);
-template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
 template RunSummary run_setup_on<1, FastKernels>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
 template StabilityLimits stability_limits<1>(const io::Scene&, double);
 template bool stable_at<1>(const io::Scene&, double);

@@ -1,13 +1,12 @@
 /// \file
 /// The runs of 2D scenes, compiled once (mpm/run.hpp declares them extern): Simulation<2, Shape,
-/// Integrator> for every shape function and integrator, on the fast kernels
-/// (mpm/run_reference_2d.cpp: on the reference kernels).
+/// Integrator> for every shape function and integrator, on the fast kernels (mpm/run_reference_2d.cpp: on the
+/// reference kernels, and run_setup<2>, which runs a scene on the layer it names).
 #include "mpm/run.hpp"
 #include "mpm/stability.hpp"
 
 namespace mpm {
 template Setup<2> build_setup<2>(const io::Scene&);
-template RunSummary run_setup<2>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
 template RunSummary run_setup_on<2, FastKernels>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
 template StabilityLimits stability_limits<2>(const io::Scene&, double);
 template bool stable_at<2>(const io::Scene&, double);

@@ -13,6 +13,7 @@
 #include "mpm/analysis/rms_error.hpp"
 #include "mpm/exact/bar.hpp"
 #include "mpm/run.hpp"
+#include "verification/fast_runs.hpp"
 #include "verification/parallel.hpp"
 
 namespace verification {
@@ -105,7 +106,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   const double cpu_start = thread_cpu_seconds();
   mpm::RunSummary summary;
   try {
-    summary = mpm::run_setup<1>(scene, setup, recorder, &summary);
+    summary = run_fast<1>(scene, scene_path, setup, recorder, &summary);
   } catch (const mpm::SimulationFailure& failure) {
     result.failed = true;
     result.failure = failure.message();

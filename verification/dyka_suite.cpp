@@ -89,7 +89,13 @@ int main(int argc, char** argv) {
   Runs runs;
   runs.folder = argv[1], runs.scene = argv[3], runs.cores = cores;
   const Part which = part == 1 ? Part::figures : Part::studies;
-  const std::vector<Section> sections = which == Part::figures ? figures_part(runs) : studies_part(runs);
+  std::vector<Section> sections;
+  try {
+    sections = which == Part::figures ? figures_part(runs) : studies_part(runs);
+  } catch (const mpm::SceneError& error) {  // a scene file that does not read, or asks for the reference kernels
+    std::fprintf(stderr, "dyka_suite: %s\n", error.message().c_str());
+    return 2;
+  }
   write_report(argv[2], which, sections);
   bool hard = true;
   for (const auto& section : sections) hard = hard && hard_claims_hold(section.claims);

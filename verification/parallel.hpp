@@ -11,6 +11,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <exception>
 #include <thread>
 #include <vector>
 
@@ -89,16 +90,25 @@ void run_cases(const std::string& suite, const std::vector<std::string>& names, 
     finished(k, 0.0);
   }
   std::atomic<std::size_t> next{0};
+  std::exception_ptr first_error;  // a case that threw (a scene that does not read): rethrown here, after the others
   auto worker = [&] {
     for (std::size_t n; (n = next++) < narrow.size();) {
       const auto case_start = std::chrono::steady_clock::now();
-      task(narrow[n], 1);
+      try {
+        task(narrow[n], 1);
+      } catch (...) {
+        std::lock_guard<std::mutex> guard(lock);
+        if (!first_error) first_error = std::current_exception();
+        next = narrow.size();  // no new case starts
+        return;
+      }
       finished(narrow[n], std::chrono::duration<double>(std::chrono::steady_clock::now() - case_start).count());
     }
   };
   std::vector<std::thread> threads;
   for (unsigned t = 0; t < cores; ++t) threads.emplace_back(worker);
   for (auto& thread : threads) thread.join();
+  if (first_error) std::rethrow_exception(first_error);
 }
 
 }  // namespace verification

@@ -1,27 +1,20 @@
 #!/usr/bin/env bash
 # Fig. 4: N, dN/dx and dN/dy of the central node of a 2D node lattice (h = 1) for linear (Q4),
 # uGIMP (particle length h/2) and LME with several gamma (beta = gamma/h^2), and the same in 1D,
-# all drawn from `mpm shape`. Called by make_figures.sh (MPM_BIN, MPM_ROOT, MPM_RESULTS set).
+# all drawn by `mpm shape`'s function (verification/shape_tables.cpp). Called by make_figures.sh (MPM_BIN, MPM_ROOT, MPM_RESULTS set).
 # Hard check: the partition of unity at every sampled point, to 1e-9.
 set -uo pipefail
 data=$MPM_RESULTS/data figures=$MPM_RESULTS/figures plots=$MPM_ROOT/verification/plots
-mpm=$MPM_BIN/mpm
 kinds=("linear" "ugimp" "lme 0.8" "lme 1.8" "lme 4")
 status=0
 
-# 2D: a 41 x 41 lattice of points on [-2, 2]^2.
-points2d=$(awk 'BEGIN{for(j=0;j<=40;j++) for(i=0;i<=40;i++) printf "--at %g,%g ", -2+0.1*i, -2+0.1*j}')
-points1d=$(awk 'BEGIN{for(i=0;i<=1000;i++) printf "--at %g ", -5+0.01*i}')
+# The stencils of every kind on a 41 x 41 lattice of points on [-2, 2]^2 and 1001 points on [-5, 5], as `mpm shape
+# --dim D --kind KIND [--gamma G] --at X[,Y] ...` prints them (verification/shape_tables.cpp: the same function).
+"$MPM_BIN/shape_tables" "$data" || status=1
 unity_report=""
 for kind in "${kinds[@]}"; do
   set -- $kind
   name=$1${2:+_$2}
-  options=(--kind "$1")
-  [[ -n ${2:-} ]] && options+=(--gamma "$2")
-  # shellcheck disable=SC2086
-  "$mpm" shape --dim 2 "${options[@]}" $points2d >"$data/shape2d_$name.csv" || status=1
-  # shellcheck disable=SC2086
-  "$mpm" shape --dim 1 "${options[@]}" $points1d >"$data/shape1d_$name.csv" || status=1
   # the central node's values at every point (0 where it is not in the stencil)
   awk -F, 'NR>1 && $2==0 && $3==0 {n[$1]=$4; gx[$1]=$5; gy[$1]=$6}
            END{print "x,y,N,dN_dx,dN_dy"; for(p=0;p<41*41;p++){i=p%41; j=int(p/41); printf "%g,%g,%.10g,%.10g,%.10g\n", -2+0.1*i, -2+0.1*j, n[p]+0, gx[p]+0, gy[p]+0; if(i==40) print ""}}' \

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "mpm/run.hpp"
+#include "verification/fast_runs.hpp"
 #include "verification/parallel.hpp"
 
 namespace verification {
@@ -125,7 +126,7 @@ inline SoilResult run_soil_case(const std::string& scene_path, const std::string
   const double cpu_start = thread_cpu_seconds();
   mpm::RunSummary summary;
   try {
-    summary = mpm::run_setup<2>(result.scene, setup, recorder, &summary);
+    summary = run_fast<2>(result.scene, scene_path, setup, recorder, &summary);
   } catch (const mpm::SimulationFailure& failure) {
     result.failed = true;
     result.failure = failure.message();

@@ -365,7 +365,8 @@ bool hard_checks_pass(const SuiteClaims& c) {
 bool run_all(const std::vector<CaseSpec>& cases, const std::string& scenes, unsigned cores, std::vector<Outcome>& outcomes) {
   for (const auto& spec : cases) {
     try {
-      mpm::load_scene(scenes + "/" + spec.scene_file, spec.overrides);
+      verification::require_fast_kernels(mpm::load_scene(scenes + "/" + spec.scene_file, spec.overrides),
+                                         scenes + "/" + spec.scene_file);
     } catch (const mpm::SceneError& error) {
       std::fprintf(stderr, "soil_suite: case %s: %s\n", spec.name.c_str(), error.message().c_str());
       return false;
