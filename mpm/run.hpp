@@ -1,7 +1,8 @@
 /// \file
 /// From a validated scene to a finished run. The dimension, the shape function, the integrator and the layer of
 /// kernels (reference or fast, mpm/core/kernels.hpp) are chosen here, once per run, as template arguments of
-/// Simulation; nothing in the time step asks again.
+/// Simulation; nothing in the time step asks again. An integrator's variants are chosen here once too, as types held
+/// by the integrator (std::variant: its step calls the chosen variant's own step).
 #pragma once
 #include <optional>
 #include <string>
@@ -49,30 +50,31 @@ inline LmeOptions lme_options(const io::Scene& scene) {
   return options;
 }
 
-/// The scene's predictor-corrector, with its options.
+/// The scene's predictor-corrector, with its variants: each scene word becomes its variant's type here, once per run
+/// (mpm/transfer/grid_to_particle.hpp), held as a value of the integrator, so that a variant adds no Simulation.
 inline NewmarkPredictorCorrector npc_integrator(const io::Scene& scene) {
   NewmarkPredictorCorrector integrator;
   integrator.newmark_gamma = scene.newmark_gamma;
-  integrator.position_velocity = scene.npc_position_velocity;
-  integrator.particle_velocity = scene.npc_velocity;
+  integrator.position_velocity = newmark_position_rule(scene.npc_position_velocity);
+  integrator.particle_velocity = newmark_velocity_rule(scene.npc_velocity);
   return integrator;
 }
 
-/// The scene's forward Euler, with its options.
+/// The scene's forward Euler, with its variants (each a type, as npc_integrator's).
 inline ForwardEuler fe_integrator(const io::Scene& scene) {
   ForwardEuler integrator;
-  integrator.position_velocity = scene.fe_position_velocity;
-  integrator.flip_fraction = scene.flip_fraction;
+  integrator.position_velocity = euler_position_rule(scene.fe_position_velocity);
+  integrator.particle_velocity = euler_velocity_rule(scene.flip_fraction);
   return integrator;
 }
 
-/// The scene's forward Euler with its stress updated last (`solver.stress_update` = "usl" | "musl"), with its options.
+/// The scene's forward Euler with its stress updated last (`solver.stress_update` = "usl" | "musl"), with its
+/// variants (each a type, as npc_integrator's).
 inline UpdateStressLast stress_last_integrator(const io::Scene& scene) {
   UpdateStressLast integrator;
-  integrator.stress_velocity =
-      scene.stress_update == io::StressUpdate::musl ? StressLastVelocity::reprojected_particles : StressLastVelocity::updated_nodal;
-  integrator.position_velocity = fe_integrator(scene).position_velocity;
-  integrator.flip_fraction = scene.flip_fraction;
+  if (scene.stress_update == io::StressUpdate::musl) integrator.stress_velocity = MuslMomentumK1{};
+  integrator.position_velocity = euler_position_rule(scene.fe_position_velocity);
+  integrator.particle_velocity = euler_velocity_rule(scene.flip_fraction);
   return integrator;
 }
 
@@ -91,7 +93,9 @@ template <class Kernels, int Dim>
 using LmeShapeFor = typename LmeShapeOf<Kernels, Dim>::type;
 
 /// Calls visit(shape, integrator) with the scene's shape function and integrator, each built once:
-/// the one place where the scene's choice of method becomes a type (its choice of kernels: with_kernels).
+/// the one place where the scene's choice of method becomes a type (its choice of kernels: with_kernels). The
+/// integrator's variants (position and particle velocity, USL or MUSL) are types too, held as values of the
+/// integrator (std::variant): each adds an instantiation of its own small step, none of Simulation.
 template <int Dim, class Kernels = FastKernels, class Visitor>
 auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit) {
   auto with_shape = [&](auto integrator) {

@@ -27,8 +27,7 @@ struct NpcCorrectorSwitch : mpm::NewmarkPredictorCorrector {
     add_nodal_forces(kernels, particles, stencils, body_force, grid);
     mpm::store_reactions(model.fixed, grid.nodal_force, grid.reaction);
     if (with_corrector) mpm::newmark_corrector(newmark_gamma, dt, grid);
-    newmark_particle_update(kernels, stencils, grid, newmark_gamma, dt, position_velocity, particles,
-                            particle_velocity);
+    newmark_g2p(kernels, stencils, grid, newmark_gamma, dt, position_velocity, particle_velocity, particles);
   }
 };
 

@@ -89,7 +89,7 @@ double half_period_in_steps(const std::vector<double>& signal) {
 mpm::NewmarkPredictorCorrector predictor_corrector(double gamma, mpm::NewmarkParticleVelocity velocity) {
   mpm::NewmarkPredictorCorrector integrator;
   integrator.newmark_gamma = gamma;
-  integrator.particle_velocity = velocity;
+  integrator.particle_velocity = mpm::newmark_velocity_rule(velocity);
   return integrator;
 }
 
@@ -210,4 +210,25 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22): forward Euler's velocity on t
   CHECK(order_t <= 1.2);
   CHECK(order_own >= 1.8);
   CHECK(at_own_time.back() < 0.1 * at_t.back());
+}
+
+TEST_CASE("Eq. (16), Eq. (20), Eq. (23), Eq. (33): each scene's variant words become the integrator's types") {
+  auto scene = [](std::vector<std::string> settings) {
+    return mpm::load_scene(mpm::testing::source_path("scenes/dyka_bar.toml"), settings);
+  };
+  const mpm::UpdateStressLast usl = mpm::stress_last_integrator(scene({"solver.stress_update=\"usl\""}));
+  const mpm::UpdateStressLast musl = mpm::stress_last_integrator(
+      scene({"solver.stress_update=\"musl\"", "solver.fe_position_velocity=\"start\"", "solver.flip_fraction=0.9"}));
+  CHECK(std::holds_alternative<mpm::UslMomentumK1>(usl.stress_velocity));
+  CHECK(std::holds_alternative<mpm::MuslMomentumK1>(musl.stress_velocity));
+  CHECK(std::holds_alternative<mpm::EulerMoveWithVelocityK1>(usl.position_velocity));
+  CHECK(std::holds_alternative<mpm::EulerMoveWithVelocityK>(musl.position_velocity));
+  CHECK(std::holds_alternative<mpm::FlipVelocity>(usl.particle_velocity));
+  CHECK(std::get<mpm::PicFlipBlend>(musl.particle_velocity).flip_fraction == 0.9);
+  const mpm::ForwardEuler fe = mpm::fe_integrator(scene({"solver.fe_position_velocity=\"start\""}));
+  CHECK(std::holds_alternative<mpm::EulerMoveWithVelocityK>(fe.position_velocity));
+  const mpm::NewmarkPredictorCorrector npc = mpm::npc_integrator(
+      scene({"solver.npc_position_velocity=\"predicted\"", "solver.npc_velocity=\"average\""}));
+  CHECK(std::holds_alternative<mpm::NewmarkMoveWithVelocityPred>(npc.position_velocity));
+  CHECK(std::holds_alternative<mpm::NewmarkAverageVelocity>(npc.particle_velocity));
 }

@@ -406,7 +406,7 @@ TEST_CASE("Integrators: step() runs its phases in the order of its numbered list
   CHECK(run(ForwardEuler()) == list(ForwardEuler::phases));
   CHECK(run(NewmarkPredictorCorrector()) == list(NewmarkPredictorCorrector::phases));
   UpdateStressLast usl, musl;
-  musl.stress_velocity = StressLastVelocity::reprojected_particles;
+  musl.stress_velocity = MuslMomentumK1{};
   CHECK(run(musl) == list(UpdateStressLast::phases));
   std::vector<Phase> usl_phases = list(UpdateStressLast::phases);
   usl_phases.erase(usl_phases.begin() + 7);  // USL skips MUSL's reprojection

@@ -1,6 +1,7 @@
 /// \file
 /// The fast forms of the grid-to-particle transfers of mpm/transfer/grid_to_particle.hpp (their reference): the
-/// nodes and then the particles on every core (parallel_for, mpm/core/parallel.hpp).
+/// node loops and the particle loops on every core (parallel_for, mpm/core/parallel.hpp). The variants' node loops
+/// (the nodal velocity that moves the particles) are the reference file's, run here by for_each_node.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -15,67 +16,52 @@
 
 namespace mpm::fast {
 
-/// Eqs. (19)-(22) and the PIC/FLIP blend on every core (the reference: mpm::forward_euler_particle_update).
+/// A loop over the nodes on every core (the reference: mpm::for_each_node, serial). Each node writes its own fields,
+/// so the bits do not depend on the threads.
+template <class Body>
+void for_each_node(const FastKernels&, int nodes, Body&& body) {
+  parallel_for(nodes, 1, body);
+}
+
+/// Eqs. (19)-(22), forward Euler's particle loop with FLIP's increment, on every core (the reference:
+/// mpm::forward_euler_particle_update).
 template <int Dim>
-void forward_euler_particle_update(const FastKernels&, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double dt,
-                                   EulerPositionVelocity position_velocity, Particles<Dim>& particles,
-                                   double flip_fraction = 1.0) {
-  // The nodes first: a_I = f_I / m_I, p_I / m_I, and the velocity that moves the particles.
-  parallel_for(grid.size(), 1, [&](int node) {
-    const bool has_mass = grid.nodal_mass[node] > 0.0;
-    const double mass = grid.nodal_mass[node];
-    grid.nodal_acceleration[node] = has_mass ? Vector<Dim>(grid.nodal_force[node] / mass) : Vector<Dim>::Zero();
-    grid.projected_velocity[node] = has_mass ? Vector<Dim>(grid.nodal_momentum[node] / mass) : Vector<Dim>::Zero();
-    grid.moving_velocity[node] = position_velocity == EulerPositionVelocity::updated ? grid.projected_velocity[node]
-                                 : has_mass                                         ? grid.nodal_velocity[node]
-                                                                                    : Vector<Dim>::Zero();
-  });
-  // Then the particles: sums of N_Ip times nodal values.
-  const bool blend = flip_fraction != 1.0;
-  const Vector<Dim>*nodal_acceleration = grid.nodal_acceleration.data(), *moving_velocity = grid.moving_velocity.data(),
-                    *projected_velocity = grid.projected_velocity.data();
+void forward_euler_particle_update(const FastKernels&, const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& a_I,
+                           const std::vector<Vector<Dim>>& v_I, double dt, Particles<Dim>& particles) {
+  const Vector<Dim>*nodal_acceleration = a_I.data(), *moving_velocity = v_I.data();
   parallel_for(particles.size(), stencils.capacity, [&](int p) {
     const ParticleStencil<Dim> stencil = stencils.of(p);
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
-    Vector<Dim> updated_velocity = Vector<Dim>::Zero();
     for (int k = 0; k < stencil.count; ++k) {
       acceleration += stencil.value[k] * nodal_acceleration[stencil.node[k]];
       velocity += stencil.value[k] * moving_velocity[stencil.node[k]];
     }
-    if (blend)
-      for (int k = 0; k < stencil.count; ++k)
-        updated_velocity += stencil.value[k] * projected_velocity[stencil.node[k]];
-    const Vector<Dim> flip_velocity = particles.velocity[p] + dt * acceleration;
-    particles.velocity[p] =
-        blend ? Vector<Dim>(flip_fraction * flip_velocity + (1.0 - flip_fraction) * updated_velocity) : flip_velocity;
+    particles.velocity[p] += dt * acceleration;
     particles.position[p] += dt * velocity;
   });
 }
 
-/// Eqs. (31)-(33), or Eq. (23) for the velocity, on every core (the reference: mpm::newmark_particle_update).
+/// The PIC/FLIP blend on every core (the reference: mpm::pic_flip_blend).
 template <int Dim>
-void newmark_particle_update(const FastKernels&, const Stencils<Dim>& stencils, GridFields<Dim>& grid,
-                             double newmark_gamma, double dt,
-                             NewmarkPositionVelocity position_velocity, Particles<Dim>& particles,
-                             NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32) {
-  // The nodes first: a_I = f_I / m_I and the velocity that moves the particles.
-  parallel_for(grid.size(), 1, [&](int node) {
-    if (grid.nodal_mass[node] <= 0.0) {
-      grid.nodal_acceleration[node].setZero();
-      grid.moving_velocity[node].setZero();
-      return;
-    }
-    const Vector<Dim> nodal_acceleration_I = grid.nodal_force[node] / grid.nodal_mass[node];
-    Vector<Dim> nodal_velocity_I = grid.nodal_velocity[node];
-    if (position_velocity == NewmarkPositionVelocity::predicted)
-      nodal_velocity_I -= newmark_gamma * dt * nodal_acceleration_I;
-    if (position_velocity == NewmarkPositionVelocity::projected)
-      nodal_velocity_I = grid.nodal_momentum[node] / grid.nodal_mass[node];
-    grid.nodal_acceleration[node] = nodal_acceleration_I;
-    grid.moving_velocity[node] = nodal_velocity_I;
+void pic_flip_blend(const FastKernels&, const Stencils<Dim>& stencils, double flip_fraction,
+                    const std::vector<Vector<Dim>>& v_I_k1, Particles<Dim>& particles) {
+  const Vector<Dim>* updated_velocity = v_I_k1.data();
+  parallel_for(particles.size(), stencils.capacity, [&](int p) {
+    const ParticleStencil<Dim> stencil = stencils.of(p);
+    Vector<Dim> pic_velocity = Vector<Dim>::Zero();
+    for (int k = 0; k < stencil.count; ++k) pic_velocity += stencil.value[k] * updated_velocity[stencil.node[k]];
+    const Vector<Dim> flip_velocity = particles.velocity[p];
+    particles.velocity[p] = flip_fraction * flip_velocity + (1.0 - flip_fraction) * pic_velocity;
   });
-  // Then the particles: sums of N_Ip times nodal values.
-  const Vector<Dim>*nodal_acceleration = grid.nodal_acceleration.data(), *moving_velocity = grid.moving_velocity.data();
+}
+
+/// Eqs. (31)-(33) with the particle-velocity rule `Rule` (Eq. (32) or Eq. (23)) on every core (the reference:
+/// mpm::newmark_particle_update).
+template <class Rule, int Dim>
+void newmark_particle_update(const FastKernels&, const Stencils<Dim>& stencils, const std::vector<Vector<Dim>>& a_I_k1,
+                             const std::vector<Vector<Dim>>& v_I, double newmark_gamma, double dt, Rule,
+                             Particles<Dim>& particles) {
+  const Vector<Dim>*nodal_acceleration = a_I_k1.data(), *moving_velocity = v_I.data();
   parallel_for(particles.size(), stencils.capacity, [&](int p) {
     const ParticleStencil<Dim> stencil = stencils.of(p);
     Vector<Dim> acceleration = Vector<Dim>::Zero(), velocity = Vector<Dim>::Zero();
@@ -85,10 +71,7 @@ void newmark_particle_update(const FastKernels&, const Stencils<Dim>& stencils, 
     }
     const Vector<Dim> old_acceleration = particles.acceleration[p];
     particles.acceleration[p] = acceleration;
-    particles.velocity[p] += particle_velocity == NewmarkParticleVelocity::eq32
-                                 ? Vector<Dim>(dt * acceleration)
-                                 : Vector<Dim>(dt * ((1.0 - newmark_gamma) * old_acceleration +
-                                                     newmark_gamma * acceleration));
+    particles.velocity[p] = Rule::velocity(particles.velocity[p], old_acceleration, acceleration, newmark_gamma, dt);
     particles.position[p] += dt * velocity + 0.5 * dt * dt * acceleration;
   });
 }
@@ -109,13 +92,15 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (21), Eq. (22), Eq. (23), Eq. (31), Eq. (32),
     for (const auto position : {EulerPositionVelocity::updated, EulerPositionVelocity::start})
       for (const double flip_fraction : {1.0, 0.7})
         check(state.particles, state.particles, [&](auto kernels, auto& grid, auto& particles) {
-          forward_euler_particle_update(kernels, state.stencils, grid, dt, position, particles, flip_fraction);
+          forward_euler_g2p(kernels, state.stencils, grid, dt, euler_position_rule(position),
+                            euler_velocity_rule(flip_fraction), particles);
         });
     for (const auto position : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected,
                                 NewmarkPositionVelocity::predicted})
       for (const auto velocity : {NewmarkParticleVelocity::eq32, NewmarkParticleVelocity::average})
         check(state.particles, state.particles, [&](auto kernels, auto& grid, auto& particles) {
-          newmark_particle_update(kernels, state.stencils, grid, 0.6, dt, position, particles, velocity);
+          newmark_g2p(kernels, state.stencils, grid, 0.6, dt, newmark_position_rule(position),
+                      newmark_velocity_rule(velocity), particles);
         });
   });
 }

@@ -24,8 +24,11 @@ namespace mpm {
 /// chosen once per run as the Integrator of mpm::Simulation. Its steps are listed with step().
 struct ForwardEuler {
   static constexpr const char* name = "fe";
-  EulerPositionVelocity position_velocity = EulerPositionVelocity::updated;
-  double flip_fraction = 1.0;  ///< 1: FLIP, the paper's scheme; below 1 the PIC/FLIP blend (a damping)
+  /// The variants, chosen once per run (mpm/run.hpp), each a type with its own step: the nodal velocity that moves
+  /// the particles (EulerMoveWithVelocityK1, the authors' code, or EulerMoveWithVelocityK, the literal Eq. (20)) and
+  /// the particle velocity (FlipVelocity, the paper's scheme, or PicFlipBlend, a damping).
+  EulerPositionRule position_velocity = EulerMoveWithVelocityK1{};
+  EulerVelocityRule particle_velocity = FlipVelocity{};
 
   /// `Kernels` is the layer every transfer of the step is taken from (mpm/core/kernels.hpp), chosen once per run by
   /// `solver.kernels`: each call below with `kernels` is, for ReferenceKernels, the plain kernel of mpm/transfer/
@@ -44,9 +47,12 @@ struct ForwardEuler {
   /// 5. Nodal forces \f$ \mathbf f_I^{k+1} = \mathbf f_I^{int} + \mathbf f_I^{ext} \f$, Eqs. (14)-(15), from the
   ///    stress just updated (\ref add_nodal_forces); the fixed components become reactions (\ref store_reactions).
   /// 6. Momentum balance, Eq. (12): \f$ \mathbf p_I \mathrel{+}= \Delta t\, \mathbf f_I \f$ (\ref update_nodal_momentum).
-  /// 7. G2P, Eqs. (19)-(22): \f$ \mathbf v_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf f_I / m_I \f$,
-  ///    \f$ \mathbf x_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf p_I / m_I \f$ with the updated momentum
-  ///    (\ref forward_euler_particle_update).
+  /// 7. G2P, Eqs. (19)-(22) (\ref forward_euler_g2p): the nodal rates \f$ \mathbf a_I = \mathbf f_I / m_I \f$ and
+  ///    \f$ \mathbf v_I^{k+1} = \mathbf p_I^{k+1} / m_I \f$; the position variant's nodal velocity
+  ///    \f$ \mathbf v_I \f$ (\f$ \mathbf v_I^{k+1} \f$, or \f$ \mathbf v_I^k \f$ under `start`);
+  ///    \f$ \mathbf v_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf a_I \f$,
+  ///    \f$ \mathbf x_p \mathrel{+}= \Delta t \sum_I N_{Ip} \mathbf v_I \f$ (\ref forward_euler_particle_update);
+  ///    the velocity variant's rule (FLIP: nothing more; the PIC/FLIP blend).
   ///
   /// `observer.after(phase, particles, grid)` is called after each phase, in the order of `phases`: the loop times
   /// them, `mpm trace` prints them; NoPhaseObserver watches nothing.
@@ -76,8 +82,9 @@ struct ForwardEuler {
     // 6. Momentum balance, Eq. (12): p_I^{k+1} = p_I^k + dt f_I.
     update_nodal_momentum(dt, grid);
     observer.after(Phase::momentum_balance, particles, grid);
-    // 7. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
-    forward_euler_particle_update(kernels, stencils, grid, dt, position_velocity, particles, flip_fraction);
+    // 7. G2P, Eqs. (19)-(22): a_I = f_I / m_I, v_I^{k+1} = p_I^{k+1} / m_I; the variant's v_I;
+    //    v_p += dt sum N a_I, x_p += dt sum N v_I; the variant's particle velocity (FLIP or the blend).
+    forward_euler_g2p(kernels, stencils, grid, dt, position_velocity, particle_velocity, particles);
     observer.after(Phase::euler_update, particles, grid);
   }
 

@@ -38,8 +38,11 @@ namespace mpm {
 struct NewmarkPredictorCorrector {
   static constexpr const char* name = "npc";
   double newmark_gamma = 0.5;
-  NewmarkPositionVelocity position_velocity = NewmarkPositionVelocity::projected;
-  NewmarkParticleVelocity particle_velocity = NewmarkParticleVelocity::eq32;
+  /// The variants, chosen once per run (mpm/run.hpp), each a type with its own step: the nodal velocity of Eq. (33)
+  /// (NewmarkMoveWithVelocityK, Eq. (33) as printed; NewmarkMoveWithVelocityK1, the authors' code;
+  /// NewmarkMoveWithVelocityPred) and the particle velocity (Eq32Velocity, the paper's; NewmarkAverageVelocity).
+  NewmarkPositionRule position_velocity = NewmarkMoveWithVelocityK{};
+  NewmarkVelocityRule particle_velocity = Eq32Velocity{};
 
   /// `Kernels` is the layer every transfer of the step is taken from (mpm/core/kernels.hpp), chosen once per run by
   /// `solver.kernels`: each call below with `kernels` is, for ReferenceKernels, the plain kernel of mpm/transfer/
@@ -63,11 +66,14 @@ struct NewmarkPredictorCorrector {
   /// 5. Corrector, Eq. (30):
   ///    \f$ \mathbf v_I^{k+1} = \mathbf v_I^{pred} + \gamma\,\Delta t\, \mathbf f_I^{k+1} / m_I \f$
   ///    (\ref newmark_corrector) [step 7].
-  /// 6. Particle update, Eqs. (31)-(33): \f$ \mathbf a_p^{k+1} = \sum_I N_{Ip} \mathbf f_I^{k+1} / m_I \f$,
+  /// 6. Particle update, Eqs. (31)-(33) (\ref newmark_g2p): the nodal rate
+  ///    \f$ \mathbf a_I^{k+1} = \mathbf f_I^{k+1} / m_I \f$; the position variant's nodal velocity
+  ///    \f$ \mathbf v_I \f$ (\f$ \mathbf v_I^k = \mathbf p_I^k / m_I \f$ by default); then, particle by particle,
+  ///    \f$ \mathbf a_p^{k+1} = \sum_I N_{Ip} \mathbf a_I^{k+1} \f$,
   ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t\, \mathbf a_p^{k+1} \f$,
-  ///    \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I^k
+  ///    \f$ \mathbf x_p^{k+1} = \mathbf x_p^k + \Delta t \sum_I N_{Ip} \mathbf v_I
   ///    + \tfrac12 \Delta t^2 \mathbf a_p^{k+1} \f$
-  ///    (\ref newmark_particle_update); with particle_velocity = average, Eq. (23)'s
+  ///    (\ref newmark_particle_update); with the velocity variant NewmarkAverageVelocity, Eq. (23)'s
   ///    \f$ \mathbf v_p^{k+1} = \mathbf v_p^k + \Delta t ((1-\gamma) \mathbf a_p^k + \gamma \mathbf a_p^{k+1}) \f$
   ///    instead of Eq. (32) [step 8].
   ///
@@ -97,9 +103,9 @@ struct NewmarkPredictorCorrector {
     // 5. Corrector, Eq. (30): v_I^{k+1} = v_I^pred + gamma dt f_I / m_I.
     newmark_corrector(newmark_gamma, dt, grid);
     observer.after(Phase::corrector, particles, grid);
-    // 6. Particle update, Eqs. (31)-(33) (or Eq. (23) for the velocity).
-    newmark_particle_update(kernels, stencils, grid, newmark_gamma, dt, position_velocity, particles,
-                            particle_velocity);
+    // 6. Particle update, Eqs. (31)-(33): a_I^{k+1} = f_I / m_I; the variant's v_I; a_p^{k+1} = sum N a_I^{k+1},
+    //    v_p^{k+1} by the variant's rule (Eq. (32) or Eq. (23)), x_p += dt sum N v_I + dt^2 / 2 a_p^{k+1}.
+    newmark_g2p(kernels, stencils, grid, newmark_gamma, dt, position_velocity, particle_velocity, particles);
     observer.after(Phase::newmark_update, particles, grid);
   }
 

@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <variant>
 
 #include "mpm/core/kernels.hpp"
 #include "mpm/core/step_phases.hpp"
@@ -33,20 +34,38 @@
 
 namespace mpm {
 
-/// Where USL and MUSL take the nodal velocity of the stress update from.
-enum class StressLastVelocity {
-  updated_nodal,     ///< USL: \f$ \mathbf p_I^{k+1} / m_I \f$
-  reprojected_particles  ///< MUSL: \f$ \sum_p N_{Ip} m_p \mathbf v_p^{k+1} / m_I \f$
+/// USL's nodal momentum of the stress update: \f$ \mathbf p_I^{k+1} \f$ of the momentum balance as it stands, so
+/// \f$ \mathbf v_I^{k+1} = \mathbf p_I^{k+1} / m_I \f$; no phase of its own (USL skips phase 7).
+struct UslMomentumK1 {
+  template <class Kernels, int Dim, class Observer>
+  void operator()(const Kernels&, const Model<Dim>&, const Stencils<Dim>&, Particles<Dim>&, GridFields<Dim>&,
+                  Observer&) const {}
 };
+
+/// MUSL's nodal momentum of the stress update, phase 7: the updated particle velocities projected to the nodes again,
+/// \f$ \mathbf p_I^{k+1} = \sum_p N_{Ip} m_p \mathbf v_p^{k+1} \f$ (\ref nodal_momentum_from_particles), held at
+/// the walls (\ref impose_fixed_velocity).
+struct MuslMomentumK1 {
+  template <class Kernels, int Dim, class Observer>
+  void operator()(const Kernels& kernels, const Model<Dim>& model, const Stencils<Dim>& stencils, Particles<Dim>& particles,
+                  GridFields<Dim>& grid, Observer& observer) const {
+    nodal_momentum_from_particles(kernels, particles, stencils, grid);
+    impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    observer.after(Phase::reprojection, particles, grid);
+  }
+};
+
+/// Where USL and MUSL take the nodal velocity of the stress update from, one type each, chosen once per run.
+using StressLastVelocity = std::variant<UslMomentumK1, MuslMomentumK1>;
 
 /// Forward Euler, update stress last (USL) or modified update stress last (MUSL): one step() per time step,
 /// chosen once per run as the Integrator of mpm::Simulation (`solver.stress_update`). The options of the
 /// paper's forward Euler (the position update's velocity, the PIC/FLIP blend) apply unchanged.
 struct UpdateStressLast {
   static constexpr const char* name = "fe";
-  StressLastVelocity stress_velocity = StressLastVelocity::updated_nodal;
-  EulerPositionVelocity position_velocity = EulerPositionVelocity::updated;
-  double flip_fraction = 1.0;
+  StressLastVelocity stress_velocity = UslMomentumK1{};                ///< USL or MUSL
+  EulerPositionRule position_velocity = EulerMoveWithVelocityK1{};  ///< as forward Euler's (ForwardEuler)
+  EulerVelocityRule particle_velocity = FlipVelocity{};             ///< as forward Euler's (ForwardEuler)
 
   /// `Kernels` is the layer every transfer of the step is taken from (mpm/core/kernels.hpp), chosen once per run by
   /// `solver.kernels`: each call below with `kernels` is, for ReferenceKernels, the plain kernel of mpm/transfer/
@@ -62,8 +81,9 @@ struct UpdateStressLast {
   ///    (\ref add_nodal_forces, \ref store_reactions).
   /// 5. Momentum balance, Eq. (12): \f$ \mathbf p_I \mathrel{+}= \Delta t\, \mathbf f_I^k \f$
   ///    (\ref update_nodal_momentum).
-  /// 6. G2P, Eqs. (19)-(22), as forward Euler's (\ref forward_euler_particle_update).
-  /// 7. MUSL only (USL skips it): \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p^{k+1} \f$
+  /// 6. G2P, Eqs. (19)-(22), as forward Euler's with its variants (\ref forward_euler_g2p).
+  /// 7. MUSL only (MuslMomentumK1; USL's UslMomentumK1 skips it):
+  ///    \f$ \mathbf p_I = \sum_p N_{Ip} m_p \mathbf v_p^{k+1} \f$
   ///    (\ref nodal_momentum_from_particles), and the boundary conditions again.
   /// 8. \f$ \mathbf v_I^{k+1} = \mathbf p_I / m_I \f$ (\ref nodal_velocity_from_momentum).
   /// 9. Update stress last: strain rate, Eq. (16); density, Eq. (17); stress, Eq. (3)
@@ -94,15 +114,12 @@ struct UpdateStressLast {
     // 5. Momentum balance, Eq. (12): p_I^{k+1} = p_I^k + dt f_I.
     update_nodal_momentum(dt, grid);
     observer.after(Phase::momentum_balance, particles, grid);
-    // 6. G2P, Eqs. (19)-(22): v_p += dt sum N f/m, x_p += dt sum N p/m.
-    forward_euler_particle_update(kernels, stencils, grid, dt, position_velocity, particles, flip_fraction);
+    // 6. G2P, Eqs. (19)-(22), as forward Euler's: v_p += dt sum N a_I, x_p += dt sum N v_I (the variants').
+    forward_euler_g2p(kernels, stencils, grid, dt, position_velocity, particle_velocity, particles);
     observer.after(Phase::euler_update, particles, grid);
-    // 7. MUSL: the new particle velocities projected to the nodes again, and held at the walls.
-    if (stress_velocity == StressLastVelocity::reprojected_particles) {
-      nodal_momentum_from_particles(kernels, particles, stencils, grid);
-      impose_fixed_velocity(model.fixed, grid.nodal_momentum);
-      observer.after(Phase::reprojection, particles, grid);
-    }
+    // 7. MUSL: the new particle velocities projected to the nodes again, and held at the walls (USL: nothing).
+    std::visit([&](const auto& p_I_k1) { p_I_k1(kernels, model, stencils, particles, grid, observer); },
+               stress_velocity);
     // 8. v_I^{k+1} = p_I^{k+1} / m_I.
     nodal_velocity_from_momentum(grid);
     observer.after(Phase::velocity_k1, particles, grid);
@@ -125,7 +142,7 @@ TEST_CASE("USL, MUSL: one step of the worked example by hand, node 2 fixed: each
   // USL: strain rates from v_I^{k+1}: 1 - 3 = -2 and -1, so sigma = 25 * 0.2 * rate = (-10, -5).
   // MUSL: p_I = (0.75 * 2 * 3, 0.25 * 2 * 3 + 0.5 * 4 * -0.5, held) = (4.5, 0.5, 0), v_I = (3, 0.2, 0): rates -2.8 and
   // -0.2, sigma = (-14, -1). (USF takes v_I^k: rates -2 and 1, sigma = (-10, 5), paper/12_worked_example.md.)
-  auto step = [](StressLastVelocity velocity) {
+  auto step = [](const StressLastVelocity& velocity) {
     testing::WorkedExample example;
     Model<1> model;
     model.grid = example.grid;
@@ -139,17 +156,18 @@ TEST_CASE("USL, MUSL: one step of the worked example by hand, node 2 fixed: each
                     observer);
     return example.particles;
   };
-  for (auto velocity : {StressLastVelocity::updated_nodal, StressLastVelocity::reprojected_particles}) {
+  const StressLastVelocity both[] = {UslMomentumK1{}, MuslMomentumK1{}};
+  for (const StressLastVelocity& velocity : both) {
     const Particles<1> particles = step(velocity);
     CHECK(particles.velocity[0][0] == doctest::Approx(3.0));
     CHECK(particles.velocity[1][0] == doctest::Approx(-0.5));
     CHECK(particles.position[0][0] == doctest::Approx(0.75));
     CHECK(particles.position[1][0] == doctest::Approx(1.6));
   }
-  const Particles<1> usl = step(StressLastVelocity::updated_nodal);
+  const Particles<1> usl = step(UslMomentumK1{});
   CHECK(usl.stress[0](0, 0) == doctest::Approx(-10.0));
   CHECK(usl.stress[1](0, 0) == doctest::Approx(-5.0));
-  const Particles<1> musl = step(StressLastVelocity::reprojected_particles);
+  const Particles<1> musl = step(MuslMomentumK1{});
   CHECK(musl.stress[0](0, 0) == doctest::Approx(-14.0));
   CHECK(musl.stress[1](0, 0) == doctest::Approx(-1.0));
 }
@@ -170,7 +188,7 @@ TEST_CASE("USL, MUSL: stability limits by hand: USL at CFL 1/sqrt(2) from the st
   for (int cell = 0; cell < cells; ++cell) bar.add(Vector<1>(cell + 0.5), 1.0, 1.0, Vector<1>::Zero(), Vector<1>(0.5));
   LinearShape<1> shape(model.grid);
   UpdateStressLast usl, musl;
-  musl.stress_velocity = StressLastVelocity::reprojected_particles;
+  musl.stress_velocity = MuslMomentumK1{};
   auto radius = [&](const UpdateStressLast& integrator, double dt) { return spectral_radius(linearised_step_matrix(model, bar, shape, integrator, dt)); };
   CHECK(radius(usl, 0.700) <= 1.0 + 1e-9);
   CHECK(radius(usl, 0.714) > 1.0 + 1e-3);
