@@ -156,10 +156,10 @@ RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Di
   });
 }
 
-// The runs are compiled once, for Dim = 1 and 2, in mpm/run_1d.cpp and mpm/run_2d.cpp (the fast kernels) and
-// mpm/run_reference_1d.cpp and mpm/run_reference_2d.cpp (the reference kernels), in the library mpm of
-// CMakeLists.txt, not again in every program and test file that runs a scene: each instantiates Simulation for
-// 5 shape functions x 3 integrators (USF, USL/MUSL, NPC).
+// The runs are compiled once, for Dim = 1 and 2, in mpm/run_1d.cpp and mpm/run_2d.cpp (the fast kernels: the library
+// mpm of CMakeLists.txt) and mpm/run_reference_1d.cpp and mpm/run_reference_2d.cpp (the reference kernels, and
+// run_setup, which takes either: the library mpm_reference), not again in every program and test file that runs a
+// scene: each instantiates Simulation for 5 shape functions x 3 integrators (USF, USL/MUSL, NPC).
 extern template Setup<1> build_setup<1>(const io::Scene&);
 extern template Setup<2> build_setup<2>(const io::Scene&);
 extern template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);

@@ -1,6 +1,6 @@
 /// \file
-/// Nothing is allocated inside the time step: every array is sized before the
-/// first step. This test replaces the global operator new with a counting one and checks that no
+/// Nothing is allocated inside the time step once it has run: every array is sized before the first step, but
+/// for the fast layer's copies of the scatter, allocated by the first step (mpm/fast/scatter.hpp, ScatterScratch). This test replaces the global operator new with a counting one and checks that no
 /// allocation happens between the first and the last sample of a run, for every shape function
 /// and integrator, in 1D and 2D.
 #include <doctest/doctest.h>

@@ -93,8 +93,9 @@ void compute_stencils(const FastKernels& kernels, Shape& shape, const std::vecto
 }
 
 /// For each chunk of the stencils' particles, the nodes its stencils reach: those that compute_stencils noted in
-/// `scratch` for these stencils, else (stencils computed otherwise, as the doctests do) found by a search over
-/// every node of every stencil, the same windows.
+/// `scratch` for these stencils, else (stencils computed otherwise: the doctests, tests/integrator_modes.cpp
+/// and the linearised step of the stability analysis) found by a search over every node of
+/// every stencil, the same windows.
 template <int Dim>
 const ChunkNodes& chunk_windows(ScatterScratch& scratch, const Stencils<Dim>& stencils) {
   const int count = static_cast<int>(stencils.count.size()), chunks = chunks_of(count);

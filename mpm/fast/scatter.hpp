@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -174,10 +175,11 @@ class ScatterScratch {
 
   /// Buffer number `index` of the copies of values of type T (a double, or a vector of 1 or 2 components):
   /// `room` values, all zero, allocated by its first use in a run (and again should the room change); later uses
-  /// allocate nothing.
+  /// allocate nothing. A buffer returned stays where it is when a later call adds another (the buffers are a
+  /// std::deque): a scatter asks for all of its fields' buffers in one argument list, in no fixed order.
   template <class T>
   std::vector<T>& copies(std::size_t index, long room) {
-    std::vector<std::vector<T>>& buffers = std::get<std::vector<std::vector<T>>>(buffers_);
+    std::deque<std::vector<T>>& buffers = std::get<std::deque<std::vector<T>>>(buffers_);
     if (buffers.size() <= index) buffers.resize(index + 1);
     if (static_cast<long>(buffers[index].size()) != room) {
       T zero;
@@ -188,8 +190,8 @@ class ScatterScratch {
   }
 
  private:
-  std::tuple<std::vector<std::vector<double>>, std::vector<std::vector<Vector<1>>>,
-             std::vector<std::vector<Vector<2>>>> buffers_;
+  std::tuple<std::deque<std::vector<double>>, std::deque<std::vector<Vector<1>>>,
+             std::deque<std::vector<Vector<2>>>> buffers_;
 };
 
 }  // namespace mpm::fast
@@ -357,6 +359,13 @@ TEST_CASE("Scatter: the workspace's buffers of copies, zero, allocated at their 
   CHECK(scratch.copies<Vector<2>>(0, 4).size() == 4);
   CHECK(scratch.copies<Vector<2>>(2, 40).size() == 40);  // another room: allocated again, zero
   CHECK(scratch.copies<Vector<2>>(2, 40)[7].isZero(0.0));
+  // A buffer added later moves none of those handed out before (a scatter asks for them in no fixed order).
+  ScatterScratch fresh;
+  std::vector<double>& first = fresh.copies<double>(0, 3);
+  first[1] = 4.0;
+  for (std::size_t index = 1; index < 40; ++index) fresh.copies<double>(index, 3);
+  CHECK(&fresh.copies<double>(0, 3) == &first);
+  CHECK(first[1] == 4.0);
 }
 
 }  // namespace mpm::fast

@@ -46,7 +46,7 @@ struct NewmarkPredictorCorrector {
 
   /// `Kernels` is the layer every transfer of the step is taken from (mpm/core/kernels.hpp), chosen once per run by
   /// `solver.kernels`: each call below with `kernels` is, for ReferenceKernels, the plain kernel of mpm/transfer/
-  /// that its phase names; for FastKernels (the default) its fast form in mpm/fast/.
+  /// that its phase names; for FastKernels (the scene's default, `solver.kernels = "fast"`) its fast form in mpm/fast/.
   ///
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$. The stencils hold \f$ N_{Ip} \f$ and
   /// \f$ \nabla N_{Ip} \f$ at \f$ \mathbf x_p^k \f$; body_force holds \f$ \mathbf b_p \f$ per particle.

@@ -69,7 +69,7 @@ struct UpdateStressLast {
 
   /// `Kernels` is the layer every transfer of the step is taken from (mpm/core/kernels.hpp), chosen once per run by
   /// `solver.kernels`: each call below with `kernels` is, for ReferenceKernels, the plain kernel of mpm/transfer/
-  /// that its phase names; for FastKernels (the default) its fast form in mpm/fast/.
+  /// that its phase names; for FastKernels (the scene's default, `solver.kernels = "fast"`) its fast form in mpm/fast/.
   ///
   /// One step from \f$ t_k \f$ to \f$ t_k + \Delta t \f$, the stencils at \f$ \mathbf x_p^k \f$. Its numbered
   /// phases, as `mpm trace` numbers them; phase 0 resets the nodal fields (GridFields::reset):

@@ -114,7 +114,8 @@ inline double initial_time_step(const Scene& scene) {
 
 /// The estimate, an upper bound of the peak resident memory: the particles' arrays thrice (seeding doubles vectors;
 /// the simulation holds a copy), the stencils of the run or of its CFL check's body if larger, and the nodal fields
-/// with one copy per chunk of the scatter beyond the first (mpm/core/parallel.hpp; in 1D most of the memory).
+/// with one copy per chunk of the scatter beyond the first (held by the fast layer's ScatterScratch,
+/// mpm/fast/scatter.hpp; at most three vector fields at once; in 1D most of the memory).
 inline SceneCost estimate_cost(const Scene& scene) {
   const int d = scene.dimension;
   SceneCost cost;
@@ -149,7 +150,7 @@ inline SceneCost estimate_cost(const Scene& scene) {
   cost.particle_bytes = cost.particles * (3 * particle_arrays + 8.0 * d);
   cost.stencil_bytes = std::max(cost.particles, warning_body_particles(scene)) * (4 + cost.nodes_per_particle * entry);
   const double copies = std::clamp(std::floor(cost.particles / items_per_chunk), 1.0, double(max_chunks)) - 1.0;
-  cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d + copies * (8 + 3 * 8.0 * d));  // GridFields<Dim>: m_I, 7 vectors
+  cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d + copies * (8 + 3 * 8.0 * d));  // GridFields<Dim>: m_I, 7 vectors; the copies
   cost.time_step = initial_time_step(scene);
   cost.steps = std::ceil(scene.control.end_time / cost.time_step);
   return cost;
