@@ -9,7 +9,8 @@ and survives when every test passes.
 
 Two stages, so that about a hundred mutants run in minutes on two cores:
   1. the doctests of the mutated header and of the headers it includes, compiled as a program of their
-     own (CMake target header_probe: one translation unit, built in seconds), in --jobs copies of the
+     own (CMake target header_probe: one translation unit, built in seconds; for a header of mpm/cli/,
+     header_probe_library, linked with the libraries that compile the runs), in --jobs copies of the
      tree side by side;
   2. a mutant that survives them is run against the whole of mpm_tests (every doctest and the
      whole-method tests of tests/: free fall, momentum, energy, the Dyka bar, the soil block), rebuilt
@@ -162,10 +163,12 @@ class Copy:
     def probe(self, header):
         """(exit code of the probe or 'build' when it does not build, output)."""
         self.write_probe(header)
-        code, output, _ = self.build_target("header_probe")
+        # The commands' doctests run scenes and stability analyses, compiled in the libraries: their probe links them.
+        target = "header_probe_library" if header.startswith("mpm/cli/") else "header_probe"
+        code, output, _ = self.build_target(target)
         if code != 0:
             return "build", output
-        code, output, _ = run([os.path.join(self.build, "bin", "header_probe"), "--abort-after=1"], timeout=TEST_TIMEOUT)
+        code, output, _ = run([os.path.join(self.build, "bin", target), "--abort-after=1"], timeout=TEST_TIMEOUT)
         return code, output
 
 
