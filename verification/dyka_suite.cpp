@@ -40,18 +40,6 @@ void write_report(const std::string& path, Part part, const std::vector<Section>
   for (const auto& section : sections) dyka::write_section(report, section);
 }
 
-/// "--part figures" or "--part studies" (removed from argv); 0 when absent or unknown.
-int suite_part(int& argc, char** argv) {
-  for (int k = 1; k + 1 < argc; ++k)
-    if (std::string(argv[k]) == "--part") {
-      const std::string value = argv[k + 1];
-      for (int j = k; j + 2 < argc; ++j) argv[j] = argv[j + 2];
-      argc -= 2;
-      return value == "figures" ? 1 : value == "studies" ? 2 : 0;
-    }
-  return 0;
-}
-
 /// make figures: the sweep (the authors' beta to authors_figures_cells), the large CFLs, the gammas; Figs. 6-10.
 std::vector<Section> figures_part(Runs& runs) {
   authors_cells.erase(std::remove_if(authors_cells.begin(), authors_cells.end(), [](int n) { return n > authors_figures_cells; }),

@@ -10,6 +10,9 @@
 # Parts:
 #   dyka         the Dyka bar beyond the paper: dyka_fair, the two beta rules on every mesh, the choices, the energy
 #                over 10 periods, today's baselines and the work-precision chart, the stability map (dyka_studies.sh)
+#   soil         the soil block beyond the paper: today's baselines and their error-cost fronts on the 2 m grid, the
+#                refinement to 1 and 0.5 m cells, cell crossing, nu = 0.3, the stability sweep, the boundaries, free
+#                sides (soil_figures.sh studies)
 #   smooth       the vibrating bar's convergence, grid crossing isolated, the 2D manufactured solutions, Fig. 6 at
 #                2 particles per cell against the Dyka part's sweep (smooth_figures.sh)
 #   disks        the colliding disks of Sulsky, Chen and Schreyer (disks_figures.sh)
@@ -64,6 +67,9 @@ done_line() { echo "studies: $1 done ($(( $(date +%s) - start )) s)"; }
 budget_part dyka suite dyka_studies "$out/report/dyka.log" ||
   { echo "studies: the Dyka bar beyond the paper failed, see $out/report/dyka.log"; status=1; }
 done_line "Dyka bar"
+budget_part soil suite soil_figures "$out/report/soil.log" studies ||
+  { echo "studies: the soil block beyond the paper failed, see $out/report/soil.log"; status=1; }
+done_line "soil block"
 budget_part smooth suite smooth_figures "$out/report/smooth.log" ||
   { echo "studies: smooth data failed, see $out/report/smooth.log"; status=1; }
 # Fig. 6 at 2 particles per cell compares the smooth part's runs with the Dyka part's sweep.

@@ -42,6 +42,18 @@ inline unsigned suite_threads(int& argc, char** argv) {
   return threads;
 }
 
+/// A suite's part: 1 for "--part figures", 2 for "--part studies" (removed from argv); 0 when absent or unknown.
+inline int suite_part(int& argc, char** argv) {
+  for (int k = 1; k + 1 < argc; ++k)
+    if (std::string(argv[k]) == "--part") {
+      const std::string value = argv[k + 1];
+      for (int j = k; j + 2 < argc; ++j) argv[j] = argv[j + 2];
+      argc -= 2;
+      return value == "figures" ? 1 : value == "studies" ? 2 : 0;
+    }
+  return 0;
+}
+
 /// The group of a case, for the progress lines: its name without the last "_part" (dyka_lme_npc_640 ->
 /// dyka_lme_npc, the mesh sweep of LME with the predictor-corrector).
 inline std::string case_group(const std::string& name) {

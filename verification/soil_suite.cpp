@@ -1,9 +1,12 @@
-// The soil-block part of `make figures` (paper section 3.2, Figs. 11-13; paper/08_test_cases.md, paper/07_exact_column.md): runs every
-// case in parallel on the machine's cores, writes the data of each figure as CSV into DATA_DIR
-// (files soil_*.csv), and the report fragment REPORT (Markdown) with each claim, the numbers we
-// measured and whether it holds. Exits 1 when a hard check (a bound of the theory) fails.
+// The soil block (paper section 3.2, paper/08_test_cases.md, paper/07_exact_column.md) in two parts: `make figures`
+// runs the paper's Figs. 11-13 on its 2 m grid (--part figures: every shape function with NPC and FE, and FE's stress
+// updates USL and MUSL); `make studies` runs everything beyond the paper (--part studies: the error-cost fronts of today's
+// baselines with repeated timings, the refinement to 1 and 0.5 m cells, cell crossing, nu = 0.3, the stability sweep, the
+// boundaries, free sides), and the 2 m grid's runs again for its comparisons. Each part runs its cases in parallel on the
+// machine's cores, writes its data as CSV into DATA_DIR (files soil_*.csv) and its report fragment REPORT (Markdown) with
+// each claim, the numbers we measured and whether it holds. Exits 1 when a hard check (a bound of the theory) fails.
 //
-//   build/bin/soil_suite DATA_DIR REPORT SCENES_DIR
+//   build/bin/soil_suite DATA_DIR REPORT SCENES_DIR --part figures|studies [--threads N]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,6 +34,9 @@ struct CaseSpec {
   std::vector<std::string> overrides;
   bool must_complete = false;  ///< a run of Figs. 12-13, nu = 0.3 or free sides: failing it is a hard failure
 };
+
+/// Which target's part of the suite runs (`--part`).
+enum class Part { figures, studies };
 
 // The shape functions of Fig. 13, all on a grid whose edges are the walls and the base
 // (scenes/soil_block.toml): LME interpolates there, so the fixed nodes hold the particles, and
@@ -75,8 +81,21 @@ const std::vector<double> refinement{2.0, 1.0, 0.5};
 const std::vector<double> sweep_cfl{1.0, 1.05, 1.1, 1.15, 1.2, 1.25, 1.3, 1.35, 1.4, 1.45, 1.5};
 std::string sweep_name(double nu, double cfl) { return "lme3_npc_h2_nu" + number(nu, "%g") + "_cfl" + number(cfl, "%g"); }
 
-/// Most expensive first, so that the threads finish together.
-std::vector<CaseSpec> all_cases() {
+/// Figs. 12 and 13 on the paper's 2 m grid: every shape function with NPC and with FE, and FE's stress updates.
+std::vector<CaseSpec> figure_cases() {
+  std::vector<CaseSpec> cases;
+  for (const auto& integrator : {"npc", "fe"})
+    for (const auto& method : methods)
+      cases.push_back({run_name(method, integrator, 2.0), "soil_block.toml",
+                       join(method_overrides(method), {std::string("solver.integrator=\"") + integrator + "\""}), true});
+  for (const auto& method : stress_updates)
+    cases.push_back({run_name(method, "fe", 2.0), "soil_block.toml", join(method_overrides(method), {"solver.integrator=\"fe\""})});
+  return cases;
+}
+
+/// make studies: the refinement (most expensive first, so that the threads finish together), the 2 m grid's runs of
+/// figure_cases() again, nu = 0.3, free sides, the wall margins and the stability sweep.
+std::vector<CaseSpec> study_cases() {
   std::vector<CaseSpec> cases;
   for (double h : {0.5, 1.0})  // refinement, predictor-corrector (h = 2 m is the paper's grid, below)
     for (const auto& method : {"lme0.8", "lme3", "bspline3", "bspline2", "ugimp", "linear"})
@@ -85,12 +104,7 @@ std::vector<CaseSpec> all_cases() {
     for (const auto& method : fe_refined)
       cases.push_back({run_name(method, "fe", h), "soil_block.toml",
                        join(join(method_overrides(method), {"solver.integrator=\"fe\""}), cell_overrides(h))});
-  for (const auto& integrator : {"npc", "fe"})  // Figs. 12 and 13 on the paper's 2 m grid
-    for (const auto& method : methods)
-      cases.push_back({run_name(method, integrator, 2.0), "soil_block.toml",
-                       join(method_overrides(method), {std::string("solver.integrator=\"") + integrator + "\""}), true});
-  for (const auto& method : stress_updates)
-    cases.push_back({run_name(method, "fe", 2.0), "soil_block.toml", join(method_overrides(method), {"solver.integrator=\"fe\""})});
+  for (auto& spec : figure_cases()) cases.push_back(std::move(spec));
   cases.push_back({"lme3_npc_h2_nu0.3", "soil_block.toml", {"material.poisson_ratio=0.3"}, true});
   cases.push_back({"lme3_npc_h2_nu0.3_wall_margins", "soil_block.toml", join({"material.poisson_ratio=0.3"}, wall_margins)});
   cases.push_back({"lme3_npc_h2_free_sides", "soil_block_free_sides.toml", {}, true});
@@ -118,9 +132,10 @@ std::string slowest(const std::vector<Outcome>& outcomes) {
 
 
 /// The report's opening: the set-up, the choices where the paper is silent, the finite-strain gap, the wall time.
-void write_introduction(std::ostream& report, const Outcome& paper, size_t runs, double runs_seconds, double suite_seconds,
+void write_introduction(std::ostream& report, Part part, const Outcome& paper, size_t runs, double runs_seconds, double suite_seconds,
                         unsigned threads, const std::string& slowest_run) {
-  report << "## Soil block under ramped gravity (paper section 3.2, Figs. 11-13)\n\n"
+  report << (part == Part::figures ? "## Soil block under ramped gravity (paper section 3.2, Figs. 11-13)\n\n"
+                                   : "## Soil block beyond the paper (section 3.2)\n\n")
          << "A 10 m x 10 m elastic block in plane strain (E = 5 MPa, rho = 6000 kg/m^3, nu = 0), 2 m cells with 2 x 2 particles "
             "at the quarter points, on a frictionless base between frictionless walls (`scenes/soil_block.toml`; free sides: "
             "`scenes/soil_block_free_sides.toml`), under gravity ramped by Eq. (44) over 10 s (T = 20 s) and evaluated at the end "
@@ -138,7 +153,8 @@ void write_introduction(std::ostream& report, const Outcome& paper, size_t runs,
             "strain, with Hooke's law on it. Its static column (`mpm/exact/column_log_strain.hpp`) has the same stress "
             "sigma(Y) = -rho g (H - Y) but settles "
          << verification::metres(-verification::log_strain_column(paper.result.scene).displacement(10.0))
-         << " at the top instead of the small-strain 0.5886 m the paper quotes: 3.8 % less. Our runs converge to it (below); "
+         << " at the top instead of the small-strain 0.5886 m the paper quotes: 3.8 % less. Our runs converge to it ("
+         << (part == Part::figures ? "`make studies` refines the grid to 1 and 0.5 m cells" : "below") << "); "
             "every comparison with the small-strain exact solution carries that model gap, and the tolerances include it.\n\n"
          << "Wall time: " << runs << " runs in " << number(runs_seconds, "%.1f") << " s on " << threads << " threads (the whole suite "
          << number(suite_seconds, "%.1f") << " s); per run in `data/soil_summary.csv`. The paper's block (LME gamma = 3, NPC, 2 m) took "
@@ -202,18 +218,8 @@ void write_refinement_table(std::ostream& report, const verification::SoilLookup
   report << "\n";
 }
 
-/// The data of the figures: the geometry, every settlement history, Fig. 12's stresses, nu = 0.3, the refinement, the summary.
-void write_figure_data(const std::vector<Outcome>& outcomes, const verification::SoilLookup& get, const std::string& scenes,
-                       const std::string& folder) {
-  verification::write_geometry(mpm::load_scene(scenes + "/soil_block.toml", {}), folder);
-  for (const auto& outcome : outcomes)
-    verification::write_settlement(outcome.result, outcome.settlement, folder + "/soil_settlement_" + outcome.result.name + ".csv");
-  const Outcome& paper = get("lme3_npc_h2");  // Fig. 12: LME gamma = 3, NPC, CFL 0.1
-  for (const auto& snap : paper.result.snapshots) {
-    const std::string tag = number(snap.time, "%g");
-    verification::write_particle_stress(paper.result, snap, folder + "/soil_stress_t" + tag + ".csv");
-    verification::write_stress_profile(paper.result.scene, snap.time, folder + "/soil_stress_profile_t" + tag + ".csv");
-  }
+/// make studies' data: nu = 0.3's stresses at 20 s and the refinement of each method.
+void write_study_data(const verification::SoilLookup& get, const std::string& folder) {
   const Outcome& poisson = get("lme3_npc_h2_nu0.3");
   if (!poisson.result.snapshots.empty())
     verification::write_particle_stress(poisson.result, poisson.result.snapshots.back(), folder + "/soil_poisson_t20.csv");
@@ -224,7 +230,23 @@ void write_figure_data(const std::vector<Outcome>& outcomes, const verification:
   };
   for (const auto& method : methods) write_refinement(method, "npc", "soil_refinement_" + method + ".csv");
   for (const auto& method : fe_refined) write_refinement(method, "fe", "soil_refinement_" + method + "_fe.csv");
+}
+
+/// The data of the figures: the geometry, every settlement history, Fig. 12's stresses, the summary; in make studies
+/// nu = 0.3 and the refinement.
+void write_figure_data(Part part, const std::vector<Outcome>& outcomes, const verification::SoilLookup& get, const std::string& scenes,
+                       const std::string& folder) {
   verification::write_summary(outcomes, folder + "/soil_summary.csv");
+  for (const auto& outcome : outcomes)
+    verification::write_settlement(outcome.result, outcome.settlement, folder + "/soil_settlement_" + outcome.result.name + ".csv");
+  if (part == Part::studies) return write_study_data(get, folder);
+  verification::write_geometry(mpm::load_scene(scenes + "/soil_block.toml", {}), folder);
+  const Outcome& paper = get("lme3_npc_h2");  // Fig. 12: LME gamma = 3, NPC, CFL 0.1
+  for (const auto& snap : paper.result.snapshots) {
+    const std::string tag = number(snap.time, "%g");
+    verification::write_particle_stress(paper.result, snap, folder + "/soil_stress_t" + tag + ".csv");
+    verification::write_stress_profile(paper.result.scene, snap.time, folder + "/soil_stress_profile_t" + tag + ".csv");
+  }
 }
 
 /// The claims of the report, by kind: the paper's and the theory's as one verdict each, and those over a study's domain.
@@ -243,13 +265,10 @@ std::vector<std::string> front_runs() {
   return names;
 }
 
-SuiteClaims evaluate_claims(const std::vector<CaseSpec>& cases, const std::vector<Outcome>& outcomes, const verification::SoilLookup& get) {
-  SuiteClaims c;
-  const Outcome& paper = get("lme3_npc_h2");
+/// The claims of make studies: the baselines' fronts, the refinement, crossing, nu = 0.3, the boundaries, the plane check,
+/// the stability sweep.
+void evaluate_study_claims(const verification::SoilLookup& get, SuiteClaims& c) {
   const Outcome& poisson = get("lme3_npc_h2_nu0.3");
-  c.fig12 = verification::fig12_claims(paper);
-  c.fig13 = {verification::fig13_settlement_claim(get)};
-  c.fig13_domain = verification::fig13_claims(get, methods, stress_updates);
   c.baselines = verification::baseline_claims(get, methods, stress_updates);
   c.refined = {verification::refinement_domain_claim(get, methods, refinement, "npc"),
                verification::finest_gap_claim(get, methods, refinement.back(), "npc")};
@@ -264,16 +283,30 @@ SuiteClaims evaluate_claims(const std::vector<CaseSpec>& cases, const std::vecto
   c.boundary = verification::boundary_claims(get);
   c.plane = verification::plane_claims(get("lme3_npc_h2_free_sides_nu0.3"), verification::stress_tolerance);
   c.stability = verification::stability_claims(get, poisson, sweep_cfl, sweep_name);
+}
+
+/// The claims of a part: Figs. 12 and 13 in make figures, everything beyond the paper in make studies; the hard checks
+/// of its runs in both.
+SuiteClaims evaluate_claims(Part part, const std::vector<CaseSpec>& cases, const std::vector<Outcome>& outcomes,
+                            const verification::SoilLookup& get) {
+  SuiteClaims c;
+  if (part == Part::figures) {
+    c.fig12 = verification::fig12_claims(get("lme3_npc_h2"));
+    c.fig13 = {verification::fig13_settlement_claim(get)};
+    c.fig13_domain = verification::fig13_claims(get, methods, stress_updates);
+  } else {
+    evaluate_study_claims(get, c);
+  }
   std::vector<const Outcome*> paper_runs, all_runs;
   for (size_t k = 0; k < cases.size(); ++k) {
     all_runs.push_back(&outcomes[k]);
     if (cases[k].must_complete) paper_runs.push_back(&outcomes[k]);
   }
-  c.runs = verification::run_claims(paper_runs, all_runs);
+  c.runs = verification::run_claims(part == Part::figures ? "Figs. 12-13" : "Figs. 12-13, nu = 0.3 and free sides", paper_runs, all_runs);
   return c;
 }
 
-/// Figs. 11-13 and today's baselines on the paper's grid.
+/// Figs. 11-13 on the paper's grid (make figures).
 void write_paper_sections(std::ostream& report, const verification::SoilLookup& get, const SuiteClaims& c) {
   report << "### Fig. 11: geometry, grid and boundary conditions\n\n"
          << "![Fig. 11](figures/soil_fig11_geometry.png)\n\n"
@@ -290,11 +323,16 @@ void write_paper_sections(std::ostream& report, const verification::SoilLookup& 
   write_fig13_table(report, get);
   verification::write_domain_claims(report, c.fig13_domain);
   verification::write_claims(report, c.fig13);
+}
+
+/// Today's baselines on the paper's grid (make studies): the Fig. 13 table again, and the error-cost fronts.
+void write_baseline_section(std::ostream& report, const verification::SoilLookup& get, const SuiteClaims& c) {
   report << "### Today's baselines on the paper's 2 m grid: B-splines, USL and MUSL\n\n"
-         << "Every run of the Fig. 13 table above, with forward Euler's stress updated last (USL) or by the modified update (MUSL) "
+         << "Every run of make figures' Fig. 13 table, repeated here, with forward Euler's stress updated last (USL) or by the modified update (MUSL) "
             "beside the default (USF). Cost: the run's CPU time (one thread per run), " << verification::timing_repeats
          << " more runs of each, interleaved, after the suite's runs; a run is off the front only when another is more accurate "
             "and faster by more than the range of their repeats (the table's wall time is the first run's time-step loop).\n\n";
+  write_fig13_table(report, get);
   verification::write_claims(report, c.baselines);
 }
 
@@ -342,8 +380,6 @@ void write_other_sections(std::ostream& report, const SuiteClaims& c) {
             "(equilibrium of the part above a material line whose ends are traction-free), and the mirror symmetry about "
             "x = W/2.\n\n";
   verification::write_domain_claims(report, c.plane);
-  report << "### Soil block: hard checks of the runs\n\n";
-  verification::write_claims(report, c.runs);
 }
 
 /// Whether every hard claim holds; each one that does not is printed.
@@ -409,29 +445,37 @@ void time_repeats(const std::vector<CaseSpec>& cases, const std::string& scenes,
 
 int main(int argc, char** argv) {
   const unsigned cores = verification::suite_threads(argc, argv);
-  if (argc != 4 || cores == 0) {
-    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR [--threads N]\n");
+  const int part_number = verification::suite_part(argc, argv);
+  if (argc != 4 || cores == 0 || part_number == 0) {
+    std::fprintf(stderr, "usage: soil_suite DATA_DIR REPORT SCENES_DIR --part figures|studies [--threads N]\n");
     return 2;
   }
+  const Part part = part_number == 1 ? Part::figures : Part::studies;
   const std::string folder = argv[1], report_path = argv[2], scenes = argv[3];
   const auto suite_start = std::chrono::steady_clock::now();
-  const auto cases = all_cases();
+  const auto cases = part == Part::figures ? figure_cases() : study_cases();
   std::vector<Outcome> outcomes;
   if (!run_all(cases, scenes, cores, outcomes)) return 2;
-  time_repeats(cases, scenes, cores, outcomes);
+  if (part == Part::studies) time_repeats(cases, scenes, cores, outcomes);
   std::map<std::string, const Outcome*> by_name;
   for (const auto& outcome : outcomes) by_name[outcome.result.name] = &outcome;
   const verification::SoilLookup get = [&](const std::string& name) -> const Outcome& { return *by_name.at(name); };
   const double runs_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
 
-  write_figure_data(outcomes, get, scenes, folder);
-  const SuiteClaims claims = evaluate_claims(cases, outcomes, get);
+  write_figure_data(part, outcomes, get, scenes, folder);
+  const SuiteClaims claims = evaluate_claims(part, cases, outcomes, get);
   const double suite_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
   std::ofstream report(report_path);
-  write_introduction(report, get("lme3_npc_h2"), outcomes.size(), runs_seconds, suite_seconds, cores, slowest(outcomes));
-  write_paper_sections(report, get, claims);
-  write_refinement_sections(report, get, claims);
-  write_other_sections(report, claims);
+  write_introduction(report, part, get("lme3_npc_h2"), outcomes.size(), runs_seconds, suite_seconds, cores, slowest(outcomes));
+  if (part == Part::figures) {
+    write_paper_sections(report, get, claims);
+  } else {
+    write_baseline_section(report, get, claims);
+    write_refinement_sections(report, get, claims);
+    write_other_sections(report, claims);
+  }
+  report << "### Soil block: hard checks of the runs\n\n";
+  verification::write_claims(report, claims.runs);
   const bool passed = hard_checks_pass(claims);
   std::printf("soil_suite: %zu runs in %.1f s, hard checks %s\n", outcomes.size(), suite_seconds, passed ? "hold" : "FAILED");
   return passed ? 0 : 1;
