@@ -366,7 +366,7 @@ inline std::vector<Claim> run_claims(const std::string& which, const std::vector
     if (o->result.largest_mass_mismatch >= largest) largest = o->result.largest_mass_mismatch, worst = o->result.name;
   return {{"every run of " + which + " completes 20 s: no particle leaves the grid, no NaN, no unbounded energy growth",
            failures.empty() ? std::to_string(paper_runs.size()) + " runs completed" : failures, failures.empty(), true},
-          {"mass: at every step of every run, sum_I m_I = sum_p m_p (Eq. 13 lumped) within " + number(mass_tolerance, "%g") + " relative",
+          {"mass: at every step of every run (" + std::to_string(all_runs.size()) + " runs), sum_I m_I = sum_p m_p (Eq. 13 lumped) within " + number(mass_tolerance, "%g") + " relative",
            "largest mismatch " + number(largest, "%.2e") + " (" + worst + ")", largest <= mass_tolerance, true}};
 }
 
