@@ -14,6 +14,7 @@ echo "studies: dyka: stability map done"
 
 g() { gnuplot -e "dir='$plots'; data='$data'; $1" "$plots/$2" || status=1; }
 g "out='$figures/dyka_fair'" dyka_fair.gp
+g "out='$figures/dyka_fig7_fair'; fair=1" dyka_fig7.gp
 g "out='$figures/dyka_work_precision'" dyka_work_precision.gp
 below=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f2) above=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f3)
 g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability.gp
