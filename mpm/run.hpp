@@ -12,24 +12,16 @@
 #include "mpm/integrators/forward_euler.hpp"
 #include "mpm/integrators/newmark_predictor_corrector.hpp"
 #include "mpm/integrators/update_stress_last.hpp"
-#include "mpm/io/scene_budget.hpp"
 #include "mpm/io/scene_builder.hpp"
 #include "mpm/shape/bspline.hpp"
 #include "mpm/fast/lme_fast.hpp"
 #include "mpm/shape/lme_reference.hpp"
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/ugimp.hpp"
+#include "mpm/run_api.hpp"
 #include "mpm/simulation.hpp"
 
 namespace mpm {
-
-/// Everything a run starts from: the model, the particles and the observed particles.
-template <int Dim>
-struct Setup {
-  Model<Dim> model;
-  Particles<Dim> particles;
-  std::vector<int> observed;  ///< particle index of each [[observer]]
-};
 
 template <int Dim>
 Setup<Dim> build_setup(const io::Scene& scene) {
@@ -145,12 +137,9 @@ RunSummary run_setup_on(const io::Scene& scene, const Setup<Dim>& setup, Monitor
   });
 }
 
-/// Runs the scene's setup with the scene's shape function, integrator and kernels.
-/// \throws SimulationFailure when the method fails; `partial` then holds what was done (also when the
-/// monitor throws).
+/// Runs the scene's setup with the scene's shape function, integrator and kernels (declared in mpm/run_api.hpp).
 template <int Dim>
-RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor,
-                     RunSummary* partial = nullptr) {
+RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Dim>& monitor, RunSummary* partial) {
   return with_kernels(scene, [&](auto kernels) {
     return run_setup_on<Dim, decltype(kernels)>(scene, setup, monitor, partial);
   });
@@ -160,26 +149,11 @@ RunSummary run_setup(const io::Scene& scene, const Setup<Dim>& setup, Monitor<Di
 // mpm of CMakeLists.txt) and mpm/run_reference_1d.cpp and mpm/run_reference_2d.cpp (the reference kernels, and
 // run_setup, which takes either: the library mpm_reference), not again in every program and test file that runs a
 // scene: each instantiates Simulation for 5 shape functions x 3 integrators (USF, USL/MUSL, NPC).
-extern template Setup<1> build_setup<1>(const io::Scene&);
-extern template Setup<2> build_setup<2>(const io::Scene&);
-extern template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
-extern template RunSummary run_setup<2>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
 extern template RunSummary run_setup_on<1, FastKernels>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
 extern template RunSummary run_setup_on<2, FastKernels>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
 extern template RunSummary run_setup_on<1, ReferenceKernels>(const io::Scene&, const Setup<1>&, Monitor<1>&,
                                                              RunSummary*);
 extern template RunSummary run_setup_on<2, ReferenceKernels>(const io::Scene&, const Setup<2>&, Monitor<2>&,
                                                              RunSummary*);
-
-/// Reads a scene file, applies `--set` overrides and, when a budget is given, checks the run's
-/// estimated size against it (io/scene_budget.hpp). \throws SceneError.
-inline io::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,
-                            const std::optional<io::Budget>& budget = std::nullopt) {
-  io::SceneFile file = io::parse_scene_file(path);
-  for (size_t k = 0; k < overrides.size(); ++k) io::apply_override(file, overrides[k], static_cast<int>(k) + 1);
-  io::Scene scene = io::read_scene(file);
-  if (budget) io::check_budget(scene, *budget);
-  return scene;
-}
 
 }  // namespace mpm

@@ -1,7 +1,7 @@
 // Fig. 4's tables (verification/shape_figures.sh): for linear, uGIMP and LME with gamma = 0.8, 1.8 and 4, the
 // stencils of a 41 x 41 lattice of points on [-2, 2]^2 and of 1001 points on [-5, 5] (h = 1), each written as
 // `mpm shape --dim D --kind KIND [--gamma G] --at ...` prints them: the same function (mpm::cli::evaluate_request of
-// mpm/cli/shape_evaluation.hpp), the same CSV, byte for byte. A program of its own, so that make figures builds these
+// mpm/cli/shape_request.hpp, compiled by the library), the same CSV, byte for byte. A program of its own, so that make figures builds these
 // in a few seconds instead of the whole command-line program.
 //   build/bin/shape_tables DATA_DIR    writes DATA_DIR/shape2d_NAME.csv and shape1d_NAME.csv (NAME: linear, ugimp,
 //                                       lme_0.8, lme_1.8, lme_4); exit 3 if one cannot be written
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/cli/shape_evaluation.hpp"
+#include "mpm/cli/shape_request.hpp"
 
 namespace {
 

@@ -18,8 +18,8 @@
 #include "mpm/io/run_writer.hpp"
 #include "mpm/io/scene_resolved.hpp"
 #include "mpm/io/scene_warnings.hpp"
-#include "mpm/run.hpp"
-#include "mpm/stability.hpp"
+#include "mpm/run_api.hpp"
+#include "mpm/stability_api.hpp"
 
 namespace mpm::cli {
 

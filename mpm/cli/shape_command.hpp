@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "mpm/cli/options.hpp"
-#include "mpm/cli/shape_evaluation.hpp"
+#include "mpm/cli/shape_request.hpp"
 
 namespace mpm::cli {
 

@@ -1,5 +1,6 @@
 /// \file
-/// What `mpm shape` computes, without its options (mpm/cli/shape_command.hpp parses them): a shape function on an
+/// What `mpm shape` computes (evaluate_request, declared in mpm/cli/shape_request.hpp and compiled once by the library:
+/// mpm/run_1d.cpp, mpm/run_2d.cpp), without its options (mpm/cli/shape_command.hpp parses them): a shape function on an
 /// unbounded uniform grid, made large enough around the points that no stencil meets its edge; CSV, one row per node
 /// of each point's stencil. verification/shape_tables.cpp writes Fig. 4's tables with it.
 #pragma once
@@ -12,35 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "mpm/cli/shape_request.hpp"
 #include "mpm/fast/lme_fast.hpp"
 #include "mpm/shape/bspline.hpp"
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/ugimp.hpp"
 
 namespace mpm::cli {
-
-/// What `mpm shape` was asked.
-struct ShapeRequest {
-  int dimension = 1;
-  std::string kind;
-  double gamma = 3.0, cell_size = 1.0, particle_size = -1.0, tolerance = 1e-6;
-  std::vector<std::string> at;  ///< each --at as written
-  std::vector<std::vector<double>> points;
-};
-
-/// Why an LME support of locality `gamma` and tolerance `tolerance` is refused, "" if it is not: reaching beyond
-/// 100 cells, its stencils would hold (2R/h)^dim entries per particle, and below gamma = 1e-16 Newton's iteration
-/// fails.
-inline std::string lme_support_too_wide(double gamma, double tolerance) {
-  if (std::sqrt(-std::log(tolerance) / gamma) + 3.0 <= 103.0) return "";
-  const double smallest = -std::log(tolerance) / (100.0 * 100.0),
-               digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
-  std::ostringstream text;
-  text << "too small for the support tolerance " << tolerance
-       << ": the support would reach beyond 100 cells; give at least " << std::setprecision(3)
-       << std::ceil(smallest / digit) * digit;  // rounded up: the value printed is accepted
-  return text.str();
-}
 
 /// Prints `point,node_x[,node_y],N,dN_dx[,dN_dy]`, one row per node of each particle's stencil.
 template <int Dim, class Shape>

@@ -14,7 +14,7 @@
 
 #include "mpm/cli/options.hpp"
 #include "mpm/cli/shape_command.hpp"
-#include "mpm/stability.hpp"
+#include "mpm/stability_api.hpp"
 
 namespace mpm::cli {
 

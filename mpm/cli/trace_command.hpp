@@ -20,10 +20,13 @@
 
 #include "mpm/cli/options.hpp"
 #include "mpm/cli/run_command.hpp"
+#include "mpm/run_api.hpp"
+#ifndef DOCTEST_CONFIG_DISABLE  // the doctests at the end step the integrators themselves; the command runs scenes (run_setup)
 #include "mpm/integrators/forward_euler.hpp"
 #include "mpm/integrators/newmark_predictor_corrector.hpp"
 #include "mpm/integrators/update_stress_last.hpp"
-#include "mpm/run.hpp"
+#include "mpm/shape/linear.hpp"
+#endif
 
 namespace mpm::cli {
 
@@ -41,7 +44,7 @@ struct TraceVariant {
   std::string stress_last = "v_I_k1";  ///< USL, MUSL: of the velocity of their stress update (`v_I_k1_musl`)
   bool accelerations = false;          ///< the particles carry a_p (the predictor-corrector)
   std::string force_level = "k1";      ///< the time level of f_I, a_I and forward Euler's a_p: `k` for USL, MUSL
-  std::vector<Phase> phases{ForwardEuler::phases.begin(), ForwardEuler::phases.end()};  ///< the integrator's, numbered
+  std::vector<Phase> phases = integrator_phases(io::IntegratorKind::fe, io::StressUpdate::usf);  ///< numbered
 };
 
 /// One table of a phase: a header and its rows, the numbers already written.
@@ -240,7 +243,7 @@ inline TraceVariant trace_variant(const io::Scene& scene) {
     const int choice = static_cast<int>(scene.npc_position_velocity);
     variant.moving = moving[choice];
     variant.accelerations = true;
-    variant.phases.assign(NewmarkPredictorCorrector::phases.begin(), NewmarkPredictorCorrector::phases.end());
+    variant.phases = integrator_phases(scene.integrator, scene.stress_update);
     text << "predictor-corrector (npc), gamma = " << scene.newmark_gamma << ", position update " << position[choice]
          << " (x_p moves with " << moving[choice] << "), particle velocity "
          << (scene.npc_velocity == NewmarkParticleVelocity::eq32 ? "eq32" : "average");
@@ -252,7 +255,7 @@ inline TraceVariant trace_variant(const io::Scene& scene) {
     if (scene.stress_update == io::StressUpdate::musl) variant.stress_last = "v_I_k1_musl";
     if (scene.stress_update != io::StressUpdate::usf) {
       variant.force_level = "k";  // USL, MUSL: the forces of the stress at t_k
-      variant.phases.assign(UpdateStressLast::phases.begin(), UpdateStressLast::phases.end());
+      variant.phases = integrator_phases(scene.integrator, scene.stress_update);
     }
     text << "forward Euler (fe), " << order[static_cast<int>(scene.stress_update)] << ", position update "
          << (start ? "start" : "updated") << " (x_p moves with " << variant.moving << "), flip_fraction "
@@ -391,6 +394,9 @@ inline int trace_command(const std::vector<std::string>& arguments, std::ostream
   });
 }
 
+// These doctests step the integrators themselves, which only the tests include (the command-line program compiles
+// no kernel: its runs are the library's).
+#ifndef DOCTEST_CONFIG_DISABLE
 TEST_CASE("Integrators: step() runs its phases in the order of its numbered list, which the trace prints") {
   auto run = [](const auto& integrator) {
     testing::WorkedExample example;
@@ -517,5 +523,7 @@ TEST_CASE("mpm trace: a scene run to step 2 and no further, its t_k the first dt
   CHECK(blocks[6].particles.header[4] == "a_p_k_x");
   CHECK(phase_number(usl, blocks[7].phase) == 8);
 }
+
+#endif  // DOCTEST_CONFIG_DISABLE
 
 }  // namespace mpm::cli

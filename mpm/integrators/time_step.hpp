@@ -7,14 +7,9 @@
 #include <cmath>
 
 #include "mpm/particles/particles.hpp"
+#include "mpm/run_control.hpp"
 
 namespace mpm {
-
-/// How the speeds of Eq. (42) are combined.
-enum class CourantSpeed {
-  maximum,  ///< Eq. (42) as printed: C = max{ max_p |v_p|, max_p sqrt(E/rho_p) } (default)
-  sum       ///< the authors' code: C = c + max_p |v_p| (paper/09_choices.md, 'The Courant speed')
-};
 
 /// Eq. (42): \f$ \Delta t = \mathrm{CFL}\, h / C_{el} \f$ with
 /// \f$ C_{el} = \max\{\max_p |\mathbf v_p|,\ \max_p \sqrt{E/\rho_p}\} \f$ (or their sum).

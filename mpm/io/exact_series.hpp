@@ -22,7 +22,7 @@
 
 #include "mpm/io/exact_solution.hpp"
 #include "mpm/io/run_writer.hpp"
-#include "mpm/simulation.hpp"
+#include "mpm/run_control.hpp"
 
 namespace mpm::io {
 

@@ -24,7 +24,7 @@
 #include "mpm/io/scene.hpp"
 #include "mpm/io/scene_keys.hpp"
 #include "mpm/io/scene_resolved.hpp"
-#include "mpm/simulation.hpp"
+#include "mpm/run_control.hpp"
 
 namespace mpm::io {
 

@@ -20,8 +20,8 @@
 #include "mpm/particles/body_shape.hpp"
 #include "mpm/particles/seeding.hpp"
 #include "mpm/shape/lme_options.hpp"
-#include "mpm/simulation.hpp"
-#include "mpm/transfer/grid_to_particle.hpp"
+#include "mpm/run_control.hpp"
+#include "mpm/transfer/velocity_choices.hpp"
 
 namespace mpm::io {
 
