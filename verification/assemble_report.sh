@@ -42,7 +42,7 @@ assemble() {  # assemble RESULTS
       printf '## Made by `make figures`: the paper'"'"'s figures\n\nNot run yet: `make figures`.\n\n'
     fi
     if [[ -f $results/studies/report/00_made.md ]]; then
-      cat "$results"/studies/report/*.md | sed 's#](figures/#](studies/figures/#g'
+      cat "$results"/studies/report/*.md | sed 's#](figures/#](studies/figures/#g; s#`figures/#`studies/figures/#g; s#`data/#`studies/data/#g'
     else
       printf '## Made by `make studies`: everything beyond the paper\n\nNot run yet: `make studies`.\n\n'
     fi
