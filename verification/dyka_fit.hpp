@@ -36,7 +36,7 @@ inline OrderFit fit_order(const std::vector<int>& cells, const std::vector<doubl
   return fit;
 }
 
-/// "0.32 +- 0.03 (10-160 cells)", or "no fit (2 meshes)".
+/// "0.32 ± 0.031 (10-160 cells)": the standard error to 2 significant digits (a small one shows, not 0.00); or "no fit (2 meshes)".
 inline std::string order_text(const OrderFit& fit) {
   char text[96];
   if (fit.points == 0)
@@ -44,7 +44,7 @@ inline std::string order_text(const OrderFit& fit) {
   else if (!fit.fitted())
     std::snprintf(text, sizeof text, "no fit (%d mesh%s)", fit.points, fit.points == 1 ? "" : "es");
   else
-    std::snprintf(text, sizeof text, "%.2f ± %.2f (%d-%d cells)", fit.order, fit.standard_error, fit.first_cells, fit.last_cells);
+    std::snprintf(text, sizeof text, "%.2f ± %.2g (%d-%d cells)", fit.order, fit.standard_error, fit.first_cells, fit.last_cells);
   return text;
 }
 
