@@ -2,7 +2,7 @@
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
 
-.PHONY: deps configure build test figures studies bench docs clean sanitize mutants
+.PHONY: deps configure build test figures studies bench docs clean sanitize mutants lab
 
 deps:
 	@bash .ci/install-deps.sh
@@ -19,6 +19,14 @@ build: configure
 test: configure
 	@cmake --build $(BUILD_DIR) --target test_programs -j $(JOBS)
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# The lab build (README, "Editing a kernel"): the command-line program alone at -O1, on the reference kernels alone
+# (CMake build type Lab), in its own folder: after an edit of a kernel, make lab again rebuilds two units.
+LAB_DIR ?= build-lab
+lab: deps
+	@mkdir -p $(LAB_DIR)
+	@cmake -S . -B $(LAB_DIR) -DCMAKE_BUILD_TYPE=Lab > $(LAB_DIR)/configure.log 2>&1 || (cat $(LAB_DIR)/configure.log; exit 1)
+	@cmake --build $(LAB_DIR) --target mpm_cli -j $(JOBS)
 
 # AddressSanitizer + UndefinedBehaviorSanitizer: only the programs the tests run (the
 # test program, the CLI, docs_trace), at -O1 with assertions on, in their own folder; then the tests,
@@ -60,4 +68,4 @@ docs: deps
 	@bash paper/make_docs.sh $(BUILD_DIR)
 
 clean:
-	@rm -rf $(BUILD_DIR) $(SANITIZE_DIR) runs results
+	@rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(LAB_DIR) runs results

@@ -88,7 +88,7 @@ using LmeShapeFor = typename LmeShapeOf<Kernels, Dim>::type;
 /// the one place where the scene's choice of method becomes a type (its choice of kernels: with_kernels). The
 /// integrator's variants (position and particle velocity, USL or MUSL) are types too, held as values of the
 /// integrator (std::variant): each adds an instantiation of its own small step, none of Simulation.
-template <int Dim, class Kernels = FastKernels, class Visitor>
+template <int Dim, class Kernels = AnalysisKernels, class Visitor>
 auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit) {
   auto with_shape = [&](auto integrator) {
     switch (scene.shape) {
@@ -105,11 +105,15 @@ auto with_method(const io::Scene& scene, const Grid<Dim>& grid, Visitor&& visit)
 }
 
 /// Calls visit(kernels) with the scene's layer of kernels (`solver.kernels`), ReferenceKernels{} or FastKernels{}:
-/// the one place where that choice becomes a type.
+/// the one place where that choice becomes a type (ReferenceKernels{} alone in the lab build, mpm/core/kernels.hpp).
 template <class Visitor>
 auto with_kernels(const io::Scene& scene, Visitor&& visit) {
-  if (scene.kernels == io::KernelsKind::reference) return visit(ReferenceKernels{});
-  return visit(FastKernels{});
+  if constexpr (lab_build) {  // the lab build compiles the reference kernels alone (its scene reader refuses "fast")
+    return visit(ReferenceKernels{});
+  } else {
+    if (scene.kernels == io::KernelsKind::reference) return visit(ReferenceKernels{});
+    return visit(FastKernels{});
+  }
 }
 
 /// Runs the scene's setup with the scene's shape function and integrator on the kernels of `Kernels`.

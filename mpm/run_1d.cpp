@@ -8,7 +8,12 @@
 
 namespace mpm {
 template Setup<1> build_setup<1>(const io::Scene&);
+#ifdef MPM_LAB  // the lab build: the runs of the reference kernels here, beside the analyses that step them
+template RunSummary run_setup<1>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
+template RunSummary run_setup_on<1, ReferenceKernels>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
+#else
 template RunSummary run_setup_on<1, FastKernels>(const io::Scene&, const Setup<1>&, Monitor<1>&, RunSummary*);
+#endif
 template StabilityLimits stability_limits<1>(const io::Scene&, double);
 template bool stable_at<1>(const io::Scene&, double);
 template double moved_body_cfl_limit<1>(const io::Scene&, double, double);

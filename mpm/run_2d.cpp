@@ -8,7 +8,12 @@
 
 namespace mpm {
 template Setup<2> build_setup<2>(const io::Scene&);
+#ifdef MPM_LAB  // the lab build: the runs of the reference kernels here, beside the analyses that step them
+template RunSummary run_setup<2>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
+template RunSummary run_setup_on<2, ReferenceKernels>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
+#else
 template RunSummary run_setup_on<2, FastKernels>(const io::Scene&, const Setup<2>&, Monitor<2>&, RunSummary*);
+#endif
 template StabilityLimits stability_limits<2>(const io::Scene&, double);
 template bool stable_at<2>(const io::Scene&, double);
 }  // namespace mpm

@@ -104,7 +104,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
   ParticleBodyForces<Dim> no_body_force;
   no_body_force.per_unit_mass.assign(particles.size(), Vector<Dim>::Zero());
   GridFields<Dim> grid(model.grid.node_count());
-  const FastKernels kernels;  // one for every step below: the workspace of its scatters
+  const AnalysisKernels kernels;  // one for every step below (the fast layer's: the workspace of its scatters)
   NoPhaseObserver observer;
   const int size = particles.size() * linearised_states_per_particle<Dim>();
   const double perturbation = 1e-6;

@@ -10,6 +10,7 @@
 ///   mpm/fast/fast_kernels.hpp: it holds the workspace of the fast layer's scatters, so a run holds one and its
 ///   integrator's step() takes it as its first argument.
 #pragma once
+#include <type_traits>
 
 namespace mpm {
 
@@ -23,5 +24,17 @@ struct FastKernels;  // mpm/fast/fast_kernels.hpp
 }  // namespace fast
 
 using fast::FastKernels;
+
+/// The lab build (`make lab`, build type Lab, README "Editing a kernel"): the reference kernels alone, at -O1, so that a
+/// student's edit of a kernel rebuilds the command-line program in seconds; every run and every stability analysis
+/// then takes the reference kernels, and a scene that asks for the fast ones is refused (solver.kernels).
+#ifdef MPM_LAB
+inline constexpr bool lab_build = true;
+#else
+inline constexpr bool lab_build = false;
+#endif
+
+/// The layer of the stability analyses (mpm/stability.hpp): the fast one, the reference one in the lab build.
+using AnalysisKernels = std::conditional_t<lab_build, ReferenceKernels, FastKernels>;
 
 }  // namespace mpm

@@ -231,6 +231,9 @@ inline void check_bodies_apart(const Scene& scene) {
 
 /// LME's support reaches a cell's corners; the predictor-corrector updates stress first; uGIMP's particles fit a cell.
 inline void check_solver(const SceneFile& file, const Scene& scene) {
+  require(!lab_build || scene.kernels == KernelsKind::reference, scene, "solver.kernels",
+          "'fast' is not in this lab build (make lab compiles the reference kernels alone): use \"reference\", or the "
+          "build of make build");
   // The LME support radius R = h sqrt(-ln(tol)/gamma) must reach the corners of a particle's cell (its convex
   // hull), R >= h sqrt(dimension): gamma <= -ln(tol)/dimension. The key blamed is the one the user changed:
   // lme_tol when it is given and lme_gamma is not overridden, else lme_gamma.

@@ -15,6 +15,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "mpm/core/kernels.hpp"
 #include "mpm/io/scene_file.hpp"
 #include "mpm/io/scene_settings.hpp"
 
@@ -477,9 +478,9 @@ inline const std::vector<SceneKey> all_keys = {
     key("solver.stress_update", &Scene::stress_update, "\"usf\"", "-",
         "forward Euler's stress update: usf (first, the paper's) | usl (last) | musl (last, from the particle "
         "velocities projected again); paper/11_stress_update.md"),
-    key("solver.kernels", &Scene::kernels, "\"fast\"", "-",
+    key("solver.kernels", &Scene::kernels, lab_build ? "\"reference\"" : "\"fast\"", "-",
         "fast (threads, component forms: mpm/fast/) | reference (the plain serial kernels of mpm/transfer/, "
-        "which the book shows; the same results to round-off)"),
+        "which the book shows; the same results to round-off); the lab build (make lab) has reference only"),
     key("solver.energy_growth_limit", &RunControl::energy_growth_limit, "10.0", "-",
         "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off",
         at_least(0.0, " (0: no check)")),
