@@ -86,9 +86,9 @@ inline std::string places(const DomainClaim& claim, bool holds, const char* form
   std::string text;
   for (const Sample& sample : claim.samples) {
     if (!claim.compared(sample) || sample.holds != holds) continue;
-    char value[64];
+    char value[64];  // a sample without a value (NaN: a shape that finished where linear stopped) shows its place alone
     std::snprintf(value, sizeof value, format, sample.value);
-    text += (text.empty() ? "" : "; ") + sample.where + " (" + value + ")";
+    text += (text.empty() ? "" : "; ") + sample.where + (std::isnan(sample.value) ? std::string() : " (" + std::string(value) + ")");
   }
   return text.empty() ? "-" : text;
 }

@@ -27,6 +27,8 @@ energy_ok=$(awk -v lo="$energy_low" -v hi="$energy_high" -v e="$initial" 'BEGIN 
   echo "2 x 2 particles per cell, linear shape functions, predictor-corrector, CFL 0.4) meet at +-(0.1, 0.1) m/s and"
   echo "bounce off; \`figures/disks_energy\` draws their energies and momentum to t = 3.5 s."
   echo
+  echo "![disks_energy](figures/disks_energy.png)"
+  echo
   echo "| check | measured | verdict |"
   echo "|---|---|---|"
   echo "| total momentum stays zero (no support, no body force): largest \\|p\\| <= 1e-12 of sum \\|m v\\| = $scale kg m/s per m | $momentum | $momentum_ok |"

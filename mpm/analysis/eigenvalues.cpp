@@ -1,11 +1,11 @@
 /// \file
-/// The eigenvalues of a linearised step (mpm/analysis/linearised_step.hpp declares these functions), compiled once:
-/// Eigen's eigensolver takes seconds to compile, and its header comes with the integrators.
+/// The eigenvalues of a linearised step (declared by mpm/analysis/eigenvalues.hpp), compiled once: Eigen's eigensolver
+/// takes seconds to compile. This unit includes nothing of the solver, so an edit of a kernel does not recompile it.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
-#include "mpm/analysis/linearised_step.hpp"
+#include "mpm/analysis/eigenvalues.hpp"
 
 namespace mpm {
 

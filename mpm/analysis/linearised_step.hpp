@@ -21,6 +21,7 @@
 #include <cmath>
 #include <vector>
 
+#include "mpm/analysis/eigenvalues.hpp"
 #include "mpm/core/step_phases.hpp"
 #include "mpm/grid/grid_fields.hpp"
 #include "mpm/loading/body_force.hpp"
@@ -128,15 +129,7 @@ Eigen::MatrixXd linearised_step_matrix(const Model<Dim>& model, const Particles<
   return step;
 }
 
-/// \f$ \rho(\mathbf S) = \max_j |\lambda_j| \f$ (Eigen's real Schur-based eigensolver, eigenvalues only).
-/// Compiled once, in mpm/analysis/eigenvalues.cpp: Eigen's eigensolver costs every file that includes this header
-/// seconds of compilation (this header comes with the integrators).
-double spectral_radius(const Eigen::MatrixXd& step);
-
-/// The largest \f$ \Omega = \omega\Delta t \f$ among the modes of a step whose modes all keep their energy
-/// (\f$ |\lambda| = 1 \f$, forward Euler): \f$ \lambda + \lambda^{-1} = 2 - \Omega^2 \f$, so \f$ \Omega = \sqrt{2 - 2\,\mathrm{Re}\,\lambda} \f$.
-/// Compiled once, in mpm/analysis/eigenvalues.cpp.
-double highest_mode_omega_dt(const Eigen::MatrixXd& energy_keeping_step);
+// spectral_radius and highest_mode_omega_dt: mpm/analysis/eigenvalues.hpp
 
 TEST_CASE("Linearised step: a bar of 4 cells held at both ends, its highest mode and the limits by hand") {
   // Linear shapes, one particle per cell at the centres, c = h = 1: the modes sin(j pi x / 4) have

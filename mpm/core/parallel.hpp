@@ -34,7 +34,8 @@
 /// and it waits asleep, so that the core goes to the worker it waits for. (OpenMP's parallel regions
 /// end in a barrier that every thread of the team must reach, and their threads spin while they wait:
 /// on two cores with one other busy program, that made a run on two threads up to 20 times slower
-/// than on one.)
+/// than on one. oneTBB's task arena, which takes the same chunks on demand, was measured against this team:
+/// benchmarks/README.md, "A threading library instead of the team"; CMake's MPM_THREADS=onetbb builds it.)
 ///
 /// **When to go parallel.** A loop runs on the team when its estimated work is worth it: the work is
 /// counted in stencil entries (a particle's loop over its nodes), and below parallel_work entries
@@ -65,6 +66,11 @@
 #include <vector>
 
 #include "mpm/core/types.hpp"
+#ifdef MPM_THREADS_ONETBB  // the trial of oneTBB (benchmarks/threads_library.sh): CMake -DMPM_THREADS=onetbb
+#include <oneapi/tbb/partitioner.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+#endif
 
 namespace mpm {
 
@@ -157,6 +163,11 @@ class TeamGovernor {
 class Team {
  public:
   explicit Team(int workers) {
+#ifdef MPM_THREADS_ONETBB
+    arena_.initialize(workers + 1);
+    arena_workers_ = workers;
+    return;
+#endif
     for (int worker = 1; worker <= workers; ++worker) threads_.emplace_back([this, worker] { serve(worker); });
   }
   ~Team() {
@@ -170,12 +181,26 @@ class Team {
   Team(const Team&) = delete;
   Team& operator=(const Team&) = delete;
 
+#ifdef MPM_THREADS_ONETBB
+  int threads() const { return arena_workers_ + 1; }
+#else
   int threads() const { return static_cast<int>(threads_.size()) + 1; }
+#endif
 
   /// Runs work(chunk) for every chunk in [0, chunks), on the calling thread and on the workers, each
   /// taking the next chunk when it is free; returns when every chunk has run. work must not throw.
   template <class Work>
   void run(int chunks, Work& work) {
+#ifdef MPM_THREADS_ONETBB  // oneTBB's arena of threads() slots takes the chunks (one per task) in place of the workers
+    arena_.execute([&] {
+      oneapi::tbb::parallel_for(0, chunks, 1, [&](int chunk) {
+        worker_index() = std::max(0, oneapi::tbb::this_task_arena::current_thread_index());
+        work(chunk);
+      }, oneapi::tbb::simple_partitioner());
+    });
+    worker_index() = 0;
+    return;
+#endif
     bool asleep;
     {
       std::lock_guard<std::mutex> guard(mutex_);
@@ -273,6 +298,10 @@ class Team {
   std::atomic<std::uint64_t> next_{0};    // generation << 32 | next chunk to take
   std::atomic<int> finished_{0};          // chunks of the current loop that have run
   TeamGovernor governor_;                 // used by the calling thread only
+#ifdef MPM_THREADS_ONETBB
+  oneapi::tbb::task_arena arena_;
+  int arena_workers_ = 0;
+#endif
 };
 
 /// For a test's scope: every loop above parallel_work runs on the team (Team::team_always()).

@@ -12,14 +12,14 @@ template <int Dim>
 struct GridFields {
   std::vector<double> nodal_mass;              ///< m_I, Eq. (13) lumped
   std::vector<Vector<Dim>> nodal_momentum;     ///< p_I = m_I v_I
-  std::vector<Vector<Dim>> nodal_velocity;     ///< v_I (FE: p_I/m_I; NPC: predictor, then corrected)
+  std::vector<Vector<Dim>> nodal_velocity;     ///< forward Euler: v_I^k = p_I^k / m_I; NPC: the predictor, then v_I^{k+1}
   std::vector<Vector<Dim>> nodal_force;        ///< f_I = f_I^int + f_I^ext, Eqs. (14)-(15)
   std::vector<Vector<Dim>> reaction;           ///< force taken by the fixed degrees of freedom
   /// Formed once per node before G2P (mpm/transfer/grid_to_particle.hpp), 0 on nodes without mass, so that the
   /// particle loops multiply by N_Ip instead of dividing by m_I for every particle-node pair:
   std::vector<Vector<Dim>> nodal_acceleration;  ///< a_I = f_I / m_I
   std::vector<Vector<Dim>> moving_velocity;     ///< the nodal velocity that moves the particles (the integrator's choice)
-  std::vector<Vector<Dim>> projected_velocity;  ///< p_I / m_I (the PIC part of forward Euler's PIC/FLIP blend)
+  std::vector<Vector<Dim>> nodal_velocity_k1;   ///< forward Euler: v_I^{k+1} = p_I^{k+1} / m_I (the PIC part of its PIC/FLIP blend)
 
   explicit GridFields(int node_count = 0)
       : nodal_mass(node_count, 0.0),
@@ -29,7 +29,7 @@ struct GridFields {
         reaction(node_count, Vector<Dim>::Zero()),
         nodal_acceleration(node_count, Vector<Dim>::Zero()),
         moving_velocity(node_count, Vector<Dim>::Zero()),
-        projected_velocity(node_count, Vector<Dim>::Zero()) {}
+        nodal_velocity_k1(node_count, Vector<Dim>::Zero()) {}
 
   int size() const { return static_cast<int>(nodal_mass.size()); }
 

@@ -2,7 +2,7 @@
 /// Grid-to-particle transfers (G2P): the particle update of each integrator, Eq. (18) applied, and its variants.
 ///
 /// Contract: read nodal_mass, nodal_momentum, nodal_velocity, nodal_force and the stencils; write, node by
-/// node, the rates the particles interpolate (nodal_acceleration, projected_velocity = forward Euler's
+/// node, the rates the particles interpolate (nodal_acceleration, nodal_velocity_k1 = forward Euler's
 /// v_I^{k+1}, moving_velocity: one division by m_I per node, not per particle-node pair), then the particles' x_p,
 /// v_p (and a_p for the predictor-corrector).
 ///
@@ -33,7 +33,7 @@ void for_each_node(ReferenceKernels, int nodes, Body&& body) {
 }
 
 /// Eq. (18)'s nodal rates of forward Euler's G2P, 0 on nodes without mass: \f$ \mathbf a_I = \mathbf f_I / m_I \f$
-/// (nodal_acceleration) and \f$ \mathbf v_I^{k+1} = \mathbf p_I^{k+1} / m_I \f$ (projected_velocity), after
+/// (nodal_acceleration) and \f$ \mathbf v_I^{k+1} = \mathbf p_I^{k+1} / m_I \f$ (nodal_velocity_k1), after
 /// update_nodal_momentum.
 template <class Kernels, int Dim>
 void euler_nodal_rates(const Kernels& kernels, GridFields<Dim>& grid) {
@@ -41,7 +41,7 @@ void euler_nodal_rates(const Kernels& kernels, GridFields<Dim>& grid) {
     const double m_I = grid.nodal_mass[I];
     const bool has_mass = m_I > 0.0;
     grid.nodal_acceleration[I] = has_mass ? Vector<Dim>(grid.nodal_force[I] / m_I) : Vector<Dim>::Zero();
-    grid.projected_velocity[I] = has_mass ? Vector<Dim>(grid.nodal_momentum[I] / m_I) : Vector<Dim>::Zero();
+    grid.nodal_velocity_k1[I] = has_mass ? Vector<Dim>(grid.nodal_momentum[I] / m_I) : Vector<Dim>::Zero();
   });
 }
 
@@ -61,7 +61,7 @@ struct EulerMoveWithVelocityK1 {
   template <class Kernels, int Dim>
   void operator()(const Kernels& kernels, GridFields<Dim>& grid) const {
     for_each_node(kernels, grid.size(), [&](int I) {
-      const Vector<Dim>& v_I_k1 = grid.projected_velocity[I];  // 0 without mass
+      const Vector<Dim>& v_I_k1 = grid.nodal_velocity_k1[I];  // 0 without mass
       grid.moving_velocity[I] = v_I_k1;
     });
   }
@@ -217,7 +217,7 @@ struct PicFlipBlend {
   template <class Kernels, int Dim>
   void operator()(const Kernels& kernels, const Stencils<Dim>& stencils, const GridFields<Dim>& grid,
                   Particles<Dim>& particles) const {
-    pic_flip_blend(kernels, stencils, flip_fraction, grid.projected_velocity, particles);
+    pic_flip_blend(kernels, stencils, flip_fraction, grid.nodal_velocity_k1, particles);
   }
 };
 
