@@ -63,7 +63,7 @@ void nodal_mass_and_velocity_predictor(const FastKernels& kernels, const Particl
                                        GridFields<Dim>& grid) {
   scatter_to_nodes(
       kernels, stencils,
-      [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum, Vector<Dim>* nodal_velocity) {
+      [&](int p, double* nodal_mass, Vector<Dim>* nodal_momentum, Vector<Dim>* predicted_velocity) {
         const ParticleStencil<Dim> stencil = stencils.of(p);
         const double mass = particles.mass[p];
         const Vector<Dim> momentum = mass * particles.velocity[p];
@@ -72,13 +72,14 @@ void nodal_mass_and_velocity_predictor(const FastKernels& kernels, const Particl
           const int node = stencil.node[k];
           nodal_mass[node] += stencil.value[k] * mass;
           nodal_momentum[node] += stencil.value[k] * momentum;
-          nodal_velocity[node] += stencil.value[k] * predicted;  // divided by m_I below
+          predicted_velocity[node] += stencil.value[k] * predicted;  // divided by m_I below
         }
       },
-      grid.nodal_mass, grid.nodal_momentum, grid.nodal_velocity);
+      grid.nodal_mass, grid.nodal_momentum, grid.predicted_velocity);
   for (int node = 0; node < grid.size(); ++node) {
     const double mass = grid.nodal_mass[node];
-    grid.nodal_velocity[node] = mass > 0.0 ? Vector<Dim>(grid.nodal_velocity[node] / mass) : Vector<Dim>::Zero();
+    grid.predicted_velocity[node] =
+        mass > 0.0 ? Vector<Dim>(grid.predicted_velocity[node] / mass) : Vector<Dim>::Zero();
   }
 }
 
@@ -100,7 +101,7 @@ TEST_CASE("Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), Eq. (29):
     nodal_mass_and_velocity_predictor(ReferenceKernels{}, state.particles, state.stencils, 0.6, 0.01, reference);
     CHECK(testing::relative_difference(reference.nodal_mass, fast.nodal_mass) <= 1e-12);
     CHECK(testing::relative_difference(reference.nodal_momentum, fast.nodal_momentum) <= 1e-12);
-    CHECK(testing::relative_difference(reference.nodal_velocity, fast.nodal_velocity) <= 1e-12);
+    CHECK(testing::relative_difference(reference.predicted_velocity, fast.predicted_velocity) <= 1e-12);
   });
 }
 

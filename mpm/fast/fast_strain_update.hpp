@@ -65,13 +65,13 @@ TEST_CASE("Eq. (16), Eq. (17), Eq. (3): the fast strain rate and stress update a
     const std::vector<LinearElastic> materials{LinearElastic{1e4, 0.3, 1.0}};
     std::vector<Matrix<Dim>> fast_rates, reference_rates;
     for (int p = 0; p < state.particles.size(); ++p) {
-      fast_rates.push_back(fast::strain_rate(state.stencils, p, state.fields.nodal_velocity));
-      reference_rates.push_back(mpm::strain_rate(state.stencils, p, state.fields.nodal_velocity));
+      fast_rates.push_back(fast::strain_rate(state.stencils, p, state.fields.nodal_velocity_k));
+      reference_rates.push_back(mpm::strain_rate(state.stencils, p, state.fields.nodal_velocity_k));
     }
     CHECK(testing::relative_difference(reference_rates, fast_rates) <= 1e-12);
     auto fast = state.particles, reference = state.particles;
-    update_strain_density_stress(FastKernels{}, state.stencils, state.fields.nodal_velocity, materials, 1e-3, fast);
-    update_strain_density_stress(ReferenceKernels{}, state.stencils, state.fields.nodal_velocity, materials, 1e-3,
+    update_strain_density_stress(FastKernels{}, state.stencils, state.fields.nodal_velocity_k, materials, 1e-3, fast);
+    update_strain_density_stress(ReferenceKernels{}, state.stencils, state.fields.nodal_velocity_k, materials, 1e-3,
                                  reference);
     CHECK(testing::relative_difference(reference.strain, fast.strain) <= 1e-12);
     CHECK(testing::relative_difference(reference.density, fast.density) <= 1e-12);

@@ -66,7 +66,7 @@ RandomState<Dim> random_state(unsigned seed, int count = 1200) {
   for (int node = 0; node < nodes; ++node) {
     state.fields.nodal_mass[node] = unit(random) < 0.2 ? 0.0 : 0.5 + unit(random);
     state.fields.nodal_momentum[node] = vector(3.0);
-    state.fields.nodal_velocity[node] = vector(3.0);
+    state.fields.nodal_velocity_k[node] = vector(3.0);
     state.fields.nodal_force[node] = vector(50.0);
   }
   return state;

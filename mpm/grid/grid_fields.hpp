@@ -12,19 +12,23 @@ template <int Dim>
 struct GridFields {
   std::vector<double> nodal_mass;              ///< m_I, Eq. (13) lumped
   std::vector<Vector<Dim>> nodal_momentum;     ///< p_I = m_I v_I
-  std::vector<Vector<Dim>> nodal_velocity;     ///< forward Euler: v_I^k = p_I^k / m_I; NPC: the predictor, then v_I^{k+1}
+  std::vector<Vector<Dim>> nodal_velocity_k;   ///< forward Euler (USF, USL, MUSL): v_I^k = p_I^k / m_I
+  std::vector<Vector<Dim>> predicted_velocity; ///< the predictor-corrector: v_I^{pred}, Eqs. (26)-(29)
   std::vector<Vector<Dim>> nodal_force;        ///< f_I = f_I^int + f_I^ext, Eqs. (14)-(15)
   std::vector<Vector<Dim>> reaction;           ///< force taken by the fixed degrees of freedom
   /// Formed once per node before G2P (mpm/transfer/grid_to_particle.hpp), 0 on nodes without mass, so that the
   /// particle loops multiply by N_Ip instead of dividing by m_I for every particle-node pair:
   std::vector<Vector<Dim>> nodal_acceleration;  ///< a_I = f_I / m_I
   std::vector<Vector<Dim>> moving_velocity;     ///< the nodal velocity that moves the particles (the integrator's choice)
-  std::vector<Vector<Dim>> nodal_velocity_k1;   ///< forward Euler: v_I^{k+1} = p_I^{k+1} / m_I (the PIC part of its PIC/FLIP blend)
+  /// v_I^{k+1}: forward Euler's p_I^{k+1} / m_I (the PIC part of its PIC/FLIP blend), then USL's and MUSL's velocity of
+  /// the stress update (MUSL's from the momentum projected again); the predictor-corrector's corrected one, Eq. (30)
+  std::vector<Vector<Dim>> nodal_velocity_k1;
 
   explicit GridFields(int node_count = 0)
       : nodal_mass(node_count, 0.0),
         nodal_momentum(node_count, Vector<Dim>::Zero()),
-        nodal_velocity(node_count, Vector<Dim>::Zero()),
+        nodal_velocity_k(node_count, Vector<Dim>::Zero()),
+        predicted_velocity(node_count, Vector<Dim>::Zero()),
         nodal_force(node_count, Vector<Dim>::Zero()),
         reaction(node_count, Vector<Dim>::Zero()),
         nodal_acceleration(node_count, Vector<Dim>::Zero()),
@@ -37,7 +41,7 @@ struct GridFields {
     for (int node = 0; node < size(); ++node) {
       nodal_mass[node] = 0.0;
       nodal_momentum[node].setZero();
-      nodal_velocity[node].setZero();
+      predicted_velocity[node].setZero();  // summed over the particles (v_I^k and v_I^{k+1} are assigned whole)
       nodal_force[node].setZero();
       reaction[node].setZero();
     }

@@ -70,10 +70,10 @@ struct ForwardEuler {
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
     observer.after(Phase::fixed_momentum, particles, grid);
     // 3. Nodal velocity v_I^k = p_I^k / m_I.
-    nodal_velocity_from_momentum(grid);
+    nodal_velocity_from_momentum(grid, grid.nodal_velocity_k);
     observer.after(Phase::velocity_k, particles, grid);
     // 4. Update stress first: strain rate, Eq. (16); density, Eq. (17); stress, Eq. (3).
-    update_strain_density_stress(kernels, stencils, grid.nodal_velocity, model.materials, dt, particles);
+    update_strain_density_stress(kernels, stencils, grid.nodal_velocity_k, model.materials, dt, particles);
     observer.after(Phase::stress, particles, grid);
     // 5. Nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(kernels, particles, stencils, body_force, grid);

@@ -90,11 +90,11 @@ struct NewmarkPredictorCorrector {
     nodal_mass_and_velocity_predictor(kernels, particles, stencils, newmark_gamma, dt, grid);
     observer.after(Phase::mass_predictor, particles, grid);
     // 2. Essential boundary conditions overwrite the predictor.
-    impose_fixed_velocity(model.fixed, grid.nodal_velocity);
+    impose_fixed_velocity(model.fixed, grid.predicted_velocity);
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
     observer.after(Phase::fixed_predictor, particles, grid);
     // 3. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
-    update_strain_density_stress(kernels, stencils, grid.nodal_velocity, model.materials, dt, particles);
+    update_strain_density_stress(kernels, stencils, grid.predicted_velocity, model.materials, dt, particles);
     observer.after(Phase::stress, particles, grid);
     // 4. New nodal forces, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(kernels, particles, stencils, body_force, grid);

@@ -105,7 +105,7 @@ struct UpdateStressLast {
     impose_fixed_velocity(model.fixed, grid.nodal_momentum);
     observer.after(Phase::fixed_momentum, particles, grid);
     // 3. v_I^k = p_I^k / m_I.
-    nodal_velocity_from_momentum(grid);
+    nodal_velocity_from_momentum(grid, grid.nodal_velocity_k);
     observer.after(Phase::velocity_k, particles, grid);
     // 4. Nodal forces from the stress of the step before, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(kernels, particles, stencils, body_force, grid);
@@ -121,10 +121,10 @@ struct UpdateStressLast {
     std::visit([&](const auto& p_I_k1) { p_I_k1(kernels, model, stencils, particles, grid, observer); },
                stress_velocity);
     // 8. v_I^{k+1} = p_I^{k+1} / m_I.
-    nodal_velocity_from_momentum(grid);
+    nodal_velocity_from_momentum(grid, grid.nodal_velocity_k1);
     observer.after(Phase::velocity_k1, particles, grid);
     // 9. Update stress last: Eq. (16), Eq. (17), Eq. (3).
-    update_strain_density_stress(kernels, stencils, grid.nodal_velocity, model.materials, dt, particles);
+    update_strain_density_stress(kernels, stencils, grid.nodal_velocity_k1, model.materials, dt, particles);
     observer.after(Phase::stress, particles, grid);
   }
 

@@ -1,7 +1,8 @@
 /// \file
 /// Grid-to-particle transfers (G2P): the particle update of each integrator, Eq. (18) applied, and its variants.
 ///
-/// Contract: read nodal_mass, nodal_momentum, nodal_velocity, nodal_force and the stencils; write, node by
+/// Contract: read nodal_mass, nodal_momentum, nodal_velocity_k (forward Euler) or nodal_velocity_k1 (the
+/// predictor-corrector's corrected one), nodal_force and the stencils; write, node by
 /// node, the rates the particles interpolate (nodal_acceleration, nodal_velocity_k1 = forward Euler's
 /// v_I^{k+1}, moving_velocity: one division by m_I per node, not per particle-node pair), then the particles' x_p,
 /// v_p (and a_p for the predictor-corrector).
@@ -73,7 +74,7 @@ struct EulerMoveWithVelocityK {
   template <class Kernels, int Dim>
   void operator()(const Kernels& kernels, GridFields<Dim>& grid) const {
     for_each_node(kernels, grid.size(), [&](int I) {
-      const Vector<Dim>& v_I_k = grid.nodal_velocity[I];
+      const Vector<Dim>& v_I_k = grid.nodal_velocity_k[I];
       grid.moving_velocity[I] = grid.nodal_mass[I] > 0.0 ? v_I_k : Vector<Dim>::Zero();
     });
   }
@@ -97,7 +98,7 @@ struct NewmarkMoveWithVelocityK1 {
   template <class Kernels, int Dim>
   void operator()(const Kernels& kernels, GridFields<Dim>& grid, double /*newmark_gamma*/, double /*dt*/) const {
     for_each_node(kernels, grid.size(), [&](int I) {
-      const Vector<Dim>& v_I_k1 = grid.nodal_velocity[I];
+      const Vector<Dim>& v_I_k1 = grid.nodal_velocity_k1[I];
       grid.moving_velocity[I] = grid.nodal_mass[I] > 0.0 ? v_I_k1 : Vector<Dim>::Zero();
     });
   }
@@ -105,12 +106,13 @@ struct NewmarkMoveWithVelocityK1 {
 
 /// The predictor-corrector's `predicted` position velocity: the particles move with the predictor of Eq. (29),
 /// recovered from the corrector as \f$ \mathbf v_I^{pred} = \mathbf v_I^{k+1} - \gamma \Delta t\, \mathbf a_I^{k+1} \f$
-/// (moving_velocity; 0 on nodes without mass), after newmark_nodal_acceleration().
+/// (moving_velocity; 0 on nodes without mass), after newmark_nodal_acceleration(). Equal to predicted_velocity up to
+/// round-off; recovered, as since this variant was added, so that its runs keep their bits.
 struct NewmarkMoveWithVelocityPred {
   template <class Kernels, int Dim>
   void operator()(const Kernels& kernels, GridFields<Dim>& grid, double newmark_gamma, double dt) const {
     for_each_node(kernels, grid.size(), [&](int I) {
-      const Vector<Dim>& v_I_k1 = grid.nodal_velocity[I];
+      const Vector<Dim>& v_I_k1 = grid.nodal_velocity_k1[I];
       const Vector<Dim>& a_I_k1 = grid.nodal_acceleration[I];
       grid.moving_velocity[I] =
           grid.nodal_mass[I] > 0.0 ? Vector<Dim>(v_I_k1 - newmark_gamma * dt * a_I_k1) : Vector<Dim>::Zero();
@@ -257,7 +259,7 @@ inline NewmarkVelocityRule newmark_velocity_rule(NewmarkParticleVelocity word) {
 /// \f$ \mathbf a_I = \mathbf f_I / m_I \f$ and \f$ \mathbf v_I^{k+1} = \mathbf p_I^{k+1} / m_I \f$
 /// (\ref euler_nodal_rates); the nodal velocity the position variant moves the particles with (its own node loop);
 /// the particle loop (\ref forward_euler_particle_update); the velocity variant's rule (FLIP: nothing; the blend:
-/// \ref pic_flip_blend). Expects nodal_velocity = v_I^k and nodal_momentum = p_I^{k+1} (after
+/// \ref pic_flip_blend). Expects nodal_velocity_k = v_I^k and nodal_momentum = p_I^{k+1} (after
 /// update_nodal_momentum).
 template <class Kernels, int Dim>
 void forward_euler_g2p(const Kernels& kernels, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double dt,
@@ -272,7 +274,7 @@ void forward_euler_g2p(const Kernels& kernels, const Stencils<Dim>& stencils, Gr
 /// The predictor-corrector's G2P, Eqs. (31)-(33), the variants' steps in order: the nodal rate
 /// \f$ \mathbf a_I^{k+1} = \mathbf f_I^{k+1} / m_I \f$ (\ref newmark_nodal_acceleration); the nodal velocity the
 /// position variant moves the particles with (its own node loop); the particle loop with the velocity variant's rule
-/// (\ref newmark_particle_update). Expects nodal_velocity = the corrected v_I^{k+1} and nodal_momentum =
+/// (\ref newmark_particle_update). Expects nodal_velocity_k1 = the corrected v_I^{k+1} and nodal_momentum =
 /// sum_p N_Ip m_p v_p^k.
 template <class Kernels, int Dim>
 void newmark_g2p(const Kernels& kernels, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double newmark_gamma,
@@ -341,14 +343,14 @@ TEST_CASE("Eq. (30), Eq. (33): the position update as printed reads no corrected
   testing::WorkedExample example;
   auto& grid = example.fields;
   testing::worked_example_grid(grid, true);
-  const std::vector<Vector<1>> corrected = grid.nodal_velocity;
+  const std::vector<Vector<1>> corrected = grid.nodal_velocity_k1;
   const std::vector<Vector<1>> predictor{Vector<1>(1.0), Vector<1>(-1.0), Vector<1>(0.0)};
   for (const auto word : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected}) {
     Particles<1> before = example.particles, after = example.particles;
-    grid.nodal_velocity = predictor;
+    grid.nodal_velocity_k1 = predictor;  // as if Eq. (30) had added nothing
     newmark_g2p(ReferenceKernels{}, example.stencils, grid, 0.5, example.dt, newmark_position_rule(word),
                 Eq32Velocity{}, before);
-    grid.nodal_velocity = corrected;
+    grid.nodal_velocity_k1 = corrected;
     newmark_g2p(ReferenceKernels{}, example.stencils, grid, 0.5, example.dt, newmark_position_rule(word),
                 Eq32Velocity{}, after);
     CHECK(before.velocity == after.velocity);
@@ -369,7 +371,7 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (31), Eq. (33): G2P skips the nodes without m
   auto& grid = example.fields;
   testing::worked_example_grid(grid, false);
   grid.nodal_mass[2] = 0.0;
-  grid.nodal_force[2] = grid.nodal_velocity[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
+  grid.nodal_force[2] = grid.nodal_velocity_k[2] = grid.nodal_velocity_k1[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
   Particles<1> updated = example.particles, start = example.particles, blend = example.particles;
   forward_euler_g2p(ReferenceKernels{}, example.stencils, grid, 0.2, EulerMoveWithVelocityK1{}, FlipVelocity{},
                     updated);
@@ -382,7 +384,7 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (31), Eq. (33): G2P skips the nodes without m
   CHECK(blend.velocity[1][0] == doctest::Approx(0.36));     // 0.5 (-0.14) + 0.5 (0.5 * 1.72)
   testing::worked_example_grid(grid, true);
   grid.nodal_mass[2] = 0.0;
-  grid.nodal_force[2] = grid.nodal_velocity[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
+  grid.nodal_force[2] = grid.nodal_velocity_k1[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
   for (const auto word : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected,
                           NewmarkPositionVelocity::predicted}) {
     Particles<1> newmark = example.particles;
@@ -446,7 +448,7 @@ TEST_CASE("Eq. (33): the position update with the predicted nodal velocity at ga
   testing::WorkedExample example;
   auto& grid = example.fields;
   testing::worked_example_grid(grid, true);
-  grid.nodal_velocity = {Vector<1>(1.96), Vector<1>(0.632), Vector<1>(0.0)};
+  grid.nodal_velocity_k1 = {Vector<1>(1.96), Vector<1>(0.632), Vector<1>(0.0)};
   newmark_g2p(ReferenceKernels{}, example.stencils, grid, 0.6, example.dt, NewmarkMoveWithVelocityPred{},
               Eq32Velocity{}, example.particles);
   CHECK(example.particles.position[0][0] == doctest::Approx(0.538));

@@ -2,7 +2,7 @@
 /// Particle-to-grid transfers (P2G): the nodal mass, momentum and the Newmark velocity predictor.
 ///
 /// Contract: read the particles' m_p, v_p, a_p and the step's stencils; write nodal_mass,
-/// nodal_momentum, nodal_velocity. Fields are accumulated into zeroed arrays (GridFields::reset).
+/// nodal_momentum and a nodal velocity (nodal_velocity_k or the predictor's predicted_velocity). Fields are accumulated into zeroed arrays (GridFields::reset).
 /// These are the reference kernels, plain serial loops; their fast forms, on every core, are in
 /// mpm/fast/fast_particle_to_grid.hpp.
 #pragma once
@@ -56,12 +56,14 @@ void nodal_momentum_from_particles(ReferenceKernels, const Particles<Dim>& parti
   }
 }
 
-/// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere (one kernel for both layers:
-/// a loop over the nodes, no particles).
+/// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere, into `v_I`: forward Euler's
+/// \f$ \mathbf v_I^k \f$ (nodal_velocity_k) from \f$ \mathbf p_I^k \f$, USL's \f$ \mathbf v_I^{k+1} \f$
+/// (nodal_velocity_k1) from \f$ \mathbf p_I^{k+1} \f$ (one kernel for both layers: a loop over the nodes, no
+/// particles).
 template <int Dim>
-void nodal_velocity_from_momentum(GridFields<Dim>& grid) {
+void nodal_velocity_from_momentum(const GridFields<Dim>& grid, std::vector<Vector<Dim>>& v_I) {
   for (int node = 0; node < grid.size(); ++node)
-    grid.nodal_velocity[node] =
+    v_I[node] =
         grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_momentum[node] / grid.nodal_mass[node])
                                     : Vector<Dim>::Zero();
 }
@@ -80,7 +82,7 @@ void nodal_mass_and_velocity_predictor(ReferenceKernels, const Particles<Dim>& p
                                        GridFields<Dim>& grid) {
   std::vector<double>& m_I = grid.nodal_mass;
   std::vector<Vector<Dim>>& p_I_k = grid.nodal_momentum;
-  std::vector<Vector<Dim>>& v_I_pred = grid.nodal_velocity;
+  std::vector<Vector<Dim>>& v_I_pred = grid.predicted_velocity;
   for (int p = 0; p < particles.size(); ++p) {
     const double m_p = particles.mass[p];
     const Vector<Dim>& v_p_k = particles.velocity[p];
@@ -109,11 +111,11 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   CHECK(grid.nodal_mass[0] == doctest::Approx(1.5));
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
   CHECK(grid.nodal_mass[2] == doctest::Approx(2.0));
-  nodal_velocity_from_momentum(grid);
+  nodal_velocity_from_momentum(grid, grid.nodal_velocity_k);
   CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
-  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.0));
-  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-1.0));
-  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-1.5));
+  CHECK(grid.nodal_velocity_k[0][0] == doctest::Approx(1.0));
+  CHECK(grid.nodal_velocity_k[1][0] == doctest::Approx(-1.0));
+  CHECK(grid.nodal_velocity_k[2][0] == doctest::Approx(-1.5));
   // The momentum alone, projected afresh over whatever the field held (MUSL's second projection): the same p_I.
   for (auto& momentum : grid.nodal_momentum) momentum.setConstant(99.0);
   nodal_momentum_from_particles(ReferenceKernels{}, example.particles, example.stencils, grid);
@@ -122,10 +124,10 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-3.0));
 
   // The predictor of the first step: a_p = 0 at t = 0, so v_I^pred is the projected p_I / m_I, bit for bit.
-  const std::vector<Vector<1>> projected = grid.nodal_velocity;
+  const std::vector<Vector<1>> projected = grid.nodal_velocity_k;
   grid.reset();
   nodal_mass_and_velocity_predictor(ReferenceKernels{}, example.particles, example.stencils, 0.5, example.dt, grid);
-  for (int node = 0; node < 3; ++node) CHECK(grid.nodal_velocity[node][0] == projected[node][0]);
+  for (int node = 0; node < 3; ++node) CHECK(grid.predicted_velocity[node][0] == projected[node][0]);
   // With the accelerations the first step leaves, a_p = (9.4, 6.8) (Eq. (31)), on the particles as they are at
   // t = 0 (a check of the weights, not a state of the run): (1 - gamma) dt = 0.1, v_p + 0.1 a_p = (1.94, -0.82);
   // node 1 gets (0.25 * 2 * 1.94 + 0.5 * 4 * -0.82) / 2.5 = (0.97 - 1.64) / 2.5 = -0.268.
@@ -133,9 +135,9 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   grid.reset();
   nodal_mass_and_velocity_predictor(ReferenceKernels{}, example.particles, example.stencils, 0.5, example.dt, grid);
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
-  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.94));
-  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.268));
-  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-0.82));
+  CHECK(grid.predicted_velocity[0][0] == doctest::Approx(1.94));
+  CHECK(grid.predicted_velocity[1][0] == doctest::Approx(-0.268));
+  CHECK(grid.predicted_velocity[2][0] == doctest::Approx(-0.82));
   CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
 }
 
@@ -148,9 +150,9 @@ TEST_CASE("Eq. (26), Eq. (28), Eq. (29): the predictor at gamma = 0.6 by hand: (
   example.particles.acceleration = {Vector<1>(9.4), Vector<1>(6.8)};
   auto& grid = example.fields;
   nodal_mass_and_velocity_predictor(ReferenceKernels{}, example.particles, example.stencils, 0.6, example.dt, grid);
-  CHECK(grid.nodal_velocity[0][0] == doctest::Approx(1.752));
-  CHECK(grid.nodal_velocity[1][0] == doctest::Approx(-0.4144));
-  CHECK(grid.nodal_velocity[2][0] == doctest::Approx(-0.956));
+  CHECK(grid.predicted_velocity[0][0] == doctest::Approx(1.752));
+  CHECK(grid.predicted_velocity[1][0] == doctest::Approx(-0.4144));
+  CHECK(grid.predicted_velocity[2][0] == doctest::Approx(-0.956));
   // The momentum left beside it is the projected p_I of v_p^k alone: (1.5, -2.5, -3).
   CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.5));
   CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-3.0));

@@ -11,7 +11,7 @@
 /// soil block is such a confined column: its settlement converges to the finite-strain column, not the
 /// small-strain one (report).
 ///
-/// Contract: read nodal_velocity and the stencils; write the particles' epsilon_p, rho_p, sigma_p. These are the
+/// Contract: read a nodal velocity (the integrator's: v_I^k, v_I^{pred} or v_I^{k+1}) and the stencils; write the particles' epsilon_p, rho_p, sigma_p. These are the
 /// reference kernels, plain serial loops; their fast forms are in mpm/fast/fast_strain_update.hpp.
 #pragma once
 #include <doctest/doctest.h>
