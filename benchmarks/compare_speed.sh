@@ -6,7 +6,8 @@
 # alike; each binary's fastest run of each configuration is kept, and its spread over the rounds is reported.
 #   benchmarks/compare_speed.sh OLD_MPM NEW_MPM [ROUNDS]     (ROUNDS: default 5)
 # Writes results/bench/speed_compare.csv (one row per run) and speed_compare.md (per configuration: the best
-# particle-steps per second of each, new / old, and the range of new / old over the rounds), or into
+# particle-steps per second of each, new / old, and the range of new / old over the rounds; then make bench's cost
+# ratio, each shape's time per particle-step over linear's with the same scene and method, of each binary and new / old), or into
 # $COMPARE_SPEED_OUT. The time of a run is the sum of its step's phases (run.json's phase_seconds, output excluded),
 # as make bench measures it: set-up and the writing of files are not the solver's speed.
 set -euo pipefail
@@ -104,6 +105,22 @@ for k in keys:
 low, high = min(ratios), max(ratios)
 lines += ["", f"new / old of the bests: from {low[0]:.3f} ({' '.join(low[1])}) to {high[0]:.3f} ({' '.join(high[1])}); "
           f"{sum(1 for r, _ in ratios if r >= 0.95)} of {len(ratios)} configurations at 0.95 or above.", ""]
+# make bench's cost ratio: a shape's time per particle-step over linear's, same scene and method, from the bests
+lines += ["## Cost relative to linear (make bench's cost ratio), from the same bests", "",
+          "| scene | shape | method | old | new | new / old |", "|---|---|---|---|---|---|"]
+costs = []
+for k in keys:
+    if k[1] == "linear" or (k[0], "linear", k[2]) not in keys: continue
+    lin = (k[0], "linear", k[2])
+    old_cost = max(speeds(lin, "old").values()) / max(speeds(k, "old").values())
+    new_cost = max(speeds(lin, "new").values()) / max(speeds(k, "new").values())
+    costs.append((new_cost / old_cost, k))
+    lines.append(f"| {k[0]} | {k[1]} | {k[2]} | {old_cost:.3f} | {new_cost:.3f} | {new_cost / old_cost:.3f} |")
+if costs:
+    low, high = min(costs), max(costs)
+    lines += ["", f"new / old of the cost ratios: from {low[0]:.3f} ({' '.join(low[1])}) to {high[0]:.3f} "
+              f"({' '.join(high[1])}); {sum(1 for r, _ in costs if r <= 1.05)} of {len(costs)} at 1.05 or below "
+              "(a higher cost ratio is slower relative to linear).", ""]
 open(sys.argv[2], "w").write("\n".join(lines))
 print("\n".join(lines))
 EOF

@@ -16,12 +16,13 @@
 # excluded) over steps x particles: set-up and writing files are not the solver's speed.
 #   benchmarks/run.sh BUILD_DIR [--targets | --threads]    (--targets: part 1 only, a minute or so;
 #                                                             --threads: part 2 only, two minutes or so)
+# MPM_BENCH_OUT: another folder for these files (benchmarks/threads_library.sh: results/bench stays as it was).
 set -euo pipefail
 build=${1:-build}
 only_targets=${2:-}
 root=$(cd "$(dirname "$0")/.." && pwd)
 mpm=$root/$build/bin/mpm
-out=$root/results/bench
+out=${MPM_BENCH_OUT:-$root/results/bench}
 runs=$out/runs
 rm -rf "$runs"
 mkdir -p "$out" "$runs"

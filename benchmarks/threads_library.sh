@@ -5,7 +5,8 @@
 # turn, ROUNDS times: the team (CMake MPM_THREADS=team, the default) and oneTBB's task arena
 # (MPM_THREADS=onetbb, needs Debian's libtbb-dev). The chunks, and so the bits, are the same in both.
 #   benchmarks/threads_library.sh TEAM_BUILD_DIR ONETBB_BUILD_DIR [ROUNDS]   (ROUNDS: 2; ~4 minutes a round)
-# Writes results/bench/threads_library/{team,onetbb}_ROUND.csv (run.sh's threads.csv) and summary.csv: per
+# Writes results/bench/threads_library/{team,onetbb}_ROUND.csv (run.sh's threads.csv, run into
+# threads_library/run/, so that make bench's results/bench/threads.csv is left as it was) and summary.csv: per
 # build, condition and run, the default over one thread's time (best of each round's 3 interleaved
 # repeats) as min and max over the rounds.
 set -euo pipefail
@@ -20,8 +21,8 @@ rm -rf "$out"; mkdir -p "$out"
 for round in $(seq "$rounds"); do
   for pair in "team:$team" "onetbb:$onetbb"; do
     name=${pair%%:*} build=${pair#*:}
-    bash "$root/benchmarks/run.sh" "$build" --threads >/dev/null
-    cp "$root/results/bench/threads.csv" "$out/${name}_$round.csv"
+    MPM_BENCH_OUT=$out/run bash "$root/benchmarks/run.sh" "$build" --threads >/dev/null
+    cp "$out/run/threads.csv" "$out/${name}_$round.csv"
     echo "threads_library: round $round of $rounds, $name done"
   done
 done
