@@ -22,7 +22,7 @@ struct NpcCorrectorSwitch : mpm::NewmarkPredictorCorrector {
     grid.reset();
     nodal_mass_and_velocity_predictor(kernels, particles, stencils, newmark_gamma, dt, grid);
     mpm::impose_fixed_velocity(model.fixed, grid.predicted_velocity);
-    mpm::impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    mpm::impose_fixed_velocity(model.fixed, grid.nodal_momentum_k);
     update_strain_density_stress(kernels, stencils, grid.predicted_velocity, model.materials, dt, particles);
     add_nodal_forces(kernels, particles, stencils, body_force, grid);
     mpm::store_reactions(model.fixed, grid.nodal_force, grid.reaction);

@@ -122,11 +122,11 @@ class StepTrace : public Monitor<Dim> {
     if (phase == Phase::mass_momentum || phase == Phase::mass_predictor) keep("m_I", grid.nodal_mass);
     if (predictor) keep("v_I_pred", grid.predicted_velocity);
     if (predictor || phase == Phase::mass_momentum || phase == Phase::fixed_momentum)
-      keep("p_I_k", grid.nodal_momentum);
+      keep("p_I_k", grid.nodal_momentum_k);
     if (phase == Phase::velocity_k) keep("v_I_k", grid.nodal_velocity_k);
     if (phase == Phase::forces) keep("f_I_" + names_.force_level, grid.nodal_force), keep("r_I", grid.reaction);
-    if (phase == Phase::momentum_balance) keep("p_I_k1", grid.nodal_momentum);
-    if (phase == Phase::reprojection) keep("p_I_k1_musl", grid.nodal_momentum);
+    if (phase == Phase::momentum_balance) keep("p_I_k1", grid.nodal_momentum_k1);
+    if (phase == Phase::reprojection) keep("p_I_k1_musl", grid.nodal_momentum_k1);
     if (phase == Phase::velocity_k1) keep(names_.stress_last, grid.nodal_velocity_k1);
     if (phase == Phase::corrector) keep("v_I_k1", grid.nodal_velocity_k1);
     if (phase == Phase::euler_update || phase == Phase::newmark_update)

@@ -37,21 +37,21 @@ void nodal_mass_and_momentum(const FastKernels& kernels, const Particles<Dim>& p
           nodal_momentum[stencil.node[k]] += weighted_mass * velocity;
         }
       },
-      grid.nodal_mass, grid.nodal_momentum);
+      grid.nodal_mass, grid.nodal_momentum_k);
 }
 
-/// Eqs. (21)-(22) on every core, overwriting nodal_momentum: \f$ \mathbf p_I^{k+1} = \sum_p N_{Ip} m_p
+/// Eqs. (21)-(22) on every core, overwriting nodal_momentum_k1: \f$ \mathbf p_I^{k+1} = \sum_p N_{Ip} m_p
 /// \mathbf v_p^{k+1} \f$ (MUSL; the reference: mpm::nodal_momentum_from_particles).
 template <int Dim>
 void nodal_momentum_from_particles(const FastKernels& kernels, const Particles<Dim>& particles,
                                    const Stencils<Dim>& stencils, GridFields<Dim>& grid) {
-  for (Vector<Dim>& momentum : grid.nodal_momentum) momentum.setZero();
+  for (Vector<Dim>& momentum : grid.nodal_momentum_k1) momentum.setZero();
   scatter_to_nodes(kernels, stencils, [&](int p, Vector<Dim>* nodal_momentum) {
     const ParticleStencil<Dim> stencil = stencils.of(p);
     const double mass = particles.mass[p];
     const Vector<Dim> velocity = particles.velocity[p];
     for (int k = 0; k < stencil.count; ++k) nodal_momentum[stencil.node[k]] += stencil.value[k] * mass * velocity;
-  }, grid.nodal_momentum);
+  }, grid.nodal_momentum_k1);
 }
 
 /// Eqs. (13), (26)-(29) on every core: \f$ m_I \f$, \f$ \mathbf p_I^k \f$ and
@@ -75,7 +75,7 @@ void nodal_mass_and_velocity_predictor(const FastKernels& kernels, const Particl
           predicted_velocity[node] += stencil.value[k] * predicted;  // divided by m_I below
         }
       },
-      grid.nodal_mass, grid.nodal_momentum, grid.predicted_velocity);
+      grid.nodal_mass, grid.nodal_momentum_k, grid.predicted_velocity);
   for (int node = 0; node < grid.size(); ++node) {
     const double mass = grid.nodal_mass[node];
     grid.predicted_velocity[node] =
@@ -90,17 +90,17 @@ TEST_CASE("Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), Eq. (29):
     nodal_mass_and_momentum(FastKernels{}, state.particles, state.stencils, fast);
     nodal_mass_and_momentum(ReferenceKernels{}, state.particles, state.stencils, reference);
     CHECK(testing::relative_difference(reference.nodal_mass, fast.nodal_mass) <= 1e-12);
-    CHECK(testing::relative_difference(reference.nodal_momentum, fast.nodal_momentum) <= 1e-12);
+    CHECK(testing::relative_difference(reference.nodal_momentum_k, fast.nodal_momentum_k) <= 1e-12);
     // MUSL's projection over whatever the field held, here the random momenta of the state
-    fast.nodal_momentum = reference.nodal_momentum = state.fields.nodal_momentum;
+    fast.nodal_momentum_k1 = reference.nodal_momentum_k1 = state.fields.nodal_momentum_k1;
     nodal_momentum_from_particles(FastKernels{}, state.particles, state.stencils, fast);
     nodal_momentum_from_particles(ReferenceKernels{}, state.particles, state.stencils, reference);
-    CHECK(testing::relative_difference(reference.nodal_momentum, fast.nodal_momentum) <= 1e-12);
+    CHECK(testing::relative_difference(reference.nodal_momentum_k1, fast.nodal_momentum_k1) <= 1e-12);
     fast.reset(), reference.reset();
     nodal_mass_and_velocity_predictor(FastKernels{}, state.particles, state.stencils, 0.6, 0.01, fast);
     nodal_mass_and_velocity_predictor(ReferenceKernels{}, state.particles, state.stencils, 0.6, 0.01, reference);
     CHECK(testing::relative_difference(reference.nodal_mass, fast.nodal_mass) <= 1e-12);
-    CHECK(testing::relative_difference(reference.nodal_momentum, fast.nodal_momentum) <= 1e-12);
+    CHECK(testing::relative_difference(reference.nodal_momentum_k, fast.nodal_momentum_k) <= 1e-12);
     CHECK(testing::relative_difference(reference.predicted_velocity, fast.predicted_velocity) <= 1e-12);
   });
 }
@@ -124,7 +124,7 @@ TEST_CASE("The fast scatter reads the nodes noted for its own stencils only: not
   nodal_mass_and_momentum(kernels, state.particles, state.stencils, fast);  // the random order's stencils
   nodal_mass_and_momentum(ReferenceKernels{}, state.particles, state.stencils, reference);
   CHECK(testing::relative_difference(reference.nodal_mass, fast.nodal_mass) <= 1e-12);
-  CHECK(testing::relative_difference(reference.nodal_momentum, fast.nodal_momentum) <= 1e-12);
+  CHECK(testing::relative_difference(reference.nodal_momentum_k, fast.nodal_momentum_k) <= 1e-12);
 }
 
 

@@ -65,7 +65,8 @@ RandomState<Dim> random_state(unsigned seed, int count = 1200) {
   state.fields = GridFields<Dim>(nodes);
   for (int node = 0; node < nodes; ++node) {
     state.fields.nodal_mass[node] = unit(random) < 0.2 ? 0.0 : 0.5 + unit(random);
-    state.fields.nodal_momentum[node] = vector(3.0);
+    state.fields.nodal_momentum_k[node] = vector(3.0);
+    state.fields.nodal_momentum_k1[node] = vector(3.0);
     state.fields.nodal_velocity_k[node] = vector(3.0);
     state.fields.nodal_force[node] = vector(50.0);
   }

@@ -11,7 +11,9 @@ namespace mpm {
 template <int Dim>
 struct GridFields {
   std::vector<double> nodal_mass;              ///< m_I, Eq. (13) lumped
-  std::vector<Vector<Dim>> nodal_momentum;     ///< p_I = m_I v_I
+  std::vector<Vector<Dim>> nodal_momentum_k;   ///< p_I^k = sum_p N_Ip m_p v_p^k, Eqs. (21)-(22)
+  /// p_I^{k+1}: forward Euler's momentum balance, Eq. (12), then MUSL's projection of v_p^{k+1}
+  std::vector<Vector<Dim>> nodal_momentum_k1;
   std::vector<Vector<Dim>> nodal_velocity_k;   ///< forward Euler (USF, USL, MUSL): v_I^k = p_I^k / m_I
   std::vector<Vector<Dim>> predicted_velocity; ///< the predictor-corrector: v_I^{pred}, Eqs. (26)-(29)
   std::vector<Vector<Dim>> nodal_force;        ///< f_I = f_I^int + f_I^ext, Eqs. (14)-(15)
@@ -26,7 +28,8 @@ struct GridFields {
 
   explicit GridFields(int node_count = 0)
       : nodal_mass(node_count, 0.0),
-        nodal_momentum(node_count, Vector<Dim>::Zero()),
+        nodal_momentum_k(node_count, Vector<Dim>::Zero()),
+        nodal_momentum_k1(node_count, Vector<Dim>::Zero()),
         nodal_velocity_k(node_count, Vector<Dim>::Zero()),
         predicted_velocity(node_count, Vector<Dim>::Zero()),
         nodal_force(node_count, Vector<Dim>::Zero()),
@@ -40,8 +43,8 @@ struct GridFields {
   void reset() {
     for (int node = 0; node < size(); ++node) {
       nodal_mass[node] = 0.0;
-      nodal_momentum[node].setZero();
-      predicted_velocity[node].setZero();  // summed over the particles (v_I^k and v_I^{k+1} are assigned whole)
+      nodal_momentum_k[node].setZero();
+      predicted_velocity[node].setZero();  // summed over the particles (p_I^{k+1}, v_I^k, v_I^{k+1} are assigned whole)
       nodal_force[node].setZero();
       reaction[node].setZero();
     }

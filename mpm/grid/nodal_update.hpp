@@ -7,11 +7,14 @@
 
 namespace mpm {
 
-/// Eq. (12) with forward Euler: \f$ \mathbf p_I^{k+1} = \mathbf p_I^k + \Delta t\, \mathbf f_I \f$ (nodes with mass).
+/// Eq. (12) with forward Euler: \f$ \mathbf p_I^{k+1} = \mathbf p_I^k + \Delta t\, \mathbf f_I \f$ on nodes with
+/// mass (nodal_momentum_k1 from nodal_momentum_k); \f$ \mathbf p_I^{k+1} = \mathbf p_I^k \f$ on the others.
 template <int Dim>
 void update_nodal_momentum(double dt, GridFields<Dim>& grid) {
+  const std::vector<Vector<Dim>>& p_I_k = grid.nodal_momentum_k;
+  std::vector<Vector<Dim>>& p_I_k1 = grid.nodal_momentum_k1;
   for (int node = 0; node < grid.size(); ++node)
-    if (grid.nodal_mass[node] > 0.0) grid.nodal_momentum[node] += dt * grid.nodal_force[node];
+    p_I_k1[node] = grid.nodal_mass[node] > 0.0 ? Vector<Dim>(p_I_k[node] + dt * grid.nodal_force[node]) : p_I_k[node];
 }
 
 /// Eq. (30), the Newmark corrector:
@@ -30,12 +33,13 @@ void newmark_corrector(double newmark_gamma, double dt, GridFields<Dim>& grid) {
 TEST_CASE("Eq. (12), Eq. (30): nodal updates: the momentum balance and the corrector by hand, massless nodes untouched") {
   GridFields<1> grid(2);
   grid.nodal_mass = {2.0, 0.0};
-  grid.nodal_momentum = {Vector<1>(1.0), Vector<1>(0.0)};
+  grid.nodal_momentum_k = {Vector<1>(1.0), Vector<1>(0.0)};
   grid.predicted_velocity = {Vector<1>(0.5), Vector<1>(0.0)};
   grid.nodal_force = {Vector<1>(4.0), Vector<1>(7.0)};
   update_nodal_momentum(0.1, grid);
-  CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.4));
-  CHECK(grid.nodal_momentum[1][0] == 0.0);
+  CHECK(grid.nodal_momentum_k1[0][0] == doctest::Approx(1.4));
+  CHECK(grid.nodal_momentum_k1[1][0] == 0.0);
+  CHECK(grid.nodal_momentum_k[0][0] == 1.0);  // p_I^k kept beside p_I^{k+1}
   newmark_corrector(0.5, 0.1, grid);
   CHECK(grid.nodal_velocity_k1[0][0] == doctest::Approx(0.5 + 0.5 * 0.1 * 4.0 / 2.0));
   CHECK(grid.nodal_velocity_k1[1][0] == 0.0);
@@ -45,12 +49,12 @@ TEST_CASE("Eq. (12), Eq. (30): nodal updates: the momentum balance and the corre
 TEST_CASE("Eq. (12): p_I += dt f_I on every node with mass, the first and the last too, massless nodes untouched") {
   GridFields<1> grid(3);
   grid.nodal_mass = {2.0, 0.0, 1.0};
-  grid.nodal_momentum = {Vector<1>(1.0), Vector<1>(0.0), Vector<1>(2.0)};
+  grid.nodal_momentum_k = {Vector<1>(1.0), Vector<1>(0.0), Vector<1>(2.0)};
   grid.nodal_force = {Vector<1>(4.0), Vector<1>(7.0), Vector<1>(-3.0)};
   update_nodal_momentum(0.1, grid);
-  CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.4));
-  CHECK(grid.nodal_momentum[1][0] == 0.0);
-  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(1.7));  // 2 + 0.1 (-3)
+  CHECK(grid.nodal_momentum_k1[0][0] == doctest::Approx(1.4));
+  CHECK(grid.nodal_momentum_k1[1][0] == 0.0);
+  CHECK(grid.nodal_momentum_k1[2][0] == doctest::Approx(1.7));  // 2 + 0.1 (-3)
 }
 
 TEST_CASE("Eq. (30): the corrector at gamma = 0.6 by hand: gamma dt f_I / m_I, not (1 - gamma) dt f_I / m_I") {

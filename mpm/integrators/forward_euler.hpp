@@ -46,7 +46,7 @@ struct ForwardEuler {
   ///    (\ref update_strain_density_stress).
   /// 5. Nodal forces \f$ \mathbf f_I^{k+1} = \mathbf f_I^{int} + \mathbf f_I^{ext} \f$, Eqs. (14)-(15), from the
   ///    stress just updated (\ref add_nodal_forces); the fixed components become reactions (\ref store_reactions).
-  /// 6. Momentum balance, Eq. (12): \f$ \mathbf p_I \mathrel{+}= \Delta t\, \mathbf f_I \f$ (\ref update_nodal_momentum).
+  /// 6. Momentum balance, Eq. (12): \f$ \mathbf p_I^{k+1} = \mathbf p_I^k + \Delta t\, \mathbf f_I \f$ (\ref update_nodal_momentum).
   /// 7. G2P, Eqs. (19)-(22) (\ref forward_euler_g2p): the nodal rates \f$ \mathbf a_I = \mathbf f_I / m_I \f$ and
   ///    \f$ \mathbf v_I^{k+1} = \mathbf p_I^{k+1} / m_I \f$; the position variant's nodal velocity
   ///    \f$ \mathbf v_I \f$ (\f$ \mathbf v_I^{k+1} \f$, or \f$ \mathbf v_I^k \f$ under `start`);
@@ -67,10 +67,10 @@ struct ForwardEuler {
     nodal_mass_and_momentum(kernels, particles, stencils, grid);
     observer.after(Phase::mass_momentum, particles, grid);
     // 2. Essential boundary conditions on the momentum.
-    impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    impose_fixed_velocity(model.fixed, grid.nodal_momentum_k);
     observer.after(Phase::fixed_momentum, particles, grid);
     // 3. Nodal velocity v_I^k = p_I^k / m_I.
-    nodal_velocity_from_momentum(grid, grid.nodal_velocity_k);
+    nodal_velocity_from_momentum(grid, grid.nodal_momentum_k, grid.nodal_velocity_k);
     observer.after(Phase::velocity_k, particles, grid);
     // 4. Update stress first: strain rate, Eq. (16); density, Eq. (17); stress, Eq. (3).
     update_strain_density_stress(kernels, stencils, grid.nodal_velocity_k, model.materials, dt, particles);

@@ -91,7 +91,7 @@ struct NewmarkPredictorCorrector {
     observer.after(Phase::mass_predictor, particles, grid);
     // 2. Essential boundary conditions overwrite the predictor.
     impose_fixed_velocity(model.fixed, grid.predicted_velocity);
-    impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    impose_fixed_velocity(model.fixed, grid.nodal_momentum_k);
     observer.after(Phase::fixed_predictor, particles, grid);
     // 3. Strain rate with the predicted velocity, Eq. (16); density, Eq. (17); stress, Eq. (3).
     update_strain_density_stress(kernels, stencils, grid.predicted_velocity, model.materials, dt, particles);

@@ -50,7 +50,7 @@ struct MuslMomentumK1 {
   void operator()(const Kernels& kernels, const Model<Dim>& model, const Stencils<Dim>& stencils, Particles<Dim>& particles,
                   GridFields<Dim>& grid, Observer& observer) const {
     nodal_momentum_from_particles(kernels, particles, stencils, grid);
-    impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    impose_fixed_velocity(model.fixed, grid.nodal_momentum_k1);
     observer.after(Phase::reprojection, particles, grid);
   }
 };
@@ -102,10 +102,10 @@ struct UpdateStressLast {
     nodal_mass_and_momentum(kernels, particles, stencils, grid);
     observer.after(Phase::mass_momentum, particles, grid);
     // 2. Essential boundary conditions on the momentum.
-    impose_fixed_velocity(model.fixed, grid.nodal_momentum);
+    impose_fixed_velocity(model.fixed, grid.nodal_momentum_k);
     observer.after(Phase::fixed_momentum, particles, grid);
     // 3. v_I^k = p_I^k / m_I.
-    nodal_velocity_from_momentum(grid, grid.nodal_velocity_k);
+    nodal_velocity_from_momentum(grid, grid.nodal_momentum_k, grid.nodal_velocity_k);
     observer.after(Phase::velocity_k, particles, grid);
     // 4. Nodal forces from the stress of the step before, Eqs. (14)-(15); the fixed components become reactions.
     add_nodal_forces(kernels, particles, stencils, body_force, grid);
@@ -121,7 +121,7 @@ struct UpdateStressLast {
     std::visit([&](const auto& p_I_k1) { p_I_k1(kernels, model, stencils, particles, grid, observer); },
                stress_velocity);
     // 8. v_I^{k+1} = p_I^{k+1} / m_I.
-    nodal_velocity_from_momentum(grid, grid.nodal_velocity_k1);
+    nodal_velocity_from_momentum(grid, grid.nodal_momentum_k1, grid.nodal_velocity_k1);
     observer.after(Phase::velocity_k1, particles, grid);
     // 9. Update stress last: Eq. (16), Eq. (17), Eq. (3).
     update_strain_density_stress(kernels, stencils, grid.nodal_velocity_k1, model.materials, dt, particles);

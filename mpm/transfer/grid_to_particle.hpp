@@ -1,7 +1,7 @@
 /// \file
 /// Grid-to-particle transfers (G2P): the particle update of each integrator, Eq. (18) applied, and its variants.
 ///
-/// Contract: read nodal_mass, nodal_momentum, nodal_velocity_k (forward Euler) or nodal_velocity_k1 (the
+/// Contract: read nodal_mass, nodal_momentum_k or nodal_momentum_k1, nodal_velocity_k (forward Euler) or nodal_velocity_k1 (the
 /// predictor-corrector's corrected one), nodal_force and the stencils; write, node by
 /// node, the rates the particles interpolate (nodal_acceleration, nodal_velocity_k1 = forward Euler's
 /// v_I^{k+1}, moving_velocity: one division by m_I per node, not per particle-node pair), then the particles' x_p,
@@ -42,7 +42,7 @@ void euler_nodal_rates(const Kernels& kernels, GridFields<Dim>& grid) {
     const double m_I = grid.nodal_mass[I];
     const bool has_mass = m_I > 0.0;
     grid.nodal_acceleration[I] = has_mass ? Vector<Dim>(grid.nodal_force[I] / m_I) : Vector<Dim>::Zero();
-    grid.nodal_velocity_k1[I] = has_mass ? Vector<Dim>(grid.nodal_momentum[I] / m_I) : Vector<Dim>::Zero();
+    grid.nodal_velocity_k1[I] = has_mass ? Vector<Dim>(grid.nodal_momentum_k1[I] / m_I) : Vector<Dim>::Zero();
   });
 }
 
@@ -87,7 +87,7 @@ struct NewmarkMoveWithVelocityK {
   void operator()(const Kernels& kernels, GridFields<Dim>& grid, double /*newmark_gamma*/, double /*dt*/) const {
     for_each_node(kernels, grid.size(), [&](int I) {
       const double m_I = grid.nodal_mass[I];
-      grid.moving_velocity[I] = m_I > 0.0 ? Vector<Dim>(grid.nodal_momentum[I] / m_I) : Vector<Dim>::Zero();
+      grid.moving_velocity[I] = m_I > 0.0 ? Vector<Dim>(grid.nodal_momentum_k[I] / m_I) : Vector<Dim>::Zero();
     });
   }
 };
@@ -259,7 +259,7 @@ inline NewmarkVelocityRule newmark_velocity_rule(NewmarkParticleVelocity word) {
 /// \f$ \mathbf a_I = \mathbf f_I / m_I \f$ and \f$ \mathbf v_I^{k+1} = \mathbf p_I^{k+1} / m_I \f$
 /// (\ref euler_nodal_rates); the nodal velocity the position variant moves the particles with (its own node loop);
 /// the particle loop (\ref forward_euler_particle_update); the velocity variant's rule (FLIP: nothing; the blend:
-/// \ref pic_flip_blend). Expects nodal_velocity_k = v_I^k and nodal_momentum = p_I^{k+1} (after
+/// \ref pic_flip_blend). Expects nodal_velocity_k = v_I^k and nodal_momentum_k1 = p_I^{k+1} (after
 /// update_nodal_momentum).
 template <class Kernels, int Dim>
 void forward_euler_g2p(const Kernels& kernels, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double dt,
@@ -274,7 +274,7 @@ void forward_euler_g2p(const Kernels& kernels, const Stencils<Dim>& stencils, Gr
 /// The predictor-corrector's G2P, Eqs. (31)-(33), the variants' steps in order: the nodal rate
 /// \f$ \mathbf a_I^{k+1} = \mathbf f_I^{k+1} / m_I \f$ (\ref newmark_nodal_acceleration); the nodal velocity the
 /// position variant moves the particles with (its own node loop); the particle loop with the velocity variant's rule
-/// (\ref newmark_particle_update). Expects nodal_velocity_k1 = the corrected v_I^{k+1} and nodal_momentum =
+/// (\ref newmark_particle_update). Expects nodal_velocity_k1 = the corrected v_I^{k+1} and nodal_momentum_k =
 /// sum_p N_Ip m_p v_p^k.
 template <class Kernels, int Dim>
 void newmark_g2p(const Kernels& kernels, const Stencils<Dim>& stencils, GridFields<Dim>& grid, double newmark_gamma,
@@ -371,7 +371,7 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (31), Eq. (33): G2P skips the nodes without m
   auto& grid = example.fields;
   testing::worked_example_grid(grid, false);
   grid.nodal_mass[2] = 0.0;
-  grid.nodal_force[2] = grid.nodal_velocity_k[2] = grid.nodal_velocity_k1[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
+  grid.nodal_force[2] = grid.nodal_velocity_k[2] = grid.nodal_velocity_k1[2] = grid.nodal_momentum_k1[2] = Vector<1>(1e6);
   Particles<1> updated = example.particles, start = example.particles, blend = example.particles;
   forward_euler_g2p(ReferenceKernels{}, example.stencils, grid, 0.2, EulerMoveWithVelocityK1{}, FlipVelocity{},
                     updated);
@@ -384,7 +384,7 @@ TEST_CASE("Eq. (19), Eq. (20), Eq. (31), Eq. (33): G2P skips the nodes without m
   CHECK(blend.velocity[1][0] == doctest::Approx(0.36));     // 0.5 (-0.14) + 0.5 (0.5 * 1.72)
   testing::worked_example_grid(grid, true);
   grid.nodal_mass[2] = 0.0;
-  grid.nodal_force[2] = grid.nodal_velocity_k1[2] = grid.nodal_momentum[2] = Vector<1>(1e6);
+  grid.nodal_force[2] = grid.nodal_velocity_k1[2] = grid.nodal_momentum_k[2] = Vector<1>(1e6);
   for (const auto word : {NewmarkPositionVelocity::projected, NewmarkPositionVelocity::corrected,
                           NewmarkPositionVelocity::predicted}) {
     Particles<1> newmark = example.particles;

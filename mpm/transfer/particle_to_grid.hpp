@@ -2,7 +2,8 @@
 /// Particle-to-grid transfers (P2G): the nodal mass, momentum and the Newmark velocity predictor.
 ///
 /// Contract: read the particles' m_p, v_p, a_p and the step's stencils; write nodal_mass,
-/// nodal_momentum and a nodal velocity (nodal_velocity_k or the predictor's predicted_velocity). Fields are accumulated into zeroed arrays (GridFields::reset).
+/// nodal_momentum_k (nodal_momentum_k1: MUSL's projection of v_p^{k+1}) and a nodal velocity (nodal_velocity_k or the
+/// predictor's predicted_velocity). Fields are accumulated into zeroed arrays (GridFields::reset).
 /// These are the reference kernels, plain serial loops; their fast forms, on every core, are in
 /// mpm/fast/fast_particle_to_grid.hpp.
 #pragma once
@@ -25,7 +26,7 @@ template <int Dim>
 void nodal_mass_and_momentum(ReferenceKernels, const Particles<Dim>& particles, const Stencils<Dim>& stencils,
                              GridFields<Dim>& grid) {
   std::vector<double>& m_I = grid.nodal_mass;
-  std::vector<Vector<Dim>>& p_I_k = grid.nodal_momentum;
+  std::vector<Vector<Dim>>& p_I_k = grid.nodal_momentum_k;
   for (int p = 0; p < particles.size(); ++p) {
     const double m_p = particles.mass[p];
     const Vector<Dim>& v_p_k = particles.velocity[p];
@@ -41,12 +42,12 @@ void nodal_mass_and_momentum(ReferenceKernels, const Particles<Dim>& particles, 
 
 /// The nodal momentum alone, projected afresh from the particles' updated velocities:
 /// \f$ \mathbf p_I^{k+1} = \sum_p N_{Ip}\, m_p \mathbf v_p^{k+1} \f$ (Eqs. (21)-(22)), overwriting what
-/// nodal_momentum held. MUSL projects the updated particle velocities again with it
+/// nodal_momentum_k1 held. MUSL projects the updated particle velocities again with it
 /// (mpm/integrators/update_stress_last.hpp).
 template <int Dim>
 void nodal_momentum_from_particles(ReferenceKernels, const Particles<Dim>& particles, const Stencils<Dim>& stencils,
                                    GridFields<Dim>& grid) {
-  std::vector<Vector<Dim>>& p_I_k1 = grid.nodal_momentum;
+  std::vector<Vector<Dim>>& p_I_k1 = grid.nodal_momentum_k1;
   for (Vector<Dim>& momentum : p_I_k1) momentum.setZero();
   for (int p = 0; p < particles.size(); ++p) {
     const double m_p = particles.mass[p];
@@ -56,16 +57,15 @@ void nodal_momentum_from_particles(ReferenceKernels, const Particles<Dim>& parti
   }
 }
 
-/// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere, into `v_I`: forward Euler's
-/// \f$ \mathbf v_I^k \f$ (nodal_velocity_k) from \f$ \mathbf p_I^k \f$, USL's \f$ \mathbf v_I^{k+1} \f$
-/// (nodal_velocity_k1) from \f$ \mathbf p_I^{k+1} \f$ (one kernel for both layers: a loop over the nodes, no
-/// particles).
+/// \f$ \mathbf v_I = \mathbf p_I / m_I \f$ on nodes that carry mass; 0 elsewhere: forward Euler's
+/// \f$ \mathbf v_I^k \f$ (nodal_velocity_k) from \f$ \mathbf p_I^k \f$ (nodal_momentum_k), USL's and MUSL's
+/// \f$ \mathbf v_I^{k+1} \f$ (nodal_velocity_k1) from \f$ \mathbf p_I^{k+1} \f$ (nodal_momentum_k1: Eq. (12)'s, or
+/// MUSL's projected again) (one kernel for both layers: a loop over the nodes, no particles).
 template <int Dim>
-void nodal_velocity_from_momentum(const GridFields<Dim>& grid, std::vector<Vector<Dim>>& v_I) {
+void nodal_velocity_from_momentum(const GridFields<Dim>& grid, const std::vector<Vector<Dim>>& p_I,
+                                  std::vector<Vector<Dim>>& v_I) {
   for (int node = 0; node < grid.size(); ++node)
-    v_I[node] =
-        grid.nodal_mass[node] > 0.0 ? Vector<Dim>(grid.nodal_momentum[node] / grid.nodal_mass[node])
-                                    : Vector<Dim>::Zero();
+    v_I[node] = grid.nodal_mass[node] > 0.0 ? Vector<Dim>(p_I[node] / grid.nodal_mass[node]) : Vector<Dim>::Zero();
 }
 
 /// P2G of the predictor-corrector, in one pass over the particles and their stencil nodes: the lumped mass of
@@ -74,14 +74,14 @@ void nodal_velocity_from_momentum(const GridFields<Dim>& grid, std::vector<Vecto
 /// by Eq. (27), which is Eq. (28), gathered into
 /// \f[ \mathbf v_I^{pred} = \frac{1}{m_I}\sum_p N_{Ip}\, m_p \left(\mathbf v_p^k + (1-\gamma)\Delta t\,
 ///     \mathbf a_p^k\right) . \f]
-/// Also leaves \f$ \mathbf p_I^k = \sum_p N_{Ip} m_p \mathbf v_p^k \f$ in nodal_momentum (the projected
+/// Also leaves \f$ \mathbf p_I^k = \sum_p N_{Ip} m_p \mathbf v_p^k \f$ in nodal_momentum_k (the projected
 /// velocity p_I^k/m_I of the literal reading of Eq. (33)). Adds into the zeroed fields.
 template <int Dim>
 void nodal_mass_and_velocity_predictor(ReferenceKernels, const Particles<Dim>& particles,
                                        const Stencils<Dim>& stencils, double newmark_gamma, double dt,
                                        GridFields<Dim>& grid) {
   std::vector<double>& m_I = grid.nodal_mass;
-  std::vector<Vector<Dim>>& p_I_k = grid.nodal_momentum;
+  std::vector<Vector<Dim>>& p_I_k = grid.nodal_momentum_k;
   std::vector<Vector<Dim>>& v_I_pred = grid.predicted_velocity;
   for (int p = 0; p < particles.size(); ++p) {
     const double m_p = particles.mass[p];
@@ -111,17 +111,17 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   CHECK(grid.nodal_mass[0] == doctest::Approx(1.5));
   CHECK(grid.nodal_mass[1] == doctest::Approx(2.5));
   CHECK(grid.nodal_mass[2] == doctest::Approx(2.0));
-  nodal_velocity_from_momentum(grid, grid.nodal_velocity_k);
-  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
+  nodal_velocity_from_momentum(grid, grid.nodal_momentum_k, grid.nodal_velocity_k);
+  CHECK(grid.nodal_momentum_k[1][0] == doctest::Approx(-2.5));
   CHECK(grid.nodal_velocity_k[0][0] == doctest::Approx(1.0));
   CHECK(grid.nodal_velocity_k[1][0] == doctest::Approx(-1.0));
   CHECK(grid.nodal_velocity_k[2][0] == doctest::Approx(-1.5));
   // The momentum alone, projected afresh over whatever the field held (MUSL's second projection): the same p_I.
-  for (auto& momentum : grid.nodal_momentum) momentum.setConstant(99.0);
+  for (auto& momentum : grid.nodal_momentum_k1) momentum.setConstant(99.0);
   nodal_momentum_from_particles(ReferenceKernels{}, example.particles, example.stencils, grid);
-  CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.5));
-  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
-  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-3.0));
+  CHECK(grid.nodal_momentum_k1[0][0] == doctest::Approx(1.5));
+  CHECK(grid.nodal_momentum_k1[1][0] == doctest::Approx(-2.5));
+  CHECK(grid.nodal_momentum_k1[2][0] == doctest::Approx(-3.0));
 
   // The predictor of the first step: a_p = 0 at t = 0, so v_I^pred is the projected p_I / m_I, bit for bit.
   const std::vector<Vector<1>> projected = grid.nodal_velocity_k;
@@ -138,7 +138,7 @@ TEST_CASE("Eq. (8), Eq. (13), Eq. (21), Eq. (22), Eq. (26), Eq. (27), Eq. (28), 
   CHECK(grid.predicted_velocity[0][0] == doctest::Approx(1.94));
   CHECK(grid.predicted_velocity[1][0] == doctest::Approx(-0.268));
   CHECK(grid.predicted_velocity[2][0] == doctest::Approx(-0.82));
-  CHECK(grid.nodal_momentum[1][0] == doctest::Approx(-2.5));
+  CHECK(grid.nodal_momentum_k[1][0] == doctest::Approx(-2.5));
 }
 
 TEST_CASE("Eq. (26), Eq. (28), Eq. (29): the predictor at gamma = 0.6 by hand: (1 - gamma) dt a_p, not gamma dt a_p") {
@@ -154,8 +154,8 @@ TEST_CASE("Eq. (26), Eq. (28), Eq. (29): the predictor at gamma = 0.6 by hand: (
   CHECK(grid.predicted_velocity[1][0] == doctest::Approx(-0.4144));
   CHECK(grid.predicted_velocity[2][0] == doctest::Approx(-0.956));
   // The momentum left beside it is the projected p_I of v_p^k alone: (1.5, -2.5, -3).
-  CHECK(grid.nodal_momentum[0][0] == doctest::Approx(1.5));
-  CHECK(grid.nodal_momentum[2][0] == doctest::Approx(-3.0));
+  CHECK(grid.nodal_momentum_k[0][0] == doctest::Approx(1.5));
+  CHECK(grid.nodal_momentum_k[2][0] == doctest::Approx(-3.0));
 }
 
 }  // namespace mpm

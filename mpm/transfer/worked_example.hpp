@@ -60,18 +60,18 @@ struct WorkedExample {
 
 /// The worked example's grid after its first step's forces (paper/12_worked_example.md): m_I = (1.5, 2.5, 2),
 /// f_I = (12, 34, 0) (node 2 held), so a_I = (8, 13.6, 0). Forward Euler's fields: nodal_velocity_k = v_I^k =
-/// (1, -1, 0), nodal_momentum = p_I^{k+1} = p_I + dt f_I = (3.9, 4.3, 0). The predictor-corrector's (gamma = 1/2):
+/// (1, -1, 0), nodal_momentum_k1 = p_I^{k+1} = p_I + dt f_I = (3.9, 4.3, 0). The predictor-corrector's (gamma = 1/2):
 /// nodal_velocity_k1 = the corrected v_I^{k+1} = v_I^k + 0.1 a_I = (1.8, 0.36, 0),
-/// nodal_momentum = p_I^k = (1.5, -2.5, 0).
+/// nodal_momentum_k = p_I^k = (1.5, -2.5, 0).
 inline void worked_example_grid(GridFields<1>& grid, bool predictor_corrector) {
   grid.nodal_mass = {1.5, 2.5, 2.0};
   grid.nodal_force = {Vector<1>(12.0), Vector<1>(34.0), Vector<1>(0.0)};
   if (predictor_corrector) {
     grid.nodal_velocity_k1 = {Vector<1>(1.8), Vector<1>(0.36), Vector<1>(0.0)};
-    grid.nodal_momentum = {Vector<1>(1.5), Vector<1>(-2.5), Vector<1>(0.0)};
+    grid.nodal_momentum_k = {Vector<1>(1.5), Vector<1>(-2.5), Vector<1>(0.0)};
   } else {
     grid.nodal_velocity_k = {Vector<1>(1.0), Vector<1>(-1.0), Vector<1>(0.0)};
-    grid.nodal_momentum = {Vector<1>(3.9), Vector<1>(4.3), Vector<1>(0.0)};
+    grid.nodal_momentum_k1 = {Vector<1>(3.9), Vector<1>(4.3), Vector<1>(0.0)};
   }
 }
 
