@@ -58,6 +58,26 @@ void widen_to_stencil(const Stencils<Dim>& stencils, int p, Range& reached) {
   }
 }
 
+/// The stencils of the particles `items`: N_Ip and grad N_Ip at each position, and the nodes [lowest, highest + 1)
+/// they reach. Flattened (every call inside compiled into the loop) for the tensor products, whose evaluate() GCC
+/// otherwise may leave out of line (benchmarks/README.md, "The cubic B-spline's stencils out of line").
+template <int Dim, class Shape>
+Range evaluate_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, Range items, Stencils<Dim>& stencils) {
+  Range reached{std::numeric_limits<int>::max(), 0};
+  for (int p = items.begin; p < items.end; ++p) {
+    const int first = stencils.begin(p);
+    stencils.count[p] =
+        shape.evaluate(p, positions[p], &stencils.node[first], &stencils.value[first], &stencils.gradient[first]);
+    widen_to_stencil<lists_nodes_ascending<Shape>>(stencils, p, reached);
+  }
+  return reached;
+}
+template <int Dim, class Shape>
+[[gnu::flatten]] Range evaluate_tensor_product_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions,
+                                                        Range items, Stencils<Dim>& stencils) {
+  return evaluate_stencils(shape, positions, items, stencils);
+}
+
 /// The stencil phase on every core: N_Ip and grad N_Ip at every particle position, as mpm::compute_stencils
 /// computes them, and for each chunk of particles the nodes [lowest, highest + 1) its stencils reach, noted in
 /// kernels.scratch for these stencils (the scatters of the step read them there instead of searching the stencils).
@@ -73,14 +93,12 @@ void compute_stencils(const FastKernels& kernels, Shape& shape, const std::vecto
   int failed_chunk = chunks_of(count);
   std::optional<ShapeFailure> failure;
   for_each_chunk(count, static_cast<long>(count) * stencils.capacity, [&](int chunk, Range items) {
-    Range reached{std::numeric_limits<int>::max(), 0};
+    Range reached;
     try {
-      for (int p = items.begin; p < items.end; ++p) {
-        const int first = stencils.begin(p);
-        stencils.count[p] = shape.evaluate(p, positions[p], &stencils.node[first], &stencils.value[first],
-                                           &stencils.gradient[first]);
-        widen_to_stencil<lists_nodes_ascending<Shape>>(stencils, p, reached);
-      }
+      if constexpr (lists_nodes_ascending<Shape>)
+        reached = evaluate_tensor_product_stencils(shape, positions, items, stencils);
+      else
+        reached = evaluate_stencils(shape, positions, items, stencils);
     } catch (const ShapeFailure& what) {
       reached = all_nodes;
       const std::lock_guard<std::mutex> guard(failing);
