@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "mpm/core/kernels.hpp"
@@ -362,157 +363,191 @@ inline bool own_material(const Scene& scene, std::size_t k) {
   return !(scene.bodies.at(k).material == scene.material());
 }
 
-/// The scene's keys, in the order a scene file writes them. A function's static, built on the first call: a
-/// namespace-scope inline table would be initialised (and compiled, ~8 CPU-s at -O3) in every translation unit
-/// that includes this header, the run units too, which never read it.
-inline const std::vector<SceneKey>& all_keys() {
-  static const std::vector<SceneKey> keys = {
-      key("title", &Scene::title, "\"untitled\"", "-", "name of the run (printed, written into run.json)"),
-      key("dimension", &Scene::dimension, "1", "-", "1 or 2 (2D is plane strain)", whole(1, 2)),
-      key("exact", &Scene::exact, "\"none\"", "-",
-          "exact solution written beside the observers into exact.csv, drawn by `mpm plot`, evaluated by `mpm exact` "
-          "and `mpm compare`: none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
-          "soil_column (2D column on a roller base under gravity along -y, its height H the top of its bodies; "
-          "mpm/exact/column.hpp) | vibrating_bar (a mode of the dyka_bar's bar; mpm/exact/vibrating_bar.hpp) | "
-          "manufactured_small | manufactured_large (2D square, its body force and initial velocity set by the "
-          "solution; mpm/exact/manufactured.hpp)"),
-      key("exact_parameters.mode", &Scene::exact_mode, "1", "-",
-          "vibrating_bar: the mode n, v(X, 0) = V cos((2n - 1) pi X / 2L)", whole(1, 1000)),
-      custom_key("exact_parameters.velocity_amplitude", optional, "m/s",
-                 "vibrating_bar: V, a number or a formula of the constants (\"V\")", read_amplitudes, print_amplitudes),
-      custom_key("exact_parameters.displacement_amplitude", optional, "m",
-                 "manufactured_small: A; manufactured_large: [a_x, a_y]; numbers or formulas of the constants",
-                 read_amplitudes, [](const Scene&, std::size_t, toml::table&) {}),
-      key("grid.origin", &Scene::origin, "0.0", "m",
-          "lower corner of the box [origin, origin + length] the body's grid spans"),
-      key("grid.length", &Scene::length, required, "m", "size of the box on each axis", positive()),
-      key("grid.cells", &Scene::cells, required, "cells",
-          "cells on each axis; cells must be square (equal length/cells)", whole(1, max_cells_per_axis)),
-      key("grid.margin_min", &Scene::margin_min, "0", "cells",
-          "extra cells below origin on each axis (room to move, supports)", whole(0, max_cells_per_axis)),
-      key("grid.margin_max", &Scene::margin_max, "0", "cells", "extra cells above origin + length on each axis",
-          whole(0, max_cells_per_axis)),
-      key("material.young_modulus", &Scene::young_modulus, required, "Pa",
-          "Young's modulus E of the linear elastic material, Eq. (3)", positive()),
-      key("material.poisson_ratio", &Scene::poisson_ratio, "0.0", "-", "Poisson's ratio nu, in [0, 0.5)",
-          within(0.0, 0.5, "", true)),
-      key("material.density", &Scene::density, required, "kg/m^3", "initial density rho", positive()),
-      key("body[].min", &BodySettings::min, required, "m",
-          "lower corner of a box of whole cells filled with particles; bodies may not overlap (their boxes may touch)"),
-      key("body[].max", &BodySettings::max, required, "m", "upper corner of the box"),
-      key("body[].particles_per_cell", &BodySettings::particles_per_cell, "1", "-", "particles per cell on each axis",
-          whole(1, max_cells_per_axis)),
-      key("body[].velocity", &BodySettings::velocity, "0.0", "m/s", "initial velocity of the body's particles"),
-      key("body[].placement", &BodySettings::placement, "\"uniform\"", "-",
-          "uniform (cell split evenly) | gauss (2x2 Gauss points)"),
-      key("body[].shape", &BodySettings::shape, "\"box\"", "-",
-          "box | ellipse (inscribed in the box [min, max]: a disk in a square box) | polygon (vertices): the particles "
-          "of the box's cells that lie in the shape are kept, each with its share of the cell's mass (2D) | file "
-          "(particles read from file)"),
-      custom_key("body[].vertices", optional, "m",
-                 "polygon: its vertices [[x, y], ...], in order, inside [min, max]; a simple polygon (its edges do "
-                 "not cross)", read_vertices, print_vertices),
-      key("body[].file", &BodySettings::file, optional, "-",
-          "file: a CSV of the body's particles, x[,y] (m), volume (m^Dim) or mass (kg), optional v_x[,v_y] (m/s), by "
-          "column name; relative to the scene's folder; every particle inside [min, max]"),
-      shown_if(key("body[].young_modulus", &MaterialSettings::young_modulus, optional, "Pa",
-                   "the body's own material: E (default [material]'s); the time step takes the largest sqrt(E/rho); an "
-                   "exact solution refuses a body of another material",
-                   positive()),
-               own_material),
-      shown_if(key("body[].poisson_ratio", &MaterialSettings::poisson_ratio, optional, "-",
-                   "the body's own material: nu in [0, 0.5) (default [material]'s)", within(0.0, 0.5, "", true)),
-               own_material),
-      shown_if(key("body[].density", &MaterialSettings::density, optional, "kg/m^3",
-                   "the body's own material: rho_0, its particles' masses (default [material]'s)", positive()),
-               own_material),
-      key("initial_velocity[].min", &VelocityBox::min, required, "m",
-          "lower corner of a box; particles in it start with `velocity`"),
-      key("initial_velocity[].max", &VelocityBox::max, required, "m", "upper corner of the box"),
-      key("initial_velocity[].velocity", &VelocityBox::velocity, required, "m/s",
-          "their initial velocity (later boxes win)"),
-      key("fixed[].face", &FixedSettings::face, required, "-",
-          "xmin | xmax | ymin | ymax of the box: a rigid wall there and beyond"),
-      custom_key("fixed[].components", required, "-", "velocity components held at zero, e.g. [\"x\"]",
-                 read_components, print_components),
-      key("gravity.acceleration", &Scene::gravity, "0.0", "m/s^2", "body force per unit mass"),
-      key("gravity.ramp_period", &Scene::ramp_period, "0.0", "s",
-          "T of the ramp of Eq. (44), full gravity from T/2 on (0: no ramp)", at_least(0.0, " (0: no ramp)")),
-      key("gravity.evaluate_at", &RunControl::body_force_time, "\"step_end\"", "-",
-          "time of a step at which the ramp is read: step_end | step_start"),
-      key("solver.shape", &Scene::shape, "\"linear\"", "-",
-          "shape function: linear | ugimp | lme (Eqs. 34-41) | bspline2 | bspline3 (quadratic, cubic B-splines)"),
-      key("solver.integrator", &Scene::integrator, "\"fe\"", "-",
-          "fe (forward Euler) | npc (Newmark predictor-corrector)"),
-      shown_if(key("solver.cfl", &RunControl::cfl, "0.5", "-", "Courant number of Eq. (42)",
-                   {0.0, 10.0, true, false, ": far beyond any explicit scheme's stability limit"}),
-               courant_step),
-      shown_if(key("solver.dt", &RunControl::fixed_dt, optional, "s",
-                   "a fixed time step instead of Eq. (42)'s: a scene gives dt or cfl, not both (`--set` of one "
-                   "replaces the other); refused above CFL 10 at t = 0 (dt c / h), warned above the method's limit "
-                   "(`mpm stability`); steps still land on output times and end_time",
-                   positive()),
-               fixed_step),
-      key("solver.courant", &RunControl::courant, "\"max\"", "-",
-          "max (Eq. 42 as printed) | sum (the authors' c + |v|)"),
-      key("solver.end_time", &RunControl::end_time, required, "s",
-          "time at which the run ends (the last step lands on it)", positive()),
-      key("solver.lme_gamma", &Scene::lme_gamma, "3.0", "-", "LME locality gamma, beta = gamma / h^2 (Eq. 36)",
-          positive()),
-      key("solver.lme_tol", &Scene::lme_tol, "1e-6", "-",
-          "LME support tolerance, in (0, 1): R = h sqrt(-ln(tol) / gamma)", {0.0, 1.0, true, true, ""}),
-      key("solver.lme_newton_tol", &Scene::lme_newton_tol, "1e-10", "-",
-          "relative tolerance of the LME Newton iteration", positive()),
-      key("solver.lme_max_iterations", &Scene::lme_max_iterations, "100", "-",
-          "most LME Newton iterations before the run fails", whole(1, 1000)),
-      key("solver.lme_beta", &Scene::lme_beta, "\"grid_spacing\"", "-",
-          "grid_spacing | mean_neighbour_distance | authors (NL-PartSol's)"),
-      key("solver.newmark_gamma", &Scene::newmark_gamma, "0.5", "-",
-          "Newmark gamma of the predictor-corrector, in [0, 1]", within(0.0, 1.0)),
-      key("solver.fe_position_velocity", &Scene::fe_position_velocity, "\"updated\"", "-",
-          "updated | start (literal Eqs. 19-22)"),
-      key("solver.npc_position_velocity", &Scene::npc_position_velocity, "\"projected\"", "-",
-          "projected (literal Eq. 33, v_I^k) | corrected (the authors' code, v_I^{k+1}) | predicted"),
-      key("solver.npc_velocity", &Scene::npc_velocity, "\"eq32\"", "-",
-          "eq32 (Eq. 32 as printed: new acceleration only, damped) | average (Eq. 23: Newmark average, undamped)"),
-      key("solver.flip_fraction", &Scene::flip_fraction, "1.0", "-",
-          "forward Euler's PIC/FLIP blend of the particle velocity: 1 FLIP, 0 PIC",
-          within(0.0, 1.0, " (1: FLIP, 0: PIC)")),
-      key("solver.stress_update", &Scene::stress_update, "\"usf\"", "-",
-          "forward Euler's stress update: usf (first, the paper's) | usl (last) | musl (last, from the particle "
-          "velocities projected again); paper/11_stress_update.md"),
-      key("solver.kernels", &Scene::kernels, lab_build ? "\"reference\"" : "\"fast\"", "-",
-          "fast (threads, component forms: mpm/fast/) | reference (the plain serial kernels of mpm/transfer/, "
-          "which the book shows; the same results to round-off); the lab build (make lab) has reference only"),
-      key("solver.energy_growth_limit", &RunControl::energy_growth_limit, "10.0", "-",
-          "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off",
-          at_least(0.0, " (0: no check)")),
-      custom_key("constants.<name>", optional, "-",
-                 "a named constant: a number, or a formula of other constants (pi, young_modulus, poisson_ratio and "
-                 "density are predefined); usable in every formula",
-                 nullptr, print_constants),
-      custom_key("initial_field.velocity", optional, "m/s",
-                 "initial velocity per axis as formulas (muParser, in quotes) of x, X (y, Y) and the constants; "
-                 "[[initial_velocity]] boxes win",
-                 nullptr, print_formulas(&SceneFormulas::initial_velocity, "velocity")),
-      custom_key("initial_field.stress", optional, "Pa", "initial stress as formulas: [xx] in 1D, [xx, yy, xy] in 2D",
-                 nullptr, print_formulas(&SceneFormulas::initial_stress, "stress")),
-      custom_key("body_force.acceleration", optional, "m/s^2",
-                 "body force per unit mass per axis as formulas of x, X (y, Y) and t, added to [gravity]", nullptr,
-                 print_formulas(&SceneFormulas::body_force, "acceleration")),
-      key("observer[].name", &ObserverSettings::name, required, "-",
-          "column name in observers.csv (letters, digits, _)"),
-      key("observer[].position", &ObserverSettings::position, required, "m",
-          "the particle nearest this point at t = 0 is observed (run.json: `observed`); exact.csv holds the exact "
-          "solution at that particle's reference position; the point must lie in the body"),
-      shown_if(key("output.every", &RunControl::sample_every, "1", "steps",
-                   "observers and energy sampled every n steps and at the end", whole(1, 2147483647)),
-               every_shown),
-      key("output.snapshots", &RunControl::snapshot_times, "[]", "s",
-          "times at which every particle is written (CSV, VTK, .pvd); [] writes none"),
-      key("output.times", &RunControl::sample_times, "[]", "s",
-          "times at which observers, energy and exact.csv are sampled, each landed on by a step; replaces every"),
+/// The run's title and exact solution, the grid and the material.
+inline std::vector<SceneKey> header_keys() {
+  return {
+    key("title", &Scene::title, "\"untitled\"", "-", "name of the run (printed, written into run.json)"),
+    key("dimension", &Scene::dimension, "1", "-", "1 or 2 (2D is plane strain)", whole(1, 2)),
+    key("exact", &Scene::exact, "\"none\"", "-",
+        "exact solution written beside the observers into exact.csv, drawn by `mpm plot`, evaluated by `mpm exact` "
+        "and `mpm compare`: none | dyka_bar (1D bar free at xmin, fixed at xmax; appendix A.1-A.19) | "
+        "soil_column (2D column on a roller base under gravity along -y, its height H the top of its bodies; "
+        "mpm/exact/column.hpp) | vibrating_bar (a mode of the dyka_bar's bar; mpm/exact/vibrating_bar.hpp) | "
+        "manufactured_small | manufactured_large (2D square, its body force and initial velocity set by the "
+        "solution; mpm/exact/manufactured.hpp)"),
+    key("exact_parameters.mode", &Scene::exact_mode, "1", "-",
+        "vibrating_bar: the mode n, v(X, 0) = V cos((2n - 1) pi X / 2L)", whole(1, 1000)),
+    custom_key("exact_parameters.velocity_amplitude", optional, "m/s",
+               "vibrating_bar: V, a number or a formula of the constants (\"V\")", read_amplitudes, print_amplitudes),
+    custom_key("exact_parameters.displacement_amplitude", optional, "m",
+               "manufactured_small: A; manufactured_large: [a_x, a_y]; numbers or formulas of the constants",
+               read_amplitudes, [](const Scene&, std::size_t, toml::table&) {}),
+    key("grid.origin", &Scene::origin, "0.0", "m",
+        "lower corner of the box [origin, origin + length] the body's grid spans"),
+    key("grid.length", &Scene::length, required, "m", "size of the box on each axis", positive()),
+    key("grid.cells", &Scene::cells, required, "cells",
+        "cells on each axis; cells must be square (equal length/cells)", whole(1, max_cells_per_axis)),
+    key("grid.margin_min", &Scene::margin_min, "0", "cells",
+        "extra cells below origin on each axis (room to move, supports)", whole(0, max_cells_per_axis)),
+    key("grid.margin_max", &Scene::margin_max, "0", "cells", "extra cells above origin + length on each axis",
+        whole(0, max_cells_per_axis)),
+    key("material.young_modulus", &Scene::young_modulus, required, "Pa",
+        "Young's modulus E of the linear elastic material, Eq. (3)", positive()),
+    key("material.poisson_ratio", &Scene::poisson_ratio, "0.0", "-", "Poisson's ratio nu, in [0, 0.5)",
+        within(0.0, 0.5, "", true)),
+    key("material.density", &Scene::density, required, "kg/m^3", "initial density rho", positive()),
   };
+}
+
+/// The bodies: their boxes of particles, their shapes and their own materials.
+inline std::vector<SceneKey> body_keys() {
+  return {
+    key("body[].min", &BodySettings::min, required, "m",
+        "lower corner of a box of whole cells filled with particles; bodies may not overlap (their boxes may touch)"),
+    key("body[].max", &BodySettings::max, required, "m", "upper corner of the box"),
+    key("body[].particles_per_cell", &BodySettings::particles_per_cell, "1", "-", "particles per cell on each axis",
+        whole(1, max_cells_per_axis)),
+    key("body[].velocity", &BodySettings::velocity, "0.0", "m/s", "initial velocity of the body's particles"),
+    key("body[].placement", &BodySettings::placement, "\"uniform\"", "-",
+        "uniform (cell split evenly) | gauss (2x2 Gauss points)"),
+    key("body[].shape", &BodySettings::shape, "\"box\"", "-",
+        "box | ellipse (inscribed in the box [min, max]: a disk in a square box) | polygon (vertices): the particles "
+        "of the box's cells that lie in the shape are kept, each with its share of the cell's mass (2D) | file "
+        "(particles read from file)"),
+    custom_key("body[].vertices", optional, "m",
+               "polygon: its vertices [[x, y], ...], in order, inside [min, max]; a simple polygon (its edges do "
+               "not cross)", read_vertices, print_vertices),
+    key("body[].file", &BodySettings::file, optional, "-",
+        "file: a CSV of the body's particles, x[,y] (m), volume (m^Dim) or mass (kg), optional v_x[,v_y] (m/s), by "
+        "column name; relative to the scene's folder; every particle inside [min, max]"),
+    shown_if(key("body[].young_modulus", &MaterialSettings::young_modulus, optional, "Pa",
+                 "the body's own material: E (default [material]'s); the time step takes the largest sqrt(E/rho); an "
+                 "exact solution refuses a body of another material",
+                 positive()),
+             own_material),
+    shown_if(key("body[].poisson_ratio", &MaterialSettings::poisson_ratio, optional, "-",
+                 "the body's own material: nu in [0, 0.5) (default [material]'s)", within(0.0, 0.5, "", true)),
+             own_material),
+    shown_if(key("body[].density", &MaterialSettings::density, optional, "kg/m^3",
+                 "the body's own material: rho_0, its particles' masses (default [material]'s)", positive()),
+             own_material),
+  };
+}
+
+/// The initial velocity boxes, the walls and gravity.
+inline std::vector<SceneKey> loading_keys() {
+  return {
+    key("initial_velocity[].min", &VelocityBox::min, required, "m",
+        "lower corner of a box; particles in it start with `velocity`"),
+    key("initial_velocity[].max", &VelocityBox::max, required, "m", "upper corner of the box"),
+    key("initial_velocity[].velocity", &VelocityBox::velocity, required, "m/s",
+        "their initial velocity (later boxes win)"),
+    key("fixed[].face", &FixedSettings::face, required, "-",
+        "xmin | xmax | ymin | ymax of the box: a rigid wall there and beyond"),
+    custom_key("fixed[].components", required, "-", "velocity components held at zero, e.g. [\"x\"]",
+               read_components, print_components),
+    key("gravity.acceleration", &Scene::gravity, "0.0", "m/s^2", "body force per unit mass"),
+    key("gravity.ramp_period", &Scene::ramp_period, "0.0", "s",
+        "T of the ramp of Eq. (44), full gravity from T/2 on (0: no ramp)", at_least(0.0, " (0: no ramp)")),
+    key("gravity.evaluate_at", &RunControl::body_force_time, "\"step_end\"", "-",
+        "time of a step at which the ramp is read: step_end | step_start"),
+  };
+}
+
+/// The solver: shape function, integrator, time step and their options.
+inline std::vector<SceneKey> solver_keys() {
+  return {
+    key("solver.shape", &Scene::shape, "\"linear\"", "-",
+        "shape function: linear | ugimp | lme (Eqs. 34-41) | bspline2 | bspline3 (quadratic, cubic B-splines)"),
+    key("solver.integrator", &Scene::integrator, "\"fe\"", "-",
+        "fe (forward Euler) | npc (Newmark predictor-corrector)"),
+    shown_if(key("solver.cfl", &RunControl::cfl, "0.5", "-", "Courant number of Eq. (42)",
+                 {0.0, 10.0, true, false, ": far beyond any explicit scheme's stability limit"}),
+             courant_step),
+    shown_if(key("solver.dt", &RunControl::fixed_dt, optional, "s",
+                 "a fixed time step instead of Eq. (42)'s: a scene gives dt or cfl, not both (`--set` of one "
+                 "replaces the other); refused above CFL 10 at t = 0 (dt c / h), warned above the method's limit "
+                 "(`mpm stability`); steps still land on output times and end_time",
+                 positive()),
+             fixed_step),
+    key("solver.courant", &RunControl::courant, "\"max\"", "-",
+        "max (Eq. 42 as printed) | sum (the authors' c + |v|)"),
+    key("solver.end_time", &RunControl::end_time, required, "s",
+        "time at which the run ends (the last step lands on it)", positive()),
+    key("solver.lme_gamma", &Scene::lme_gamma, "3.0", "-", "LME locality gamma, beta = gamma / h^2 (Eq. 36)",
+        positive()),
+    key("solver.lme_tol", &Scene::lme_tol, "1e-6", "-",
+        "LME support tolerance, in (0, 1): R = h sqrt(-ln(tol) / gamma)", {0.0, 1.0, true, true, ""}),
+    key("solver.lme_newton_tol", &Scene::lme_newton_tol, "1e-10", "-",
+        "relative tolerance of the LME Newton iteration", positive()),
+    key("solver.lme_max_iterations", &Scene::lme_max_iterations, "100", "-",
+        "most LME Newton iterations before the run fails", whole(1, 1000)),
+    key("solver.lme_beta", &Scene::lme_beta, "\"grid_spacing\"", "-",
+        "grid_spacing | mean_neighbour_distance | authors (NL-PartSol's)"),
+    key("solver.newmark_gamma", &Scene::newmark_gamma, "0.5", "-",
+        "Newmark gamma of the predictor-corrector, in [0, 1]", within(0.0, 1.0)),
+    key("solver.fe_position_velocity", &Scene::fe_position_velocity, "\"updated\"", "-",
+        "updated | start (literal Eqs. 19-22)"),
+    key("solver.npc_position_velocity", &Scene::npc_position_velocity, "\"projected\"", "-",
+        "projected (literal Eq. 33, v_I^k) | corrected (the authors' code, v_I^{k+1}) | predicted"),
+    key("solver.npc_velocity", &Scene::npc_velocity, "\"eq32\"", "-",
+        "eq32 (Eq. 32 as printed: new acceleration only, damped) | average (Eq. 23: Newmark average, undamped)"),
+    key("solver.flip_fraction", &Scene::flip_fraction, "1.0", "-",
+        "forward Euler's PIC/FLIP blend of the particle velocity: 1 FLIP, 0 PIC",
+        within(0.0, 1.0, " (1: FLIP, 0: PIC)")),
+    key("solver.stress_update", &Scene::stress_update, "\"usf\"", "-",
+        "forward Euler's stress update: usf (first, the paper's) | usl (last) | musl (last, from the particle "
+        "velocities projected again); paper/11_stress_update.md"),
+    key("solver.kernels", &Scene::kernels, lab_build ? "\"reference\"" : "\"fast\"", "-",
+        "fast (threads, component forms: mpm/fast/) | reference (the plain serial kernels of mpm/transfer/, "
+        "which the book shows; the same results to round-off); the lab build (make lab) has reference only"),
+    key("solver.energy_growth_limit", &RunControl::energy_growth_limit, "10.0", "-",
+        "stop (exit 3) when the energy exceeds this times (initial + work of gravity); 0: off",
+        at_least(0.0, " (0: no check)")),
+  };
+}
+
+/// The constants, the fields given by formulas, the observers and the output.
+inline std::vector<SceneKey> field_and_output_keys() {
+  return {
+    custom_key("constants.<name>", optional, "-",
+               "a named constant: a number, or a formula of other constants (pi, young_modulus, poisson_ratio and "
+               "density are predefined); usable in every formula",
+               nullptr, print_constants),
+    custom_key("initial_field.velocity", optional, "m/s",
+               "initial velocity per axis as formulas (muParser, in quotes) of x, X (y, Y) and the constants; "
+               "[[initial_velocity]] boxes win",
+               nullptr, print_formulas(&SceneFormulas::initial_velocity, "velocity")),
+    custom_key("initial_field.stress", optional, "Pa", "initial stress as formulas: [xx] in 1D, [xx, yy, xy] in 2D",
+               nullptr, print_formulas(&SceneFormulas::initial_stress, "stress")),
+    custom_key("body_force.acceleration", optional, "m/s^2",
+               "body force per unit mass per axis as formulas of x, X (y, Y) and t, added to [gravity]", nullptr,
+               print_formulas(&SceneFormulas::body_force, "acceleration")),
+    key("observer[].name", &ObserverSettings::name, required, "-",
+        "column name in observers.csv (letters, digits, _)"),
+    key("observer[].position", &ObserverSettings::position, required, "m",
+        "the particle nearest this point at t = 0 is observed (run.json: `observed`); exact.csv holds the exact "
+        "solution at that particle's reference position; the point must lie in the body"),
+    shown_if(key("output.every", &RunControl::sample_every, "1", "steps",
+                 "observers and energy sampled every n steps and at the end", whole(1, 2147483647)),
+             every_shown),
+    key("output.snapshots", &RunControl::snapshot_times, "[]", "s",
+        "times at which every particle is written (CSV, VTK, .pvd); [] writes none"),
+    key("output.times", &RunControl::sample_times, "[]", "s",
+        "times at which observers, energy and exact.csv are sampled, each landed on by a step; replaces every"),
+  };
+}
+
+/// The scene's keys, in the order a scene file writes them: the sections' keys one after another. A function's
+/// static, built on the first call: a namespace-scope inline table would be initialised (and compiled, ~8 CPU-s at
+/// -O3) in every translation unit that includes this header, the run units too, which never read it.
+inline const std::vector<SceneKey>& all_keys() {
+  static const std::vector<SceneKey> keys = [] {
+    std::vector<SceneKey> all;
+    for (std::vector<SceneKey> (*section)() : {header_keys, body_keys, loading_keys, solver_keys, field_and_output_keys})
+      for (SceneKey& entry : section()) all.push_back(std::move(entry));
+    return all;
+  }();
   return keys;
 }
 
