@@ -60,7 +60,8 @@ void widen_to_stencil(const Stencils<Dim>& stencils, int p, Range& reached) {
 
 /// The stencils of the particles `items`: N_Ip and grad N_Ip at each position, and the nodes [lowest, highest + 1)
 /// they reach. Flattened (every call inside compiled into the loop) for the tensor products, whose evaluate() GCC
-/// otherwise may leave out of line (benchmarks/README.md, "The cubic B-spline's stencils out of line").
+/// otherwise may leave out of line; not for LME, whose evaluation is a call (benchmarks/README.md, "Optimisations
+/// tried").
 template <int Dim, class Shape>
 Range evaluate_stencils(Shape& shape, const std::vector<Vector<Dim>>& positions, Range items, Stencils<Dim>& stencils) {
   Range reached{std::numeric_limits<int>::max(), 0};
