@@ -1,7 +1,8 @@
 /// \file
 /// The fast form of the local max-ent (LME) shape functions, the run's default: the same Eqs. (35)-(41) and
 /// Newton's solve of Eq. (38) as the reference form, mpm/shape/lme_reference.hpp (read that first), arranged to
-/// cost less per evaluation and tested against it on random particle positions (mpm/fast/lme_fast_doctests.hpp).
+/// cost less per evaluation and tested against it on random particle positions (mpm/fast/lme_fast_doctests.hpp,
+/// and its warm start in mpm/fast/lme_fast_warm_start_doctests.hpp).
 /// What differs from the reference:
 /// - Newton is warm-started from the particle's multiplier of its previous evaluation, moved to x to second order
 ///   (lme_multiplier_slope, lme_multiplier_curvature, from the third moments of the offsets);
@@ -470,3 +471,4 @@ using fast::LmeShape;  // the run's LME shape functions: the fast form
 }  // namespace mpm
 
 #include "mpm/fast/lme_fast_doctests.hpp"
+#include "mpm/fast/lme_fast_warm_start_doctests.hpp"
