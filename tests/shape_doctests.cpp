@@ -11,7 +11,7 @@
 #include "mpm/fast/fast_stencils.hpp"
 #include "mpm/particles/stencils.hpp"
 
-TEST_CASE("Tensor-product shapes list their nodes in ascending order, so fast::compute_stencils bounds the nodes a chunk reaches by the first and last") {
+TEST_CASE("Tensor-product shapes and LME's neighbours list their nodes in ascending order, so fast::compute_stencils bounds the nodes a chunk reaches by the first and last") {
   const mpm::Grid<2> grid(mpm::Vector<2>(-1.0, 0.5), 0.25, {9, 7});
   std::mt19937 generator(11);
   std::uniform_real_distribution<double> along_x(-1.0, 1.25), along_y(0.5, 2.25);
@@ -45,4 +45,8 @@ TEST_CASE("Tensor-product shapes list their nodes in ascending order, so fast::c
   check(mpm::UgimpShape<2>(grid));
   check(mpm::BsplineShape<2, 2>(grid));
   check(mpm::BsplineShape<2, 3>(grid));
+  check(mpm::fast::LmeShape<2>(grid));  // gamma 3, the default
+  mpm::LmeOptions wide;
+  wide.gamma = 0.8;  // a wider support: more neighbours, more of them cut by the edges
+  check(mpm::fast::LmeShape<2>(grid, wide));
 }

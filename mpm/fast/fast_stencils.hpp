@@ -21,24 +21,32 @@
 #include "mpm/fast/random_state.hpp"
 #include "mpm/fast/scatter.hpp"
 #include "mpm/particles/stencils.hpp"
+#include "mpm/fast/lme_fast.hpp"
 #include "mpm/shape/bspline.hpp"
 #include "mpm/shape/linear.hpp"
 #include "mpm/shape/ugimp.hpp"
 
 namespace mpm::fast {
 
+/// Whether a shape is a tensor product of 1D factors (mpm/shape/tensor_product.hpp): linear, uGIMP, the B-splines.
+template <class Shape>
+inline constexpr bool is_tensor_product = false;
+template <int Dim>
+inline constexpr bool is_tensor_product<LinearShape<Dim>> = true;
+template <int Dim>
+inline constexpr bool is_tensor_product<UgimpShape<Dim>> = true;
+template <int Dim, int Degree>
+inline constexpr bool is_tensor_product<BsplineShape<Dim, Degree>> = true;
+
 /// Whether a shape function lists the nodes of each stencil in ascending order, so that the nodes a chunk of
 /// particles reaches are bounded by each stencil's first and last node instead of a search over all of them. True
-/// for the tensor products (x fastest, mpm/shape/tensor_product.hpp), each checked in tests/shape_doctests.cpp, at
-/// the grid's edges too; false (the search) for any other shape, the LME neighbours among them.
+/// for the tensor products (x fastest, mpm/shape/tensor_product.hpp) and for LME's neighbours (lme_neighbours
+/// walks the lattice box x fastest), each checked in tests/shape_doctests.cpp, at the grid's edges too; false (the
+/// search) for any other shape.
 template <class Shape>
-inline constexpr bool lists_nodes_ascending = false;
+inline constexpr bool lists_nodes_ascending = is_tensor_product<Shape>;
 template <int Dim>
-inline constexpr bool lists_nodes_ascending<LinearShape<Dim>> = true;
-template <int Dim>
-inline constexpr bool lists_nodes_ascending<UgimpShape<Dim>> = true;
-template <int Dim, int Degree>
-inline constexpr bool lists_nodes_ascending<BsplineShape<Dim, Degree>> = true;
+inline constexpr bool lists_nodes_ascending<LmeShape<Dim>> = true;
 
 /// Widens `reached` to the nodes of particle p's stencil: its first and last node when they are listed in ascending
 /// order, else every node.
@@ -96,7 +104,7 @@ void compute_stencils(const FastKernels& kernels, Shape& shape, const std::vecto
   for_each_chunk(count, static_cast<long>(count) * stencils.capacity, [&](int chunk, Range items) {
     Range reached;
     try {
-      if constexpr (lists_nodes_ascending<Shape>)
+      if constexpr (is_tensor_product<Shape>)
         reached = evaluate_tensor_product_stencils(shape, positions, items, stencils);
       else
         reached = evaluate_stencils(shape, positions, items, stencils);
