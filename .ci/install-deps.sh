@@ -5,7 +5,7 @@
 # When everything is already present it is quick and quiet.
 set -euo pipefail
 
-packages=(cmake make g++ libeigen3-dev doctest-dev libgsl-dev libtomlplusplus-dev libmuparser-dev libcli11-dev gnuplot-nox doxygen libjs-mathjax time chromium)
+packages=(cmake make g++ libeigen3-dev doctest-dev libgsl-dev libtomlplusplus-dev libmuparser-dev libcli11-dev gnuplot-nox doxygen libjs-mathjax time chromium valgrind)
 
 missing=()
 for package in "${packages[@]}"; do
