@@ -29,9 +29,12 @@ csv=$out/instructions_compare.csv
 count() {
   local name=$1 binary=$2 scene=$3; shift 3
   local dir=$work/$name
-  valgrind --tool=callgrind --callgrind-out-file="$dir.callgrind" --toggle-collect='mpm::Simulation<*>::run(*' \
-    "$binary" run "$scene" --out "$dir" --threads 1 --set output.snapshots=[] --set output.every=1000000 "$@" \
-    > /dev/null 2> "$dir.log"
+  if ! valgrind --tool=callgrind --callgrind-out-file="$dir.callgrind" --toggle-collect='mpm::Simulation<*>::run(*' \
+      "$binary" run "$scene" --out "$dir" --threads 1 --set output.snapshots=[] --set output.every=1000000 "$@" \
+      > /dev/null 2> "$dir.log" || ! grep -q '"status": "done"' "$dir/run.json" 2> /dev/null; then
+    echo "error: $name: the run did not end done ($dir.log, $dir/run.json)" >&2
+    exit 1
+  fi
   local particles steps instructions
   particles=$(grep -o '"particles": [0-9]*' "$dir/run.json" | head -1 | awk '{print $2}')
   steps=$(grep -o '"steps": [0-9]*' "$dir/run.json" | head -1 | awk '{print $2}')
@@ -69,7 +72,8 @@ done
 python3 - "$csv" "$out/instructions_compare.md" "$old" "$new" <<'EOF'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
-per = {(r["binary"], r["scene"], r["shape"], r["method"]): float(r["instructions_per_particle_step"]) for r in rows}
+per = {(r["binary"], r["scene"], r["shape"], r["method"]):  # from the counts, not the CSV's rounded column
+       int(r["instructions"]) / (int(r["particles"]) * int(r["steps"])) for r in rows}
 keys = []
 for r in rows:
     k = (r["scene"], r["shape"], r["method"])
@@ -86,7 +90,7 @@ for k in keys:
 def verdict(values, what, bound):
     low, high = min(values), max(values)
     count = sum(1 for r, _ in values if r <= bound)
-    return (f"{what}: from {low[0]:.4f} ({' '.join(low[1])}) to {high[0]:.4f} ({' '.join(high[1])}); "
+    return (f"{what}: from {low[0]:.5f} ({' '.join(low[1])}) to {high[0]:.5f} ({' '.join(high[1])}); "
             f"{count} of {len(values)} at {bound} or below.")
 lines += ["", verdict(ratios, "new / old of the instructions per particle-step", 1.05), ""]
 lines += ["## Cost relative to linear in instructions (make bench's cost ratio, counted)", "",
@@ -97,7 +101,7 @@ for k in keys:
     old_cost = per[("old",) + k] / per[("old", k[0], "linear", k[2])]
     new_cost = per[("new",) + k] / per[("new", k[0], "linear", k[2])]
     costs.append((new_cost / old_cost, k))
-    lines.append(f"| {k[0]} | {k[1]} | {k[2]} | {old_cost:.3f} | {new_cost:.3f} | {new_cost / old_cost:.4f} |")
+    lines.append(f"| {k[0]} | {k[1]} | {k[2]} | {old_cost:.3f} | {new_cost:.3f} | {new_cost / old_cost:.5f} |")
 if costs:
     lines += ["", verdict(costs, "new / old of the cost ratios in instructions", 1.05),
               "(A higher cost ratio is more work relative to linear.)", ""]

@@ -4,9 +4,9 @@
 # the predictor-corrector, one thread. Two ways to pair the runs (COMPARE_SPEED_MODE):
 #   interleaved (default)  each round runs every configuration with the old and then the new binary (their order
 #                          alternates from round to round), so that a busy spell of the shared machine slows both alike;
-#   simultaneous           each round runs the old and the new binary at the same time, each pinned to a core of its
-#                          own (taskset; their cores swap from round to round), so that a busy spell of the host falls
-#                          on both runs at once; needs two cores.
+#   simultaneous           each round runs the old and the new binary at the same time, each pinned to a CPU of its
+#                          own (taskset, the first two CPUs allowed; they swap from round to round), so that a busy
+#                          spell of the host falls on both runs at once; needs two CPUs.
 # Each binary's fastest run of each configuration is kept, and its spread over the rounds is reported.
 #   benchmarks/compare_speed.sh OLD_MPM NEW_MPM [ROUNDS]     (ROUNDS: default 5)
 # Writes results/bench/speed_compare.csv (one row per run) and speed_compare.md (per configuration: the best
@@ -40,12 +40,17 @@ csv=$out/speed_compare.csv
 phases="stencils p2g stress forces grid g2p checks"
 
 # seconds DIR BINARY SCENE OVERRIDES...: the step's seconds of one run on one thread (the sum of its phases), its
-# files in DIR; run under the command in the array pin (taskset -c CPU) when it is set
+# files in DIR; run under the command in the array pin (taskset -c CPU) when it is set. Fails (status 1) unless
+# the run ended done.
 pin=()
 seconds() {
   local dir=$1 binary=$2 scene=$3; shift 3
   rm -rf "$dir"
-  "${pin[@]}" "$binary" run "$scene" --out "$dir" --threads 1 --set output.snapshots=[] --set output.every=1000000 "$@" > /dev/null
+  if ! "${pin[@]}" "$binary" run "$scene" --out "$dir" --threads 1 --set output.snapshots=[] --set output.every=1000000 \
+      "$@" > /dev/null || ! grep -q '"status": "done"' "$dir/run.json"; then
+    echo "error: $binary run $scene $*: the run did not end done ($dir/run.json)" >&2
+    return 1
+  fi
   local total=0 value
   for phase in $phases; do
     value=$(grep -o "\"$phase\": [-0-9.e+]*" "$dir/run.json" | head -1 | awk '{print $2}')
@@ -64,7 +69,13 @@ row() {
   echo "$1,$2,$3,$4,$5,$6,$particles,$steps,$time,$(awk -v p="$particles" -v s="$steps" -v t="$time" 'BEGIN{printf "%.4e", p * s / t}')"
 }
 
-seconds "$work/run" "$new" "$root/scenes/dyka_bar.toml" --set 'grid.cells=[640]' --set 'solver.shape="lme"' > /dev/null  # warm-up
+for binary in "$old" "$new"; do  # warm-up
+  seconds "$work/run" "$binary" "$root/scenes/dyka_bar.toml" --set 'grid.cells=[640]' --set 'solver.shape="lme"' > /dev/null
+done
+# The two CPUs of the simultaneous mode: the first two this process may run on (two logical CPUs; whether they are
+# two physical cores the script cannot tell).
+cpus=(0 1)
+[[ $mode == simultaneous ]] && read -r -a cpus <<< "$(python3 -c 'import os; print(*sorted(os.sched_getaffinity(0))[:2])')"
 echo "round,binary,cpu,scene,shape,method,particles,steps,seconds,particle_steps_per_second" > "$csv"
 for ((round = 1; round <= rounds; ++round)); do
   order=(old new)
@@ -72,23 +83,23 @@ for ((round = 1; round <= rounds; ++round)); do
   for configuration in "${configurations[@]}"; do
     read -r scene shape method <<< "$configuration"
     read -r -a overrides <<< "$(settings "$scene" "$shape" "$method")"
-    if [[ $mode == simultaneous ]]; then  # order[0] on core 0, order[1] on core 1, at the same time
+    if [[ $mode == simultaneous ]]; then  # order[0] on cpus[0], order[1] on cpus[1], at the same time
       pids=()
       for cpu in 0 1; do
         binary=$old
         [[ ${order[cpu]} == new ]] && binary=$new
-        (pin=(taskset -c "$cpu") && seconds "$work/run$cpu" "$binary" "$root/scenes/$scene.toml" "${overrides[@]}" \
+        (pin=(taskset -c "${cpus[cpu]}") && seconds "$work/run$cpu" "$binary" "$root/scenes/$scene.toml" "${overrides[@]}" \
           > "$work/row$cpu") &
         pids+=($!)
       done
       for pid in "${pids[@]}"; do wait "$pid"; done  # a failed run stops the script (set -e)
-      for cpu in 0 1; do row "$round" "${order[cpu]}" "$cpu" "$scene" "$shape" "$method" "$(< "$work/row$cpu")" >> "$csv"; done
+      for cpu in 0 1; do row "$round" "${order[cpu]}" "${cpus[cpu]}" "$scene" "$shape" "$method" "$(< "$work/row$cpu")" >> "$csv"; done
     else
       for which in "${order[@]}"; do
         binary=$old
         [[ $which == new ]] && binary=$new
-        row "$round" "$which" any "$scene" "$shape" "$method" \
-          "$(seconds "$work/run" "$binary" "$root/scenes/$scene.toml" "${overrides[@]}")" >> "$csv"
+        result=$(seconds "$work/run" "$binary" "$root/scenes/$scene.toml" "${overrides[@]}")  # stops on a failed run
+        row "$round" "$which" any "$scene" "$shape" "$method" "$result" >> "$csv"
       done
     fi
   done
