@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "mpm/cli/help.hpp"  // and through it every command
-#include "mpm/version.hpp"   // generated at build time (mpm/cli/version.cmake): MPM_VERSION
+#include "mpm/cli/version.hpp"  // defined by a unit generated at build time (mpm/cli/version.cmake)
 
 namespace {
 
@@ -62,14 +62,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   mpm::io::RunIdentity identity;  // the version and command line written into run.json
-  identity.version = MPM_VERSION;
+  identity.version = mpm::cli::version();
   identity.command_line.assign(argv, argv + argc);
   if (arguments[0] == "--version" || arguments[0] == "version") {
     if (arguments.size() > 1) {
       std::cerr << "error: --version: takes no argument\n";
       return 2;
     }
-    std::cout << "mpm " << MPM_VERSION << "\n";
+    std::cout << "mpm " << mpm::cli::version() << "\n";
     return check_standard_output(0);
   }
   if (arguments[0] == "help" || mpm::cli::asks_for_help(arguments)) {

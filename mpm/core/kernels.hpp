@@ -29,6 +29,9 @@ using fast::FastKernels;
 /// student's edit of a kernel rebuilds the command-line program in seconds; every run and every stability analysis
 /// then takes the reference kernels, and a scene that asks for the fast ones is refused (solver.kernels).
 #ifdef MPM_LAB
+#ifndef __OPTIMIZE__  // GCC and Clang define it from -O1 up: a lab at -O0 runs the Dyka bar some 300x slower
+#error "the lab build (MPM_LAB) must be optimised: CMAKE_CXX_FLAGS_LAB (MPM_LAB_FLAGS) holds no -O level"
+#endif
 inline constexpr bool lab_build = true;
 #else
 inline constexpr bool lab_build = false;
