@@ -6,7 +6,8 @@
 /// `v_I_k` is \f$ \mathbf v_I^k \f$, `v_I_k1` is \f$ \mathbf v_I^{k+1} \f$, `v_I_pred` the predictor of Eq. (29);
 /// the forces and accelerations carry the level of the stress that makes them, `f_I_k1` \f$ \mathbf f_I^{k+1} \f$
 /// (update stress first, the predictor-corrector) and `f_I_k` \f$ \mathbf f_I^k \f$ (USL, MUSL), as the book names
-/// them; a nodal value, once computed, stays in the later phases' rows.
+/// them, with its two parts beside it, `f_I_k1_ext` (Eq. (15)) and `f_I_k1_int` (Eq. (14)); a nodal value, once
+/// computed, stays in the later phases' rows.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -71,8 +72,9 @@ inline std::string trace_number(double value, bool csv) {
 template <int Dim>
 class StepTrace : public Monitor<Dim> {
  public:
-  StepTrace(const Model<Dim>& model, long step, TraceVariant variant, bool csv)
-      : model_(model), step_(step), names_(std::move(variant)), csv_(csv) {}
+  StepTrace(const Model<Dim>& model, long step, TraceVariant variant, bool csv,
+            BodyForceTime body_force_time = BodyForceTime::step_end)
+      : model_(model), step_(step), names_(std::move(variant)), csv_(csv), body_force_time_(body_force_time) {}
 
   bool watches(long step, double time, double dt) override {
     if (step != step_) return false;
@@ -83,6 +85,7 @@ class StepTrace : public Monitor<Dim> {
   void after(Phase phase, const Particles<Dim>& particles, const GridFields<Dim>& grid,
              const Stencils<Dim>& stencils) override {
     if (!phase_info(phase).of_step) return;
+    if (phase == Phase::forces) split_forces(particles, grid, stencils);
     capture(phase, grid);
     if (phase == Phase::euler_update) interpolate_acceleration(grid, stencils);
     if (phase == Phase::stress) state_level_ = "k1";
@@ -115,6 +118,26 @@ class StepTrace : public Monitor<Dim> {
       for (int k = 0; k < stencil.count; ++k)
         acceleration_[p] += stencil.value[k] * grid.nodal_acceleration[stencil.node[k]];
     }
+  }
+
+  /// The nodal force's two parts, which the kernel adds into one field: the external force of Eq. (15),
+  /// \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b_p \f$, summed here from the step's body force (the same
+  /// \f$ \mathbf b_p \f$ as the loop's, at the time gravity.evaluate_at names), and the internal force, Eq. (14), as
+  /// what the kernel added beyond it, \f$ \mathbf f_I^{int} = \mathbf f_I + \mathbf r_I - \mathbf f_I^{ext} \f$ (the
+  /// reactions hold the force of the fixed components): so an edit of the kernel's Eq. (14) shows in `f_I_k1_int`.
+  void split_forces(const Particles<Dim>& particles, const GridFields<Dim>& grid, const Stencils<Dim>& stencils) {
+    ParticleBodyForces<Dim> b_p;
+    model_.body_force.evaluate(body_force_time_ == BodyForceTime::step_end ? time_ + dt_ : time_, particles, b_p);
+    std::vector<Vector<Dim>> external(grid.size(), Vector<Dim>::Zero()), internal(grid.size(), Vector<Dim>::Zero());
+    for (int p = 0; p < particles.size() && !b_p.all_zero; ++p) {
+      const ParticleStencil<Dim> stencil = stencils.of(p);
+      for (int k = 0; k < stencil.count; ++k)
+        external[stencil.node[k]] += stencil.value[k] * particles.mass[p] * b_p.per_unit_mass[p];
+    }
+    for (int node = 0; node < grid.size(); ++node)
+      internal[node] = grid.nodal_force[node] + grid.reaction[node] - external[node];
+    keep("f_I_" + names_.force_level + "_ext", external);
+    keep("f_I_" + names_.force_level + "_int", internal);
   }
 
   void capture(Phase phase, const GridFields<Dim>& grid) {
@@ -187,6 +210,7 @@ class StepTrace : public Monitor<Dim> {
   long step_;
   TraceVariant names_;
   bool csv_;
+  BodyForceTime body_force_time_;  ///< when in the step b_p is read (gravity.evaluate_at), for f_I^ext
   double time_ = 0.0, dt_ = 0.0;
   std::string motion_level_ = "k", state_level_ = "k";  ///< the time level of x_p, v_p, a_p and of eps, sigma, rho
   std::vector<Column> columns_;
@@ -335,7 +359,7 @@ template <int Dim>
 int trace_run(const io::Scene& scene, const TraceRequest& request, std::ostream& out, std::ostream& err) {
   const Setup<Dim> setup = build_setup<Dim>(scene);
   const TraceVariant variant = trace_variant(scene);
-  StepTrace<Dim> trace(setup.model, request.step, variant, request.format == "csv");
+  StepTrace<Dim> trace(setup.model, request.step, variant, request.format == "csv", scene.control.body_force_time);
   RunSummary summary;
   try {
     summary = run_setup<Dim>(scene, setup, trace, &summary);
@@ -366,8 +390,8 @@ inline std::unique_ptr<CommandParser> trace_parser(TraceRequest& request) {
   auto app = scene_command_parser(
       "trace",
       "Runs a scene to step N and prints, after each phase of that step of its integrator, the phase's equations,\n"
-      "every nodal quantity of the nodes that hold mass (m_I, p_I, v_I, f_I, a_I, the fixed components,\n"
-      "reactions r_I) and every particle quantity (x, v, a, strain, stress, density), as CSV or an aligned table;\n"
+      "every nodal quantity of the nodes that hold mass (m_I, p_I, v_I, f_I with its external and internal parts,\n"
+      "a_I, the fixed components, reactions r_I) and every particle quantity (x, v, a, strain, stress, density), as CSV or an aligned table;\n"
       "writes no file. "
       "Column names say the time level: _k at t_k, _k1 at t_k + dt, _pred the predictor; f_I and a_I that of the\n"
       "stress that makes them. The phases are numbered as the integrator numbers them (the book's tables too).",
@@ -460,11 +484,11 @@ TEST_CASE("mpm trace: the phases of one forward-Euler step on two particles by h
   CHECK(blocks[3].nodes.rows[1][5] == "-1.25");           // v_I^k = p_I^k / m_I = -5 / 4
   CHECK(blocks[4].particles.header[4] == "eps_p_k1_xx");  // after the stress update
   const TraceTable& balance = blocks[6].nodes;  // Eq. (12): p_I^{k+1} = p_I^k + dt f_I, each under its name
-  CHECK(balance.header ==
-        std::vector<std::string>{"node", "x_I", "fixed", "m_I", "p_I_k_x", "v_I_k_x", "f_I_k1_x", "r_I_x", "p_I_k1_x"});
+  CHECK(balance.header == std::vector<std::string>{"node", "x_I", "fixed", "m_I", "p_I_k_x", "v_I_k_x", "f_I_k1_ext_x",
+                                                   "f_I_k1_int_x", "f_I_k1_x", "r_I_x", "p_I_k1_x"});
   for (const auto& row : balance.rows)
-    CHECK(std::stod(row[8]) == doctest::Approx(std::stod(row[4]) + 0.1 * std::stod(row[6])));
-  CHECK(std::stod(balance.rows[1][6]) != 0.0);
+    CHECK(std::stod(row[10]) == doctest::Approx(std::stod(row[4]) + 0.1 * std::stod(row[8])));
+  CHECK(std::stod(balance.rows[1][8]) != 0.0);
   const TraceTable& last = blocks[7].nodes;
   CHECK(last.header.back() == "v_I_k1_x");
   CHECK(blocks[7].particles.header[2] == "x_p_k1");
@@ -480,6 +504,33 @@ TEST_CASE("mpm trace: the phases of one forward-Euler step on two particles by h
   CHECK(equations_text("(30)") == ", Eq. (30)");
   CHECK(equations_text("(16) (17) (3)") == ", Eqs. (16) (17) (3)");
   CHECK(equations_text("-").empty());
+}
+
+TEST_CASE("mpm trace: Eq. (14), Eq. (15): the nodal force apart, f_I^ext = sum_p N_Ip m_p b_p and f_I^int, the rest") {
+  // The worked example (paper/12): weight b = 10 on m_p = (2, 4) at x_p = (0.25, 1.5), h = 1: f^ext = (0.75 * 20,
+  // 0.25 * 20 + 0.5 * 40, 0.5 * 40) = (15, 25, 20); after the stress update f^int = (-3, 9, -6) (nodal_forces.hpp's
+  // doctest); node 2 is held, so its f_I = 0 and its r_I = 20 - 6 = 14, of which the split keeps both parts.
+  testing::WorkedExample example;
+  Model<1> model;
+  model.grid = example.grid;
+  model.materials = {LinearElastic{example.young_modulus, 0.0, example.density}};
+  model.fixed = {FixedDof{2, 0}};
+  model.body_force.gravity.acceleration = Vector<1>(testing::WorkedExample::gravity);
+  StepTrace<1> trace(model, 1, TraceVariant{}, true);
+  REQUIRE(trace.watches(1, 0.0, example.dt));
+  TraceObserver<1> observer{trace, example.stencils};
+  ForwardEuler().step(FastKernels{}, model, example.stencils, testing::WorkedExample::body_force(), example.dt,
+                      example.particles, example.fields, observer);
+  const TraceTable& forces = trace.blocks()[5].nodes;
+  REQUIRE(forces.header == std::vector<std::string>{"node", "x_I", "fixed", "m_I", "p_I_k_x", "v_I_k_x", "f_I_k1_ext_x",
+                                                    "f_I_k1_int_x", "f_I_k1_x", "r_I_x"});
+  const double external[3] = {15.0, 25.0, 20.0}, internal[3] = {-3.0, 9.0, -6.0}, total[3] = {12.0, 34.0, 0.0};
+  for (int node = 0; node < 3; ++node) {
+    CHECK(std::stod(forces.rows[node][6]) == doctest::Approx(external[node]));
+    CHECK(std::stod(forces.rows[node][7]) == doctest::Approx(internal[node]));
+    CHECK(std::stod(forces.rows[node][8]) == doctest::Approx(total[node]));
+  }
+  CHECK(std::stod(forces.rows[2][9]) == doctest::Approx(14.0));
 }
 
 TEST_CASE("mpm trace: a scene run to step 2 and no further, its t_k the first dt, a step beyond the end refused") {
