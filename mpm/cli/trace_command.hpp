@@ -531,6 +531,21 @@ TEST_CASE("mpm trace: Eq. (14), Eq. (15): the nodal force apart, f_I^ext = sum_p
     CHECK(std::stod(forces.rows[node][8]) == doctest::Approx(total[node]));
   }
   CHECK(std::stod(forces.rows[2][9]) == doctest::Approx(14.0));
+  // Gravity ramped by Eq. (44) over T = 1 s and read at the step's end (gravity.evaluate_at's default), as the loop
+  // reads it: b = 10 g(0.2 s) = 10 (1 - cos(0.4 pi)) / 2; the external part scales with it, the internal one does not.
+  testing::WorkedExample ramped;
+  model.body_force.gravity.ramp_period = 1.0;
+  const double b = testing::WorkedExample::gravity * gravity_ramp(ramped.dt, 1.0);
+  StepTrace<1> ramped_trace(model, 1, TraceVariant{}, true, BodyForceTime::step_end);
+  REQUIRE(ramped_trace.watches(1, 0.0, ramped.dt));
+  TraceObserver<1> ramped_observer{ramped_trace, ramped.stencils};
+  ForwardEuler().step(FastKernels{}, model, ramped.stencils, ParticleBodyForces<1>{{Vector<1>(b), Vector<1>(b)}, false, true},
+                      ramped.dt, ramped.particles, ramped.fields, ramped_observer);
+  const TraceTable& ramped_forces = ramped_trace.blocks()[5].nodes;
+  for (int node = 0; node < 3; ++node) {
+    CHECK(std::stod(ramped_forces.rows[node][6]) == doctest::Approx(external[node] * b / 10.0));
+    CHECK(std::stod(ramped_forces.rows[node][7]) == doctest::Approx(internal[node]));
+  }
 }
 
 TEST_CASE("mpm trace: a scene run to step 2 and no further, its t_k the first dt, a step beyond the end refused") {
