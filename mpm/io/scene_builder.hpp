@@ -1,6 +1,9 @@
 /// \file
 /// From validated scene settings to the objects of a run: grid, model, particles, observers.
 #pragma once
+#include <doctest/doctest.h>
+
+#include <algorithm>
 #include <limits>
 
 #include "mpm/exact/manufactured.hpp"
@@ -73,6 +76,14 @@ Model<Dim> build_model(const Scene& scene) {
       model.fixed.insert(model.fixed.end(), dofs.begin(), dofs.end());
     }
   }
+  // Each held component once: where two fixed faces meet (a corner, and the margin layers behind it) both list it,
+  // and store_reactions, run twice on one component, would store the force it had already zeroed as its reaction.
+  auto order = [](const FixedDof& a, const FixedDof& b) {
+    return a.node != b.node ? a.node < b.node : a.component < b.component;
+  };
+  auto same = [](const FixedDof& a, const FixedDof& b) { return a.node == b.node && a.component == b.component; };
+  std::sort(model.fixed.begin(), model.fixed.end(), order);
+  model.fixed.erase(std::unique(model.fixed.begin(), model.fixed.end(), same), model.fixed.end());
   model.body_force.gravity.acceleration = to_vector<Dim>(scene.gravity);
   model.body_force.gravity.ramp_period = scene.ramp_period;
   model.body_force.field = body_force_field<Dim>(scene.formulas);
@@ -150,6 +161,24 @@ std::vector<int> observed_particles(const Scene& scene, const Particles<Dim>& pa
     observed.push_back(nearest);
   }
   return observed;
+}
+
+TEST_CASE("build_model: two fixed faces that meet hold each corner component once, and its reaction is its force") {
+  // A 2 x 2 grid of cells (3 x 3 nodes, no margins), xmin and ymin fixed in x and y: 3 + 3 nodes minus the shared
+  // corner, 5 nodes, 10 components; the corner node 0 is listed by both faces and must be held once.
+  const std::string text =
+      "dimension = 2\n[grid]\nlength = [2.0, 2.0]\ncells = [2, 2]\nmargin_min = [0, 0]\nmargin_max = [0, 0]\n"
+      "[material]\nyoung_modulus = 1.0\ndensity = 1.0\n"
+      "[[body]]\nmin = [0.0, 0.0]\nmax = [2.0, 2.0]\n[[fixed]]\nface = \"xmin\"\ncomponents = [\"x\", \"y\"]\n"
+      "[[fixed]]\nface = \"ymin\"\ncomponents = [\"x\", \"y\"]\n[solver]\nend_time = 1.0\n";
+  const Model<2> model = build_model<2>(read_scene(parse_scene_text(text, "corner.toml")));
+  CHECK(model.fixed.size() == 10);
+  CHECK(std::count_if(model.fixed.begin(), model.fixed.end(), [](const FixedDof& d) { return d.node == 0; }) == 2);
+  std::vector<Vector<2>> force(model.grid.node_count(), Vector<2>(3.0, -4.0));
+  std::vector<Vector<2>> reaction(model.grid.node_count(), Vector<2>::Zero());
+  store_reactions(model.fixed, force, reaction);
+  CHECK(reaction[0] == Vector<2>(3.0, -4.0));
+  CHECK(force[0] == Vector<2>::Zero());
 }
 
 }  // namespace mpm::io
