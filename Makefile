@@ -20,8 +20,9 @@ test: configure
 	@cmake --build $(BUILD_DIR) --target test_programs -j $(JOBS)
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
-# The lab build (README, "Editing a kernel"): the command-line program alone at -O1, on the reference kernels alone
-# (CMake build type Lab), in its own folder: after an edit of a kernel, make lab again rebuilds two units.
+# The lab build (README, "Editing a kernel"; paper/13_lab.md): the command-line program alone at -O1 (MPM_LAB_FLAGS),
+# on the reference kernels alone (CMake build type Lab), in its own folder: after an edit of a kernel, make lab again
+# rebuilds the two run units (and the one-line version unit when the tree's version changes).
 LAB_DIR ?= build-lab
 lab: deps
 	@mkdir -p $(LAB_DIR)

@@ -77,7 +77,7 @@ timed() {
     { tail -30 "$work/$1.last.log" >&2; exit 1; }
   read -r wall user system < "$work/time.txt"
   units=$(sed -n 's|.*Building CXX object .*/\([^/]*\)\.o$|\1|p' "$work/$1.last.log" | sort | tr '\n' ' ')
-  echo "$1,$2,$3,$wall,$(echo "$user + $system" | bc),$load,${units% }" >> "$csv"
+  echo "$1,$2,$3,$wall,$(awk -v u="$user" -v s="$system" 'BEGIN { print u + s }'),$load,${units% }" >> "$csv"
   echo "build_time: $1 $2 round $3: ${wall} s wall (${units% })" >&2
 }
 
@@ -88,7 +88,7 @@ edit_and_time() {  # NAME ROUND: each kernel header edited in turn (the first of
       [[ -f "$src/$file" ]] || continue
       [[ -z $(git_in "$src" status --porcelain) ]] || { echo "error: $src is not clean before an edit" >&2; exit 1; }
       echo "// build_time.sh: an edit of round $2" >> "$src/$file"
-      timed "$1" "edit $(basename "${names%% *}")" "$2"
+      timed "$1" "edit $(basename "$file")" "$2"
       git_in "$src" commit -qam "build_time.sh: round $2, $file"
       build "$1"  # untimed: the new version (a clean tree again)
       break

@@ -3,15 +3,17 @@
 # on the same reference kernels (`--kernels reference`), the two binaries interleaved in one run.
 #   benchmarks/lab_speed.sh [RELEASE_BUILD_DIR] [LAB_BUILD_DIR] [ROUNDS]     (defaults: build, build-lab, 5)
 # Each round runs every configuration below once with each binary (their order alternating by round), one thread, no
-# snapshots; a run's time is its wall seconds (run.json's wall_seconds: set-up and the steps, not the process start).
+# snapshots; a run's time is its wall seconds (run.json's wall_seconds: set-up, the steps and the observers' output
+# that the scenes write every step, not the process start): what a student waits for.
 # Per configuration: the best of the rounds of each binary and their ratio lab / Release, with the smallest and the
 # largest ratio of one round (the two runs of a round measured one after the other). Issue 45's target: the Dyka bar
 # at 640 cells within 3x, judged on the largest ratio of a round (not on the bests alone).
 # Writes results/bench/lab_speed.csv (one row per run) and lab_speed.md, or into $MPM_BENCH_OUT.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-release=$root/${1:-build}/bin/mpm
-lab=$root/${2:-build-lab}/bin/mpm
+folder() { [[ $1 == /* ]] && echo "$1" || echo "$root/$1"; }  # a build folder, absolute or from the root
+release=$(folder "${1:-build}")/bin/mpm
+lab=$(folder "${2:-build-lab}")/bin/mpm
 rounds=${3:-5}
 if ! [[ "$rounds" =~ ^[1-9][0-9]?$ ]]; then
   echo "error: ROUNDS: '$rounds' is not a whole number from 1 to 99" >&2

@@ -6,8 +6,9 @@
 /// `v_I_k` is \f$ \mathbf v_I^k \f$, `v_I_k1` is \f$ \mathbf v_I^{k+1} \f$, `v_I_pred` the predictor of Eq. (29);
 /// the forces and accelerations carry the level of the stress that makes them, `f_I_k1` \f$ \mathbf f_I^{k+1} \f$
 /// (update stress first, the predictor-corrector) and `f_I_k` \f$ \mathbf f_I^k \f$ (USL, MUSL), as the book names
-/// them, with its two parts beside it, `f_I_k1_ext` (Eq. (15)) and `f_I_k1_int` (Eq. (14)); a nodal value, once
-/// computed, stays in the later phases' rows.
+/// them, with its two parts beside it: `f_I_k1_ext`, Eq. (15) summed by the trace itself from the step's b_p, and
+/// `f_I_k1_int`, the rest of the kernel's force (Eq. (14) when the kernel's Eq. (15) is right: an error in either part
+/// of the kernel shows there); a nodal value, once computed, stays in the later phases' rows.
 #pragma once
 #include <doctest/doctest.h>
 
@@ -124,7 +125,9 @@ class StepTrace : public Monitor<Dim> {
   /// \f$ \mathbf f_I^{ext} = \sum_p N_{Ip}\, m_p \mathbf b_p \f$, summed here from the step's body force (the same
   /// \f$ \mathbf b_p \f$ as the loop's, at the time gravity.evaluate_at names), and the internal force, Eq. (14), as
   /// what the kernel added beyond it, \f$ \mathbf f_I^{int} = \mathbf f_I + \mathbf r_I - \mathbf f_I^{ext} \f$ (the
-  /// reactions hold the force of the fixed components): so an edit of the kernel's Eq. (14) shows in `f_I_k1_int`.
+  /// reactions hold the force of the fixed components): so an edit of the kernel's Eq. (14) shows in `f_I_k1_int`,
+  /// and so would an error in its Eq. (15), since the trace sums that part itself. The suffix is the level of the
+  /// stress (`f_I_k_ext` under USL and MUSL), not of b_p, which is read where gravity.evaluate_at says.
   void split_forces(const Particles<Dim>& particles, const GridFields<Dim>& grid, const Stencils<Dim>& stencils) {
     ParticleBodyForces<Dim> b_p;
     model_.body_force.evaluate(body_force_time_ == BodyForceTime::step_end ? time_ + dt_ : time_, particles, b_p);
@@ -539,8 +542,9 @@ TEST_CASE("mpm trace: Eq. (14), Eq. (15): the nodal force apart, f_I^ext = sum_p
   StepTrace<1> ramped_trace(model, 1, TraceVariant{}, true, BodyForceTime::step_end);
   REQUIRE(ramped_trace.watches(1, 0.0, ramped.dt));
   TraceObserver<1> ramped_observer{ramped_trace, ramped.stencils};
-  ForwardEuler().step(FastKernels{}, model, ramped.stencils, ParticleBodyForces<1>{{Vector<1>(b), Vector<1>(b)}, false, true},
-                      ramped.dt, ramped.particles, ramped.fields, ramped_observer);
+  const ParticleBodyForces<1> ramped_b{{Vector<1>(b), Vector<1>(b)}, false, true};
+  ForwardEuler().step(FastKernels{}, model, ramped.stencils, ramped_b, ramped.dt, ramped.particles, ramped.fields,
+                      ramped_observer);
   const TraceTable& ramped_forces = ramped_trace.blocks()[5].nodes;
   for (int node = 0; node < 3; ++node) {
     CHECK(std::stod(ramped_forces.rows[node][6]) == doctest::Approx(external[node] * b / 10.0));
@@ -586,6 +590,8 @@ TEST_CASE("mpm trace: a scene run to step 2 and no further, its t_k the first dt
   REQUIRE(blocks.size() == 9);
   CHECK(blocks[4].nodes.header.back() == "r_I_x");
   CHECK(blocks[4].nodes.header[blocks[4].nodes.header.size() - 2] == "f_I_k_x");
+  CHECK(blocks[4].nodes.header[blocks[4].nodes.header.size() - 3] == "f_I_k_int_x");  // its parts at its level
+  CHECK(blocks[4].nodes.header[blocks[4].nodes.header.size() - 4] == "f_I_k_ext_x");
   CHECK(blocks[6].particles.header[4] == "a_p_k_x");
   CHECK(phase_number(usl, blocks[7].phase) == 8);
 }
