@@ -36,6 +36,9 @@ struct DykaResult {
   /// (the wave has passed A and the next has not come): signed along the exact jump into the plateau, so
   /// `overshoot` is the largest step beyond the exact level and `undershoot` the largest shortfall (both >= 0).
   double overshoot = 0.0, undershoot = 0.0;
+  /// Ringing: the total variation of v_A over the exact one's on the same samples (mpm::total_variation_ratio), the
+  /// whole history; 1 when v_A follows the exact jumps and settles, above 1 by twice each overshoot and oscillation.
+  double ringing = 0.0;
   double mass_error = 0.0;     ///< largest relative |sum m_I - sum m_p| of the run
   double newton_mean = 0.0, neighbours_mean = 0.0;
   int newton_max = 0;
@@ -135,6 +138,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   }
   if (!result.failed) result.rms = mpm::rms_error(result.velocity, result.exact);
   if (!result.failed) plateau_deviations(result, std::abs(v0));
+  if (!result.failed) result.ringing = mpm::total_variation_ratio(result.velocity, result.exact);
   // Forward Euler's velocity of the row at t_n is v(t_n + dt_n / 2), dt_n the step that starts there (the
   // last row takes the step before it); the recorder samples every step.
   std::vector<double> exact_own_time = result.exact;

@@ -22,14 +22,14 @@ inline void sweep_row(std::ofstream& out, const DykaResult& run, const std::stri
   out << shape << "," << integrator << "," << cells << "," << 0.1333 / cells << "," << crossing_ratio(cells) << "," << band_of(cells) << ","
       << run.rms << "," << run.rms / speed_v0 << "," << run.largest_speed / speed_v0 << "," << run.wall_seconds << "," << run.steps << ","
       << status(run) << "," << run.rms_own_time / speed_v0 << "," << run.newton_mean << "," << run.newton_max << "," << run.neighbours_mean << ","
-      << run.cpu_seconds << "," << run.overshoot << "," << run.undershoot << "\n";
+      << run.cpu_seconds << "," << run.overshoot << "," << run.undershoot << "," << run.ringing << "\n";
 }
 
 /// dyka_sweep.csv (Fig. 6, the work-precision chart; the smooth suite reads it), dyka_cfl.csv (every CFL) and
 /// dyka_sweep_authors.csv (LME under the authors' beta, CFL 0.5, on authors_cells; same columns as dyka_sweep.csv).
 inline void write_sweep(const Runs& runs) {
   const std::string columns = "shape,integrator,cells,h,crossing_ratio,band,rms,rms_over_v0,largest_speed_over_v0,wall_seconds,steps,status,"
-                              "rms_own_time_over_v0,newton_mean,newton_max,neighbours_mean,cpu_seconds,overshoot,undershoot";
+                              "rms_own_time_over_v0,newton_mean,newton_max,neighbours_mean,cpu_seconds,overshoot,undershoot,ringing";
   std::ofstream sweep = csv(runs, "dyka_sweep.csv", columns), all = csv(runs, "dyka_cfl.csv", "cfl," + columns);
   std::ofstream authors = csv(runs, "dyka_sweep_authors.csv", columns);
   for (const auto& shape : shapes)
