@@ -95,7 +95,11 @@ awk -v c="$c" -v L="$L" -v Z="$Z" 'BEGIN { print "step,time,label,vel,stress"
   for (n = 1; n <= 40; n++) { t = (L / 4 + L / 2 * n / 41) / c; printf "%d,%.17g,x,%.17g,%.17g\n", n, t, -2.5 + 0.1, 2.5 * Z - 1e6 } }' >"$work/other.csv"
 "$mpm" compare "$work/other.csv" "$bar" --at "$(calc "$L / 2")" --time-column time --column vel=v_x --column stress=sigma_xx \
   >"$work/score.csv" || fail "mpm compare (no tolerance: exit 0)"
-[[ $(head -1 "$work/score.csv") == "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max" ]] || fail "compare header"
+[[ $(head -1 "$work/score.csv") == "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing" ]] ||
+  fail "compare header"
+check "compare rms of v, even rows" "$(field "$work/score.csv" 1 rms_even)" 0.1 1e-9
+check "compare rms of v, odd rows" "$(field "$work/score.csv" 1 rms_odd)" 0.1 1e-9
+[[ $(field "$work/score.csv" 1 ringing) == nan ]] || fail "compare ringing where the exact v is constant: want nan"
 check "compare rms of v" "$(field "$work/score.csv" 1 rms)" 0.1 1e-9
 check "compare rms/v0" "$(field "$work/score.csv" 1 rms_normalised)" 0.02 1e-10
 check "compare max_abs of v" "$(field "$work/score.csv" 1 max_abs)" 0.1 1e-9

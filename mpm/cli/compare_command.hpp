@@ -102,13 +102,33 @@ struct ColumnScore {
   std::size_t samples = 0;
   double rms = 0.0, rms_normalised = 0.0, max_abs = 0.0, t_of_max = 0.0;
   std::vector<double> computed, exact;
+  /// The band of the score's own sampling: Eq. (43) on the even rows alone and on the odd rows alone (the rows as
+  /// the CSV numbers them from 0); a difference of two scores inside both of theirs is not resolved by the samples.
+  double rms_even = 0.0, rms_odd = 0.0;
+  /// Ringing apart from damping: the total variation of the column over the exact one's at the same times
+  /// (mpm::total_variation_ratio; 1 when it follows the exact history, above 1 by twice each overshoot and
+  /// oscillation); NaN when the exact history does not vary there or there are fewer than two rows.
+  double ringing = std::nan("");
 };
+
+/// Eq. (43) over every other row of `computed` and `exact`, from row `first` (0: the even rows, 1: the odd ones); the
+/// score of all rows when there is no row there.
+inline double rms_of_every_other(const std::vector<double>& computed, const std::vector<double>& exact, std::size_t first) {
+  std::vector<double> some_computed, some_exact;
+  for (std::size_t n = first; n < computed.size(); n += 2) some_computed.push_back(computed[n]), some_exact.push_back(exact[n]);
+  return some_computed.empty() ? rms_error(computed, exact) : rms_error(some_computed, some_exact);
+}
 
 /// Scores `computed` (at `times`) against `exact`: Eq. (43), divided by `scale` too, and the largest difference.
 inline ColumnScore score_column(const std::vector<double>& times, const std::vector<double>& computed,
                                 const std::vector<double>& exact, double scale) {
   ColumnScore score{"", "", computed.size(), rms_error(computed, exact), 0.0, -1.0, 0.0, computed, exact};
   score.rms_normalised = score.rms / scale;
+  score.rms_even = rms_of_every_other(computed, exact, 0);
+  score.rms_odd = rms_of_every_other(computed, exact, 1);
+  bool varies = false;
+  for (std::size_t n = 1; n < exact.size(); ++n) varies = varies || exact[n] != exact[n - 1];
+  if (varies) score.ringing = total_variation_ratio(computed, exact);
   for (std::size_t n = 0; n < computed.size(); ++n)
     if (std::abs(computed[n] - exact[n]) > score.max_abs) {
       score.max_abs = std::abs(computed[n] - exact[n]);
@@ -272,10 +292,11 @@ inline int compare(const ExactOptions& options, const CompareRequest& request, s
   }
   std::ostringstream text, above;
   text.precision(9);
-  text << "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max\n";
+  text << "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing\n";
   for (const auto& score : scores) {
     text << score.column << "," << score.quantity << "," << score.samples << "," << score.rms << ","
-         << score.rms_normalised << "," << score.max_abs << "," << score.t_of_max << "\n";
+         << score.rms_normalised << "," << score.max_abs << "," << score.t_of_max << "," << score.rms_even << ","
+         << score.rms_odd << "," << score.ringing << "\n";
     if (request.tolerance && !(score.rms_normalised <= *request.tolerance)) above << " " << score.column;
   }
   out << text.str() << std::flush;
@@ -297,13 +318,17 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "compare",
       "Scores any CSV with a header line (another code's output) against the scene's exact solution (as mpm exact\n"
       "evaluates it) at the material point --at and at the CSV's own sample times, and prints CSV:\n"
-      "  column,quantity,samples,rms,rms_normalised,max_abs,t_of_max\n"
+      "  column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing\n"
       "rms: Eq. (43), sqrt(sum (c_n - e_n)^2 / N) over the N rows, in the quantity's unit; rms_normalised: rms\n"
       "divided by the solution's scale of the quantity: velocity V* (the largest |v_0| or |sigma_0|/Z of the initial\n"
       "data: v0 for the Dyka bar, so the paper's RMS/v0), stress Z V*, displacement V* L/c (dyka_bar); rho g H,\n"
       "rho g H^2/(2M), g H/c (soil_column: base stress, top settlement, wave velocity); Z|V|, |V|, |V|/omega\n"
       "(vibrating_bar); A omega, (lambda + 2G) k A, |A| (manufactured); max_abs: the largest |c_n - e_n|, "
-      "at t_of_max (s).");
+      "at t_of_max (s).\n"
+      "rms_even, rms_odd: rms on the even and on the odd rows alone, the band of the CSV's own sampling (a\n"
+      "difference of two scores inside it is not resolved); ringing: the total variation of the column over the\n"
+      "exact one's at the same times (1: the exact history followed; above 1 by twice each overshoot and\n"
+      "oscillation; below 1: damped), nan where the exact history does not vary.");
   app.add_option("RESULT.csv", request.result_path, "the CSV to score")->required();
   app.add_option("SCENE.toml", options.scene_path, "the scene file whose exact solution scores it")->required();
   declare_exact_options(app, options);
@@ -348,6 +373,16 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   const ColumnScore spike = score_column(times, {1.0, -2.0, 3.5, 4.0}, exact, 1.0);
   CHECK(spike.rms == doctest::Approx(1.5).epsilon(1e-14));
   CHECK(spike.t_of_max == 2.0);
+  // Its band: the spike is on an even row (2): rms_even = sqrt(9 / 2), rms_odd = 0; the constant offset scores c on both.
+  CHECK(spike.rms_even == doctest::Approx(std::sqrt(4.5)).epsilon(1e-14));
+  CHECK(spike.rms_odd == 0.0);
+  CHECK(score.rms_even == doctest::Approx(0.25).epsilon(1e-14));
+  CHECK(score.rms_odd == doctest::Approx(0.25).epsilon(1e-14));
+  // Ringing: the offset series varies as the exact one does (TV 3 + 2.5 + 3.5 = 9): 1; an overshoot of 1 past -2
+  // adds 2 x 1 to the exact TV of 9: 11 / 9; a constant exact history: nan.
+  CHECK(score.ringing == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(score_column(times, {1.0, -3.0, 0.5, 4.0}, exact, 1.0).ringing == doctest::Approx(11.0 / 9.0).epsilon(1e-14));
+  CHECK(std::isnan(score_column(times, {1.0, 2.0, 1.0, 2.0}, {1.0, 1.0, 1.0, 1.0}, 1.0).ringing));
   const std::string path =
       (std::filesystem::temp_directory_path() / ("mpm_compare_test_" + std::to_string(::getpid()) + ".csv")).string();
   std::ofstream(path) << "t,v,w\n0,1,2\n1,1e-310,2\n";
