@@ -37,7 +37,8 @@ struct DykaResult {
   /// `overshoot` is the largest step beyond the exact level and `undershoot` the largest shortfall (both >= 0).
   double overshoot = 0.0, undershoot = 0.0;
   /// Ringing: the total variation of v_A over the exact one's on the same samples (mpm::total_variation_ratio), the
-  /// whole history; 1 when v_A follows the exact jumps and settles, above 1 by twice each overshoot and oscillation.
+  /// whole history, sampled every step; 1 when v_A follows the exact jumps and settles, above 1 by twice each
+  /// overshoot and oscillation, lowered by the amplitude a damped jump loses. 0 for a stopped run (not scored).
   double ringing = 0.0;
   double mass_error = 0.0;     ///< largest relative |sum m_I - sum m_p| of the run
   double newton_mean = 0.0, neighbours_mean = 0.0;

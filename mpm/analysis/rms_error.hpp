@@ -28,11 +28,13 @@ TEST_CASE("Eq. (43): RMS error by hand") {
 
 /// Ringing: the total variation of a history over the exact one's on the same time samples,
 /// \f$ R = \sum_n |v_{n+1} - v_n| \,/\, \sum_n |\hat v_{n+1} - \hat v_n| \f$. A history that follows the exact
-/// one's jumps and settles has R = 1 (less when it smooths a jump over several samples and stays monotone between
-/// them, which is damping, not ringing); each overshoot of size \f$ \delta \f$ that settles adds \f$ 2\delta \f$ to
-/// the numerator, and an oscillation adds twice its amplitude per half-period, so R measures the oscillation beyond
-/// the exact solution's own variation, apart from the amplitude lost (which a plateau deficit measures). Not an
-/// equation of the paper: the yardstick of the report's oscillation claims (paper/08_test_cases.md).
+/// one's jumps and settles has R = 1 (a jump smeared over several samples, monotone, too); each overshoot of size
+/// \f$ \delta \f$ that settles adds \f$ 2\delta \f$ to the numerator, and an oscillation twice its amplitude per
+/// half-period. Damping lowers R: a jump that reaches only a fraction of its height counts that fraction, so R is
+/// oscillation net of the amplitude lost, and the report gives the plateau deficit beside it. R also depends on the
+/// sampling: a history sampled every step counts every small wiggle of a trailing wave that a coarser one misses, so
+/// compare R of histories sampled alike. Not an equation of the paper: the yardstick of the report's oscillation
+/// claims (paper/08_test_cases.md).
 /// \throws std::invalid_argument when the sizes differ, or the exact history does not vary.
 inline double total_variation_ratio(const std::vector<double>& computed, const std::vector<double>& exact) {
   if (computed.size() != exact.size() || computed.size() < 2)

@@ -105,18 +105,18 @@ struct ColumnScore {
   /// The band of the score's own sampling: Eq. (43) on the even rows alone and on the odd rows alone (the rows as
   /// the CSV numbers them from 0); a difference of two scores inside both of theirs is not resolved by the samples.
   double rms_even = 0.0, rms_odd = 0.0;
-  /// Ringing apart from damping: the total variation of the column over the exact one's at the same times
-  /// (mpm::total_variation_ratio; 1 when it follows the exact history, above 1 by twice each overshoot and
-  /// oscillation); NaN when the exact history does not vary there or there are fewer than two rows.
+  /// Ringing: the total variation of the column over the exact one's at the same times (mpm::total_variation_ratio;
+  /// 1 when it follows the exact history, above 1 by twice each overshoot and oscillation, lowered by damping); NaN
+  /// when the exact history does not vary there beyond round-off, or there are fewer than two rows.
   double ringing = std::nan("");
 };
 
-/// Eq. (43) over every other row of `computed` and `exact`, from row `first` (0: the even rows, 1: the odd ones); the
-/// score of all rows when there is no row there.
+/// Eq. (43) over every other row of `computed` and `exact`, from row `first` (0: the even rows, 1: the odd ones); NaN
+/// when there is no row there (one row: no odd row).
 inline double rms_of_every_other(const std::vector<double>& computed, const std::vector<double>& exact, std::size_t first) {
   std::vector<double> some_computed, some_exact;
   for (std::size_t n = first; n < computed.size(); n += 2) some_computed.push_back(computed[n]), some_exact.push_back(exact[n]);
-  return some_computed.empty() ? rms_error(computed, exact) : rms_error(some_computed, some_exact);
+  return some_computed.empty() ? std::nan("") : rms_error(some_computed, some_exact);
 }
 
 /// Scores `computed` (at `times`) against `exact`: Eq. (43), divided by `scale` too, and the largest difference.
@@ -126,9 +126,13 @@ inline ColumnScore score_column(const std::vector<double>& times, const std::vec
   score.rms_normalised = score.rms / scale;
   score.rms_even = rms_of_every_other(computed, exact, 0);
   score.rms_odd = rms_of_every_other(computed, exact, 1);
-  bool varies = false;
-  for (std::size_t n = 1; n < exact.size(); ++n) varies = varies || exact[n] != exact[n - 1];
-  if (varies) score.ringing = total_variation_ratio(computed, exact);
+  double exact_variation = 0.0, largest = 0.0;  // the exact history varies beyond round-off of its own size
+  for (std::size_t n = 0; n < exact.size(); ++n) {
+    largest = std::max(largest, std::abs(exact[n]));
+    if (n > 0) exact_variation += std::abs(exact[n] - exact[n - 1]);
+  }
+  if (exact_variation > 1e-12 * static_cast<double>(exact.size()) * largest)
+    score.ringing = total_variation_ratio(computed, exact);
   for (std::size_t n = 0; n < computed.size(); ++n)
     if (std::abs(computed[n] - exact[n]) > score.max_abs) {
       score.max_abs = std::abs(computed[n] - exact[n]);
@@ -328,7 +332,8 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "rms_even, rms_odd: rms on the even and on the odd rows alone, the band of the CSV's own sampling (a\n"
       "difference of two scores inside it is not resolved); ringing: the total variation of the column over the\n"
       "exact one's at the same times (1: the exact history followed; above 1 by twice each overshoot and\n"
-      "oscillation; below 1: damped), nan where the exact history does not vary.");
+      "oscillation; lowered by damping), nan where the exact history does not vary; both depend on the CSV's\n"
+      "sampling: compare codes sampled alike. With one row, rms_odd and ringing are nan.");
   app.add_option("RESULT.csv", request.result_path, "the CSV to score")->required();
   app.add_option("SCENE.toml", options.scene_path, "the scene file whose exact solution scores it")->required();
   declare_exact_options(app, options);
@@ -383,6 +388,11 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   CHECK(score.ringing == doctest::Approx(1.0).epsilon(1e-14));
   CHECK(score_column(times, {1.0, -3.0, 0.5, 4.0}, exact, 1.0).ringing == doctest::Approx(11.0 / 9.0).epsilon(1e-14));
   CHECK(std::isnan(score_column(times, {1.0, 2.0, 1.0, 2.0}, {1.0, 1.0, 1.0, 1.0}, 1.0).ringing));
+  CHECK(std::isnan(score_column(times, {1.0, 2.0, 1.0, 2.0}, {1.0, 1.0 + 4e-16, 1.0, 1.0}, 1.0).ringing));  // round-off
+  const ColumnScore one = score_column({0.5}, {2.0}, {1.5}, 1.0);  // one row: no odd row, no variation
+  CHECK(one.rms_even == doctest::Approx(0.5));
+  CHECK(std::isnan(one.rms_odd));
+  CHECK(std::isnan(one.ringing));
   const std::string path =
       (std::filesystem::temp_directory_path() / ("mpm_compare_test_" + std::to_string(::getpid()) + ".csv")).string();
   std::ofstream(path) << "t,v,w\n0,1,2\n1,1e-310,2\n";
