@@ -35,6 +35,32 @@ assemble() {  # assemble RESULTS
     echo "paper/08_test_cases.md), a bound of the theory or a study's; **holds** / **does not hold** is what our"
     echo "runs measured."
     echo
+    echo "How every verdict is decided (one rule: mpm/analysis/verdict.hpp for the suites and \`mpm study\`,"
+    echo "verification/verdict_rule.py for the scripts, both tested on tests/data/verdict_rule_cases.csv):"
+    echo
+    echo "1. Each compared number carries the band of its own measurement: an RMS, a ringing or a plateau deficit the"
+    echo "   larger move when the same history is scored on its even or its odd samples alone; a ratio the sum of its"
+    echo "   two numbers' relative bands; a timing the spread of its repeats; a fitted order two standard errors; the"
+    echo "   soil's settlement the floor of its estimator; a published value half its last printed digit."
+    echo "2. A comparison whose numbers lie within their bands together is **undecided**: neither holds nor fails."
+    echo "3. A comparison with a run that stopped is **stopped**: its own outcome, never scored as holding or failing"
+    echo "   (in a hard check, a bound of the theory, a stop fails it)."
+    echo "4. A run that finished with an RMS no smaller than a flat line's (the exact history's spread about its mean)"
+    echo "   has **failed**: beside a finished run it is compared (and loses); two failed runs are not compared (stopped)."
+    echo "5. Every verdict counts holds, fails, undecided and stopped over every run of its study; \"holds on k of n\""
+    echo "   counts the decided ones. A claim quoted for one mesh is scored on that mesh, its extension to others is a"
+    echo "   row of its own."
+    echo
+    echo "Every verdict as data: \`verdicts.csv\` (claim, rule, holds, fails, undecided, stopped, the places)."
+    echo
+    echo "### Verdicts changed since the report this one replaces (commit 81964fb, verification/data/verdicts_81964fb.csv)"
+    echo
+    if python3 "$(dirname "${BASH_SOURCE[0]}")/verdicts.py" "$results" "$(dirname "${BASH_SOURCE[0]}")/data/verdicts_81964fb.csv" >/dev/null; then
+      cat "$results/verdicts_changed.md"
+    else
+      echo "Not listed: verification/verdicts.py could not read the sections (its message above)."
+    fi
+    echo
     if [[ -f $results/report/00_made.md ]]; then
       cat "$results"/report/*.md
       echo

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/analysis/verdict.hpp"
+
 namespace verification {
 
 struct Claim {
@@ -53,6 +55,11 @@ struct DomainClaim {
   bool hard = false;             ///< a theory bound: failing it anywhere fails the suite
 
   void add(const std::string& where, double value, bool holds) { samples.push_back({where, value, holds, false}); }
+  /// A place decided by the one rule (mpm::judge, mpm/analysis/verdict.hpp): holds, fails, undecided or stopped.
+  void add(const std::string& where, double value, mpm::Outcome outcome) {
+    samples.push_back({where, value, outcome == mpm::Outcome::holds, outcome == mpm::Outcome::stopped,
+                       outcome == mpm::Outcome::undecided});
+  }
   /// A place where a run stopped, named by `where` ("2560 cells: NPC stopped at 156 µs: ...").
   void add_stopped(const std::string& where) { samples.push_back({where, std::nan(""), false, true}); }
   /// A place decided by less than its measurement resolves (`where` says which: a tie within the timings' spread, an
@@ -66,7 +73,8 @@ struct DomainClaim {
     return n;
   }
   std::size_t holding() const { return count(true); }
-  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "no samples"; "; 1 undecided ...", "; 1 not compared (stopped)" added
+  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "no samples compared", then the four counts of the
+  /// one rule: "(8 hold, 4 fail, 1 undecided, 0 stopped)". In a hard claim a stopped run fails (it is counted so).
   std::string verdict() const {
     std::size_t undecided = 0;
     for (const Sample& sample : samples) undecided += sample.undecided;
@@ -75,9 +83,8 @@ struct DomainClaim {
                        : k == n ? "holds on all " + std::to_string(n)
                        : k == 0 ? "fails on all " + std::to_string(n)
                                 : "holds on " + std::to_string(k) + " of " + std::to_string(n);
-    if (undecided > 0) text += "; " + std::to_string(undecided) + " undecided (within the measurement's resolution)";
-    if (stopped > 0) text += "; " + std::to_string(stopped) + " not compared (stopped)";
-    return text;
+    return text + " (" + std::to_string(k) + " hold, " + std::to_string(n - k) + " fail, " + std::to_string(undecided) +
+           " undecided, " + std::to_string(stopped) + " stopped)";
   }
 };
 

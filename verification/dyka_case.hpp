@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mpm/analysis/rms_error.hpp"
+#include "mpm/analysis/verdict.hpp"
 #include "mpm/exact/bar.hpp"
 #include "mpm/run.hpp"
 #include "verification/fast_runs.hpp"
@@ -40,6 +41,14 @@ struct DykaResult {
   /// whole history, sampled every step; 1 when v_A follows the exact jumps and settles, above 1 by twice each
   /// overshoot and oscillation, lowered by the amplitude a damped jump loses. 0 for a stopped run (not scored).
   double ringing = 0.0;
+  /// The scores of the even rows alone and of the odd rows alone: the band of each score's own sampling
+  /// (mpm::band_of_halves); two runs whose scores differ by less than their bands together are not told apart.
+  struct Scores {
+    double rms = 0.0, ringing = 0.0, overshoot = 0.0, undershoot = 0.0;
+  } even, odd;
+  /// What a flat line at the exact history's mean scores (mpm::flat_line_score): a finished run whose RMS is no
+  /// smaller has failed (mpm::Ending::failed), it approximates nothing.
+  double flat_rms = 0.0;
   double mass_error = 0.0;     ///< largest relative |sum m_I - sum m_p| of the run
   double newton_mean = 0.0, neighbours_mean = 0.0;
   int newton_max = 0;
@@ -96,6 +105,20 @@ inline void plateau_deviations(DykaResult& result, double speed) {
   }
 }
 
+/// The scores of RMS, ringing and the plateau deviations on the rows n with n % 2 == parity alone.
+inline DykaResult::Scores half_scores(const DykaResult& whole, int parity, double speed) {
+  DykaResult half;
+  for (size_t n = parity; n < whole.time.size(); n += 2) {
+    half.time.push_back(whole.time[n]);
+    half.velocity.push_back(whole.velocity[n]);
+    half.exact.push_back(whole.exact[n]);
+  }
+  if (half.time.size() < 2) return {};
+  plateau_deviations(half, speed);
+  return {mpm::rms_error(half.velocity, half.exact), mpm::total_variation_ratio(half.velocity, half.exact), half.overshoot,
+          half.undershoot};
+}
+
 inline DykaResult run_dyka(const std::string& scene_path, const std::string& name, const std::vector<std::string>& overrides,
                            int threads = 1) {
   DykaResult result;
@@ -140,6 +163,8 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   if (!result.failed) result.rms = mpm::rms_error(result.velocity, result.exact);
   if (!result.failed) plateau_deviations(result, std::abs(v0));
   if (!result.failed) result.ringing = mpm::total_variation_ratio(result.velocity, result.exact);
+  if (!result.failed) result.even = half_scores(result, 0, std::abs(v0)), result.odd = half_scores(result, 1, std::abs(v0));
+  result.flat_rms = mpm::flat_line_score(result.exact);
   // Forward Euler's velocity of the row at t_n is v(t_n + dt_n / 2), dt_n the step that starts there (the
   // last row takes the step before it); the recorder samples every step.
   std::vector<double> exact_own_time = result.exact;

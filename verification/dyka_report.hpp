@@ -66,14 +66,69 @@ inline std::vector<MeshCfl> comparison_domain(const std::vector<int>& cells_of_s
   return domain;
 }
 
-/// A sample comparing two runs of a claim at `where`: a stopped run is named as such, a sample not compared,
-/// never scored; otherwise `where` + `detail` (the measured numbers), `value` and `holds` as given.
+/// A run's score with the band of its own sampling and its ending (mpm/analysis/verdict.hpp): RMS/v0, its band the
+/// larger move of the even or the odd rows' RMS; a finished run whose RMS is no smaller than a flat line's has failed.
+inline mpm::Measured rms_measured(const DykaResult& run) {
+  if (run.failed) return {std::nan(""), 0.0, mpm::Ending::stopped};
+  return {run.rms / speed_v0, mpm::band_of_halves(run.rms, run.even.rms, run.odd.rms) / speed_v0,
+          mpm::score_ending(run.rms, run.flat_rms)};
+}
+/// The ringing (DykaResult::ringing) with the band of its sampling, and the run's ending as rms_measured's.
+inline mpm::Measured ringing_measured(const DykaResult& run) {
+  mpm::Measured m = rms_measured(run);
+  if (!run.failed) m.value = run.ringing, m.band = mpm::band_of_halves(run.ringing, run.even.ringing, run.odd.ringing);
+  return m;
+}
+/// The plateau deficit (DykaResult::undershoot, / v0) with the band of its sampling.
+inline mpm::Measured deficit_measured(const DykaResult& run) {
+  mpm::Measured m = rms_measured(run);
+  if (!run.failed) m.value = run.undershoot, m.band = mpm::band_of_halves(run.undershoot, run.even.undershoot, run.odd.undershoot);
+  return m;
+}
+
+/// "NPC stopped at 156 µs: ...", "both failed (RMS no smaller than a flat line's)": why a comparison is not compared.
+inline std::string not_compared_text(const DykaResult& a, const std::string& a_label, const DykaResult& b,
+                                     const std::string& b_label) {
+  if (a.failed) return a_label + " " + stopped_text(a);
+  if (b.failed) return b_label + " " + stopped_text(b);
+  return "both failed (RMS/v0 " + text(a.rms / speed_v0, "%.3f") + " and " + text(b.rms / speed_v0, "%.3f") +
+         ", no smaller than a flat line's " + text(a.flat_rms / speed_v0, "%.3f") + ")";
+}
+
+/// A sample comparing two runs by the one rule (mpm::judge): the ratio of their measures `ma` / `mb`, with its band,
+/// on `side` of `bound` (1 by default). A stopped run, or two failed runs, make it "stopped", named so; a ratio within
+/// its band of the bound is undecided. `detail` (the measured numbers) follows `where`, then the ratio's band.
+inline void add_pair(DomainClaim& claim, const std::string& where, const std::string& detail, const DykaResult& a,
+                     const std::string& a_label, const mpm::Measured& ma, const DykaResult& b, const std::string& b_label,
+                     const mpm::Measured& mb, mpm::Side side, double bound = 1.0) {
+  const mpm::Measured r = mpm::ratio(ma, mb);
+  const mpm::Outcome outcome = mpm::judge(r, side, mpm::threshold(bound));
+  if (outcome == mpm::Outcome::stopped)
+    claim.add(where + ": " + not_compared_text(a, a_label, b, b_label), std::nan(""), outcome);
+  else
+    claim.add(where + detail + ", ratio ± " + text(r.band, "%.2g"), r.value, outcome);
+}
+
+/// A sample comparing two runs of a claim at `where` by a test of its own (an identity to round-off, a joint bound):
+/// a stopped run is named as such, a sample not compared, never scored; otherwise `where` + `detail` (the measured
+/// numbers), `value` and `holds` as given.
 inline void add_pair(DomainClaim& claim, const std::string& where, const std::string& detail, const DykaResult& a, const std::string& a_label,
                      const DykaResult& b, const std::string& b_label, double value, bool holds) {
   if (a.failed || b.failed)
     claim.add_stopped(where + ": " + (a.failed ? a_label + " " + stopped_text(a) : b_label + " " + stopped_text(b)));
   else
     claim.add(where + detail, value, holds);
+}
+
+/// One run's measure `m` on `side` of `bound` by the one rule: where + detail, the measure's band, or "stopped".
+inline void add_single(DomainClaim& claim, const std::string& where, const std::string& detail, const DykaResult& run,
+                       const std::string& label, const mpm::Measured& m, mpm::Side side, double bound) {
+  const mpm::Outcome outcome = mpm::judge(m, side, mpm::threshold(bound));
+  if (outcome == mpm::Outcome::stopped)
+    claim.add(where + ": " + label + " " + (run.failed ? stopped_text(run) : "failed (RMS no smaller than a flat line's)"),
+              std::nan(""), outcome);
+  else
+    claim.add(where + detail + " ± " + text(m.band, "%.2g"), m.value, outcome);
 }
 
 /// Fitted order of a run family over the meshes `cells` it ran (finished runs only), by `measure` (RMS/v0 by default).
