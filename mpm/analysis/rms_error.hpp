@@ -1,12 +1,15 @@
 /// \file
-/// The error measure of the paper, Eq. (43), over the time samples of one observed particle, and the ringing measure
-/// of the report's oscillation claims beside it.
+/// The error measure of the paper, Eq. (43), over the time samples of one observed particle, and beside it the ringing
+/// measure of the report's oscillation claims and the amplitude measure of its damping claims.
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+
+#include "mpm/analysis/verdict.hpp"
 
 namespace mpm {
 
@@ -26,6 +29,14 @@ TEST_CASE("Eq. (43): RMS error by hand") {
   CHECK_THROWS(rms_error({1.0}, {}));
 }
 
+/// The total variation of a history, \f$ \sum_n |v_{n+1} - v_n| \f$: the path its value travels (0 for fewer than two
+/// samples). Ringing's numerator and denominator, each computed once where both are needed.
+inline double total_variation(const std::vector<double>& values) {
+  double variation = 0.0;
+  for (size_t n = 1; n < values.size(); ++n) variation += std::abs(values[n] - values[n - 1]);
+  return variation;
+}
+
 /// Ringing: the total variation of a history over the exact one's on the same time samples,
 /// \f$ R = \sum_n |v_{n+1} - v_n| \,/\, \sum_n |\hat v_{n+1} - \hat v_n| \f$. A history that follows the exact
 /// one's jumps and settles has R = 1 (a jump smeared over several samples, monotone, too); each overshoot of size
@@ -39,13 +50,9 @@ TEST_CASE("Eq. (43): RMS error by hand") {
 inline double total_variation_ratio(const std::vector<double>& computed, const std::vector<double>& exact) {
   if (computed.size() != exact.size() || computed.size() < 2)
     throw std::invalid_argument("total_variation_ratio: sizes differ or are below 2");
-  double variation = 0.0, exact_variation = 0.0;
-  for (size_t n = 1; n < computed.size(); ++n) {
-    variation += std::abs(computed[n] - computed[n - 1]);
-    exact_variation += std::abs(exact[n] - exact[n - 1]);
-  }
+  const double exact_variation = total_variation(exact);
   if (!(exact_variation > 0.0)) throw std::invalid_argument("total_variation_ratio: the exact history is constant");
-  return variation / exact_variation;
+  return total_variation(computed) / exact_variation;
 }
 
 TEST_CASE("total_variation_ratio: one jump followed, overshot, rung, smoothed by hand") {
@@ -57,6 +64,42 @@ TEST_CASE("total_variation_ratio: one jump followed, overshot, rung, smoothed by
   CHECK(total_variation_ratio({0.0, 0.5, 1.0, 1.0, 1.0, 1.0}, exact) == 1.0);  // the jump smeared, monotone: no ringing
   CHECK_THROWS(total_variation_ratio({1.0, 2.0}, {1.0, 1.0}));
   CHECK_THROWS(total_variation_ratio({1.0}, {1.0}));
+  CHECK(total_variation({0.0, 2.0, -1.0, -1.0}) == 5.0);  // 2 + 3 + 0
+  CHECK(total_variation({4.0}) == 0.0);
+}
+
+/// How far the round-off of a history's own size may move it, as a fraction of its largest |value|: an exact history
+/// whose spread about its mean is no larger does not vary, and has no amplitude to compare against.
+inline constexpr double flat_round_off = 1e-12;
+
+/// Damping: the amplitude of a history against the exact one's on the same time samples, each the RMS about its own
+/// mean (mpm::flat_line_score, what a flat line at the mean scores),
+/// \f$ A = \sqrt{\sum_n (v_n - \bar v)^2} \,/\, \sqrt{\sum_n (\hat v_n - \bar{\hat v})^2} \f$. A = 1 at full
+/// amplitude (a constant offset too: it moves the mean only), below 1 when the swings are damped (a square wave at
+/// half its height: 0.5), above 1 when it rings or overshoots. Beside ringing, which damping lowers, it tells the two
+/// apart: ringing above 1 with A near 1 is oscillation; ringing and A both below 1 is damping. NaN when `exact` is
+/// empty or flat to round-off (spread at most flat_round_off of its largest |value|). Not an equation of the paper:
+/// a yardstick for any code's history (mpm compare). \throws std::invalid_argument when the sizes differ.
+inline double amplitude_ratio(const std::vector<double>& computed, const std::vector<double>& exact) {
+  if (computed.size() != exact.size()) throw std::invalid_argument("amplitude_ratio: sizes differ");
+  double largest = 0.0;
+  for (double value : exact) largest = std::max(largest, std::abs(value));
+  const double exact_spread = flat_line_score(exact);
+  if (exact.empty() || !(exact_spread > flat_round_off * largest)) return std::nan("");
+  return flat_line_score(computed) / exact_spread;
+}
+
+TEST_CASE("amplitude_ratio: full, offset, damped, overshooting and flat histories by hand") {
+  const std::vector<double> square{0.0, 1.0, 0.0, 1.0, 0.0, 1.0};  // spread 0.5 about 0.5
+  CHECK(amplitude_ratio(square, square) == 1.0);
+  CHECK(amplitude_ratio({3.0, 4.0, 3.0, 4.0, 3.0, 4.0}, square) == doctest::Approx(1.0));           // offset 3
+  CHECK(amplitude_ratio({0.25, 0.75, 0.25, 0.75, 0.25, 0.75}, square) == doctest::Approx(0.5));   // half height
+  CHECK(amplitude_ratio({0.5, 0.5, 0.5, 0.5, 0.5, 0.5}, square) < 1e-15);  // damped out (round-off of the mean)
+  CHECK(amplitude_ratio({-0.5, 1.5, -0.5, 1.5, -0.5, 1.5}, square) == doctest::Approx(2.0));      // twice the swing
+  CHECK(std::isnan(amplitude_ratio({1.0, 2.0}, {5.0, 5.0})));                                     // exact flat
+  CHECK(std::isnan(amplitude_ratio({1.0, 2.0}, {5.0, 5.0 + 1e-15})));                             // flat to round-off
+  CHECK(std::isnan(amplitude_ratio({}, {})));
+  CHECK_THROWS(amplitude_ratio({1.0}, {1.0, 2.0}));
 }
 
 }  // namespace mpm

@@ -18,7 +18,9 @@
 #include <vector>
 #include <unistd.h>
 
+#include "mpm/analysis/ending_label.hpp"
 #include "mpm/analysis/rms_error.hpp"
+#include "mpm/analysis/verdict.hpp"
 #include "mpm/cli/exact_command.hpp"
 #include "mpm/cli/gnuplot.hpp"
 #include "mpm/io/csv_file.hpp"
@@ -109,30 +111,54 @@ struct ColumnScore {
   /// 1 when it follows the exact history, above 1 by twice each overshoot and oscillation, lowered by damping); NaN
   /// when the exact history does not vary there beyond round-off, or there are fewer than two rows.
   double ringing = std::nan("");
+  /// Damping: the column's RMS about its own mean over the exact one's (mpm::amplitude_ratio; 1 at full amplitude,
+  /// a constant offset too, below 1 damped, above 1 swinging wider), on every row and on the even and the odd rows
+  /// alone; NaN where the exact history (on those rows) is flat to round-off.
+  double amplitude = std::nan(""), amplitude_even = std::nan(""), amplitude_odd = std::nan("");
+  /// What a flat line at the exact history's mean scores (mpm::flat_line_score), in the quantity's unit, and the
+  /// ending it gives the column by the report's rule (mpm::score_ending): failed when rms is no smaller, else done.
+  double flat_rms = 0.0;
+  Ending ending = Ending::done;
 };
+
+/// Every other value of `values`, from row `first` (0: the even rows, 1: the odd ones).
+inline std::vector<double> every_other(const std::vector<double>& values, std::size_t first) {
+  std::vector<double> some;
+  for (std::size_t n = first; n < values.size(); n += 2) some.push_back(values[n]);
+  return some;
+}
 
 /// Eq. (43) over every other row of `computed` and `exact`, from row `first` (0: the even rows, 1: the odd ones); NaN
 /// when there is no row there (one row: no odd row).
 inline double rms_of_every_other(const std::vector<double>& computed, const std::vector<double>& exact, std::size_t first) {
-  std::vector<double> some_computed, some_exact;
-  for (std::size_t n = first; n < computed.size(); n += 2) some_computed.push_back(computed[n]), some_exact.push_back(exact[n]);
+  const std::vector<double> some_computed = every_other(computed, first), some_exact = every_other(exact, first);
   return some_computed.empty() ? std::nan("") : rms_error(some_computed, some_exact);
 }
 
-/// Scores `computed` (at `times`) against `exact`: Eq. (43), divided by `scale` too, and the largest difference.
+/// Ringing of `computed` against `exact` (mpm::total_variation_ratio), the exact history's total variation computed
+/// once for both its round-off floor and the ratio: NaN unless it exceeds 1e-12 of the largest |exact| per row.
+inline double ringing_of(const std::vector<double>& computed, const std::vector<double>& exact) {
+  double largest = 0.0;
+  for (double value : exact) largest = std::max(largest, std::abs(value));
+  const double exact_variation = total_variation(exact);
+  if (!(exact_variation > 1e-12 * static_cast<double>(exact.size()) * largest)) return std::nan("");
+  return total_variation(computed) / exact_variation;
+}
+
+/// Scores `computed` (at `times`) against `exact`: Eq. (43), divided by `scale` too, and the largest difference;
+/// the band of its sampling (even and odd rows), ringing, amplitude, a flat line's score and the ending.
 inline ColumnScore score_column(const std::vector<double>& times, const std::vector<double>& computed,
                                 const std::vector<double>& exact, double scale) {
   ColumnScore score{"", "", computed.size(), rms_error(computed, exact), 0.0, -1.0, 0.0, computed, exact};
   score.rms_normalised = score.rms / scale;
   score.rms_even = rms_of_every_other(computed, exact, 0);
   score.rms_odd = rms_of_every_other(computed, exact, 1);
-  double exact_variation = 0.0, largest = 0.0;  // the exact history varies beyond round-off of its own size
-  for (std::size_t n = 0; n < exact.size(); ++n) {
-    largest = std::max(largest, std::abs(exact[n]));
-    if (n > 0) exact_variation += std::abs(exact[n] - exact[n - 1]);
-  }
-  if (exact_variation > 1e-12 * static_cast<double>(exact.size()) * largest)
-    score.ringing = total_variation_ratio(computed, exact);
+  score.ringing = ringing_of(computed, exact);
+  score.amplitude = amplitude_ratio(computed, exact);
+  score.amplitude_even = amplitude_ratio(every_other(computed, 0), every_other(exact, 0));
+  score.amplitude_odd = amplitude_ratio(every_other(computed, 1), every_other(exact, 1));
+  score.flat_rms = flat_line_score(exact);
+  score.ending = score_ending(score.rms, score.flat_rms);
   for (std::size_t n = 0; n < computed.size(); ++n)
     if (std::abs(computed[n] - exact[n]) > score.max_abs) {
       score.max_abs = std::abs(computed[n] - exact[n]);
@@ -261,6 +287,12 @@ inline std::vector<std::pair<std::string, std::string>> checked_columns(const Co
   return columns;
 }
 
+/// The header of compare's output: the first ten columns as the first step of issue 46 printed them, the damping
+/// measure, a flat line's score and the ending appended after them (a reader by position keeps working).
+inline constexpr const char* compare_header =
+    "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing,amplitude,amplitude_even,"
+    "amplitude_odd,flat_rms,ending";
+
 /// Scores the CSV of `request` against the exact solution of `options`' scene at its point, prints the scores and
 /// draws --plot; returns the exit code (1 above the tolerance). \throws Refused, SceneError, OutputFailure.
 inline int compare(const ExactOptions& options, const CompareRequest& request, std::ostream& out, std::ostream& err) {
@@ -296,11 +328,12 @@ inline int compare(const ExactOptions& options, const CompareRequest& request, s
   }
   std::ostringstream text, above;
   text.precision(9);
-  text << "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing\n";
+  text << compare_header << "\n";
   for (const auto& score : scores) {
     text << score.column << "," << score.quantity << "," << score.samples << "," << score.rms << ","
          << score.rms_normalised << "," << score.max_abs << "," << score.t_of_max << "," << score.rms_even << ","
-         << score.rms_odd << "," << score.ringing << "\n";
+         << score.rms_odd << "," << score.ringing << "," << score.amplitude << "," << score.amplitude_even << ","
+         << score.amplitude_odd << "," << score.flat_rms << "," << ending_label(score.ending) << "\n";
     if (request.tolerance && !(score.rms_normalised <= *request.tolerance)) above << " " << score.column;
   }
   out << text.str() << std::flush;
@@ -322,7 +355,8 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "compare",
       "Scores any CSV with a header line (another code's output) against the scene's exact solution (as mpm exact\n"
       "evaluates it) at the material point --at and at the CSV's own sample times, and prints CSV:\n"
-      "  column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing\n"
+      "  column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing,\n"
+      "  amplitude,amplitude_even,amplitude_odd,flat_rms,ending\n"
       "rms: Eq. (43), sqrt(sum (c_n - e_n)^2 / N) over the N rows, in the quantity's unit; rms_normalised: rms\n"
       "divided by the solution's scale of the quantity: velocity V* (the largest |v_0| or |sigma_0|/Z of the initial\n"
       "data: v0 for the Dyka bar, so the paper's RMS/v0), stress Z V*, displacement V* L/c (dyka_bar); rho g H,\n"
@@ -333,7 +367,13 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "difference of two scores inside it is not resolved); ringing: the total variation of the column over the\n"
       "exact one's at the same times (1: the exact history followed; above 1 by twice each overshoot and\n"
       "oscillation; lowered by damping), nan where the exact history does not vary; both depend on the CSV's\n"
-      "sampling: compare codes sampled alike. With one row, rms_odd and ringing are nan.");
+      "sampling: compare codes sampled alike. With one row, rms_odd and ringing are nan.\n"
+      "amplitude: the column's RMS about its own mean over the exact one's (1: full amplitude, a constant offset\n"
+      "too; below 1: damped, 0.5 at half the swing; above 1: wider), amplitude_even, amplitude_odd the same on the\n"
+      "even and the odd rows, nan where the exact history does not vary there; ringing above 1 with amplitude near 1\n"
+      "is oscillation, both below 1 damping. flat_rms: what a flat line at the exact mean scores (the quantity's\n"
+      "unit); ending: failed when rms >= flat_rms (no approximation at all: a report's comparison of two failed\n"
+      "runs is not decided), else done.");
   app.add_option("RESULT.csv", request.result_path, "the CSV to score")->required();
   app.add_option("SCENE.toml", options.scene_path, "the scene file whose exact solution scores it")->required();
   declare_exact_options(app, options);
@@ -364,7 +404,7 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
   return run_parsed(app, arguments, out, err, [&] { return compare(options, request, out, err); });
 }
 
-TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs = c, a CSV is read field by field") {
+TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs = c, its band, its ringing") {
   // exact + c at every sample: every difference is c, so rms = sqrt(N c^2 / N) = c and max_abs = c at the first time.
   const std::vector<double> times{0.0, 1.0, 2.0, 3.0}, exact{1.0, -2.0, 0.5, 4.0};
   std::vector<double> computed;
@@ -393,6 +433,49 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   CHECK(one.rms_even == doctest::Approx(0.5));
   CHECK(std::isnan(one.rms_odd));
   CHECK(std::isnan(one.ringing));
+  CHECK(std::isnan(one.amplitude));
+  CHECK(one.flat_rms == 0.0);
+  CHECK(one.ending == Ending::failed);  // 0.5 >= 0: a flat line at the one exact value does better
+}
+
+TEST_CASE("mpm compare: damping as amplitude on every row and on each half, a flat line's score, the ending") {
+  // A constant offset 0.25 from exact {1, -2, 0.5, 4} (mean 0.875): the same spread, amplitude 1 on every row and
+  // on each half; the flat line scores sqrt((0.125^2 + 2.875^2 + 0.375^2 + 3.125^2) / 4) = sqrt(4.546875).
+  const std::vector<double> times{0.0, 1.0, 2.0, 3.0}, exact{1.0, -2.0, 0.5, 4.0};
+  const ColumnScore offset = score_column(times, {1.25, -1.75, 0.75, 4.25}, exact, 1.0);
+  CHECK(offset.amplitude == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(offset.amplitude_even == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(offset.amplitude_odd == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(offset.flat_rms == doctest::Approx(std::sqrt(4.546875)).epsilon(1e-14));
+  CHECK(offset.ending == Ending::done);
+  // A square wave 0, 1 (rows 0-1 low, 2-3 high, so each half varies too) damped to half its swing about the same
+  // mean: amplitude 0.5 everywhere, rms 0.25, flat line 0.5: done. Damped out to its mean: amplitude 0, rms 0.5 =
+  // the flat line's: failed (no better than predicting the mean).
+  const std::vector<double> t8{0, 1, 2, 3, 4, 5, 6, 7}, square{0, 0, 1, 1, 0, 0, 1, 1};
+  const ColumnScore half = score_column(t8, {0.25, 0.25, 0.75, 0.75, 0.25, 0.25, 0.75, 0.75}, square, 1.0);
+  CHECK(half.amplitude == doctest::Approx(0.5).epsilon(1e-14));
+  CHECK(half.amplitude_even == doctest::Approx(0.5).epsilon(1e-14));
+  CHECK(half.amplitude_odd == doctest::Approx(0.5).epsilon(1e-14));
+  CHECK(half.rms == doctest::Approx(0.25).epsilon(1e-14));
+  CHECK(half.flat_rms == doctest::Approx(0.5).epsilon(1e-14));
+  CHECK(half.ending == Ending::done);
+  CHECK(half.ringing == doctest::Approx(0.5).epsilon(1e-14));  // damping lowers ringing too
+  const ColumnScore flat = score_column(t8, std::vector<double>(8, 0.5), square, 1.0);
+  CHECK(flat.amplitude < 1e-15);
+  CHECK(flat.ending == Ending::failed);
+  // Damped on the odd rows only: the halves tell the damping apart from the sampling (1 even, 0.5 odd).
+  const ColumnScore odd = score_column(t8, {0, 0.25, 1, 0.75, 0, 0.25, 1, 0.75}, square, 1.0);
+  CHECK(odd.amplitude_even == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(odd.amplitude_odd == doctest::Approx(0.5).epsilon(1e-14));
+  // An exact history that alternates row by row is flat on each half: amplitude 1 over all, nan on each half.
+  const ColumnScore alternating = score_column({0, 1, 2, 3}, {0, 1, 0, 1}, {0, 1, 0, 1}, 1.0);
+  CHECK(alternating.amplitude == 1.0);
+  CHECK(std::isnan(alternating.amplitude_even));
+  CHECK(std::isnan(alternating.amplitude_odd));
+  CHECK(every_other({1, 2, 3, 4, 5}, 1) == std::vector<double>{2, 4});
+}
+
+TEST_CASE("mpm compare: a CSV is read field by field, each refusal at its line") {
   const std::string path =
       (std::filesystem::temp_directory_path() / ("mpm_compare_test_" + std::to_string(::getpid()) + ".csv")).string();
   std::ofstream(path) << "t,v,w\n0,1,2\n1,1e-310,2\n";

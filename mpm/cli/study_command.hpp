@@ -20,9 +20,11 @@ inline std::unique_ptr<CommandParser> study_parser(study::StudyRequest& request)
       "study",
       "Runs a study of a scene: the product of the axes of STUDY.toml (any scene keys), each case a child `mpm run\n"
       "--threads 1` in DIR/cases/NNNN, --jobs at once; scores the observer's velocity against the scene's exact solution\n"
-      "with `mpm compare` (Eq. 43) at the written time and at the time the integrator's velocity approximates; writes\n"
-      "study.csv, fits.csv (the order p of error ~ C N^-p over the refine axis, with its standard error), error.png and\n"
-      "cost.png, and prints their names. README.md, \"Your own study\", shows a study file.");
+      "with `mpm compare` (Eq. 43) at the written time and at the time the integrator's velocity approximates, each\n"
+      "score with the band of its own sampling and its ending (stopped: the case not done; failed: no better than a\n"
+      "flat line at the exact mean); writes study.csv, fits.csv (the order p of error ~ C N^-p over the refine axis,\n"
+      "with its standard error and band, failed scores left out), error.png and cost.png, and prints their names.\n"
+      "README.md, \"Your own study\", shows a study file.");
   app->add_option("STUDY.toml", request.study_path, "the study file")->required();
   app->add_option("--out", request.out, "the study's folder (default runs/<the study file's name>)")->type_name("DIR");
   app->add_option("--jobs", request.jobs, "cases run at once (0: the machine's cores)")->check(whole_in(0, 1024));

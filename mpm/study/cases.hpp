@@ -34,7 +34,10 @@ struct Case {
 struct CaseResult {
   std::string status = "failed";  ///< done | stopped | refused | failed
   std::string why;                ///< the first line of the refusal or failure; for a done run without scores, why
-  std::optional<double> score_at_t, score_shifted, energy_drift, steps;
+  /// The two scores (compare_score): rms_normalised of the velocity, the band of its own sampling, and its ending
+  /// (done, or failed when no better than a flat line); none when the case is not done or has no exact solution.
+  std::optional<Measured> score_at_t, score_shifted;
+  std::optional<double> energy_drift, steps;
   double wall_s = 0.0, cpu_s = 0.0;
 };
 
@@ -74,7 +77,7 @@ inline std::vector<std::string> child_arguments(const std::vector<std::string>& 
 
 /// Scores `csv` (a case's observers, at their times or shifted) with `mpm compare` against the scene's exact solution
 /// at the observer's reference position; nullopt with `why` set if compare gives no score.
-inline std::optional<double> score_with_compare(const std::string& program, const std::string& scene, const std::vector<std::string>& overrides,
+inline std::optional<Measured> score_with_compare(const std::string& program, const std::string& scene, const std::vector<std::string>& overrides,
                                                 const std::string& csv, const std::vector<double>& at, const std::vector<std::string>& columns,
                                                 std::string& why) {
   std::string position;

@@ -1,7 +1,8 @@
 /// \file
 /// What a study measures of one finished run, from the files the run wrote (run.json, observers.csv,
 /// energy.csv), as a user could: the status and failure, the steps, the observer's reference position, the
-/// relative drift of the total energy, and the observer's velocity moved to the time it approximates.
+/// relative drift of the total energy, and the observer's velocity moved to the time it approximates; and from
+/// `mpm compare`'s output the velocity's score with the band of its own sampling and its ending (verdict.hpp).
 ///
 /// Which time a velocity belongs to (paper/10_integrator_analysis.md): forward Euler's velocity written at t
 /// approximates v(t + dt/2); the predictor-corrector's Eq. (32) (solver.npc_velocity = "eq32") approximates v(t);
@@ -14,11 +15,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "mpm/analysis/verdict.hpp"
 #include "mpm/io/csv_file.hpp"
 #include "mpm/io/output_file.hpp"
 #include "mpm/io/scene_file.hpp"
@@ -136,22 +139,62 @@ inline bool write_shifted(const std::string& observers, const std::string& shift
   return true;
 }
 
-/// The score `mpm compare` printed (`column,quantity,samples,rms,rms_normalised,...`, one row per velocity
-/// component): the rms_normalised of the velocity vector, sqrt of the sum of the components' squares; nullopt
-/// if none can be read.
-inline std::optional<double> compare_score(const std::string& printed) {
+/// One row of `mpm compare`'s output, the numbers the study takes from it: rms, rms_even, rms_odd and flat_rms in the
+/// quantity's unit (m/s), rms_normalised over the solution's scale.
+struct ComponentScore {
+  double rms = 0.0, rms_normalised = 0.0, rms_even = 0.0, rms_odd = 0.0, flat_rms = 0.0;
+};
+
+/// The rows `mpm compare` printed, each column found by its header name; nullopt if one is missing or a field is not a
+/// finite number (rms_even and rms_odd may be `nan`: a half without a row).
+inline std::optional<std::vector<ComponentScore>> compare_rows(const std::string& printed) {
   std::istringstream lines(printed);
   std::string line;
   std::getline(lines, line);
-  double sum = 0.0;
-  int rows = 0;
+  const auto header = io::csv_fields(line);
+  const std::vector<std::string> names{"rms", "rms_normalised", "rms_even", "rms_odd", "flat_rms"};
+  std::vector<std::size_t> index;
+  for (const auto& name : names) {
+    index.push_back(static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin()));
+    if (index.back() == header.size()) return std::nullopt;
+  }
+  std::vector<ComponentScore> rows;
   while (std::getline(lines, line)) {
     const auto fields = io::csv_fields(line);
-    double value = 0.0;
-    if (fields.size() < 5 || !io::read_finite_number(fields[4], value).empty()) return std::nullopt;
-    sum += value * value, ++rows;
+    double value[5] = {};
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      const bool half = names[k] == "rms_even" || names[k] == "rms_odd";
+      if (index[k] >= fields.size()) return std::nullopt;
+      if (half && fields[index[k]] == "nan") value[k] = std::nan("");
+      else if (!io::read_finite_number(fields[index[k]], value[k]).empty()) return std::nullopt;
+    }
+    rows.push_back({value[0], value[1], value[2], value[3], value[4]});
   }
-  return rows ? std::optional<double>(std::sqrt(sum)) : std::nullopt;
+  return rows.empty() ? std::nullopt : std::optional<std::vector<ComponentScore>>(rows);
+}
+
+/// The study's score of the velocity from compare's rows (one per component), with the band of its own sampling and
+/// its ending, the report's yardstick (mpm/analysis/verdict.hpp): the value sqrt(sum rms_normalised^2); its band
+/// mpm::band_of_halves of the same sum on the even and on the odd rows (each row's halves over its own scale,
+/// rms / rms_normalised; infinite when a half has no row: one sample resolves nothing); failed when the vector's RMS,
+/// sqrt(sum rms^2), is no smaller than a flat line's at the exact mean, sqrt(sum flat_rms^2) (mpm::score_ending).
+inline Measured velocity_score(const std::vector<ComponentScore>& rows) {
+  double value = 0.0, even = 0.0, odd = 0.0, rms = 0.0, flat = 0.0;
+  for (const auto& row : rows) {
+    const double scale = row.rms_normalised > 0.0 ? row.rms / row.rms_normalised : 0.0;  // 0: rms 0, every half 0
+    value += row.rms_normalised * row.rms_normalised, rms += row.rms * row.rms, flat += row.flat_rms * row.flat_rms;
+    if (scale > 0.0) even += std::pow(row.rms_even / scale, 2), odd += std::pow(row.rms_odd / scale, 2);
+  }
+  Measured score{std::sqrt(value), std::numeric_limits<double>::infinity(), Ending::done};
+  if (std::isfinite(even) && std::isfinite(odd)) score.band = band_of_halves(score.value, std::sqrt(even), std::sqrt(odd));
+  score.ending = score_ending(std::sqrt(rms), std::sqrt(flat));
+  return score;
+}
+
+/// The score `mpm compare` printed (velocity_score of its rows); nullopt if none can be read.
+inline std::optional<Measured> compare_score(const std::string& printed) {
+  const auto rows = compare_rows(printed);
+  return rows ? std::optional<Measured>(velocity_score(*rows)) : std::nullopt;
 }
 
 TEST_CASE("study measures: run.json's fields, the energy drift, the velocity at the time it approximates") {
@@ -168,8 +211,24 @@ TEST_CASE("study measures: run.json's fields, the energy drift, the velocity at 
   CHECK(velocity_time_shift(toml::parse("[solver]\nintegrator = \"fe\"\n")) == 0.5);
   CHECK(velocity_time_shift(toml::parse("[solver]\nintegrator = \"npc\"\nnpc_velocity = \"eq32\"\n")) == 0.0);
   CHECK(velocity_time_shift(toml::parse("[solver]\nintegrator = \"npc\"\nnpc_velocity = \"average\"\nnewmark_gamma = 0.75\n")) == 0.25);
-  CHECK(compare_score("column,quantity,samples,rms,rms_normalised\nA.v_x,v_x,3,1,0.3\nA.v_y,v_y,3,1,0.4\n") == doctest::Approx(0.5));
-  CHECK(!compare_score("column,quantity,samples,rms,rms_normalised\n"));
+  // compare's rows of v_x and v_y, both over the scale 5 m/s: rms 1.5 and 2 m/s, so 0.3 and 0.4, together 0.5; the
+  // halves 1, 2 (x) and 2, 2 (y) m/s: sqrt(0.04 + 0.16) and sqrt(0.16 + 0.16), band |sqrt(0.32) - 0.5|; the flat
+  // line's 4 and 0 m/s: 2.5 < 4, done; with 1.5 and 2 m/s: 2.5 >= 2.5, failed.
+  const std::string header = "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing,amplitude,"
+                             "amplitude_even,amplitude_odd,flat_rms,ending\n";
+  const auto both = compare_score(header + "A.v_x,v_x,3,1.5,0.3,2,0,1,2,1,1,1,1,4,done\nA.v_y,v_y,3,2,0.4,2,0,2,2,1,1,1,1,0,done\n");
+  REQUIRE(both);
+  CHECK(both->value == doctest::Approx(0.5));
+  CHECK(both->band == doctest::Approx(std::sqrt(0.32) - 0.5));
+  CHECK(both->ending == Ending::done);
+  CHECK(compare_score(header + "A.v_x,v_x,3,1.5,0.3,2,0,1,2,1,1,1,1,1.5,done\nA.v_y,v_y,3,2,0.4,2,0,2,2,1,1,1,1,2,done\n")->ending ==
+        Ending::failed);
+  const auto one = compare_score(header + "A.v_x,v_x,1,1,0.2,1,0,1,nan,nan,nan,nan,nan,0,failed\n");  // one row
+  REQUIRE(one);
+  CHECK(one->band == std::numeric_limits<double>::infinity());
+  CHECK(compare_score(header + "A.v_x,v_x,3,0,0,0,0,0,0,1,1,1,1,1,done\n")->band == 0.0);  // exact: every half 0
+  CHECK(!compare_score(header));
+  CHECK(!compare_score("column,quantity,samples,rms,rms_normalised\nA.v_x,v_x,3,1,0.3\n"));  // no halves, no flat line
   namespace fs = std::filesystem;
   const fs::path folder = fs::temp_directory_path() / ("mpm_study_measures_" + std::to_string(::getpid()));
   fs::create_directories(folder);

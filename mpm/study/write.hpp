@@ -1,12 +1,15 @@
 /// \file
 /// What a study writes into its folder, each file whole (io::OutputFile, atomic: a reader sees the old file or
 /// the new one):
-///   study.csv   one row per case: its axis values, status, the two scores, energy drift, steps, wall_s, cpu_s, why
+///   study.csv   one row per case: its axis values, status, the two scores, energy drift, steps, wall_s, cpu_s, why;
+///               then, appended, each score's band and ending (the report's yardstick, mpm/analysis/verdict.hpp)
 ///   fits.csv    per combination of the other axes and per score: the order p over the refine axis, its standard
-///               error, C, the number of points, why there is no p
+///               error, C, the number of points, why there is no p; then, appended, p's band (2 standard errors)
+///               and the number of failed cases left out
 ///   error.png   the two scores against the refine axis, log-log, one curve per combination (a refine axis only)
 ///   cost.png    the score at the integrator's time against the CPU time of the run, log-log
-/// `why` is the last column (it may hold commas: quoted as RFC 4180 says, like every field that needs it). The
+/// `why` may hold commas: quoted as RFC 4180 says, like every field that needs it. The columns after it were
+/// appended later, so that a reader by position finds the earlier ones where they were. The
 /// pictures are drawn by gnuplot from study.gp (its data inline, every string quoted by gnuplot_quoted, the key
 /// outside the plots), into hidden temporaries renamed over the pictures once complete.
 #pragma once
@@ -19,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/analysis/ending_label.hpp"
+#include "mpm/analysis/verdict.hpp"
 #include "mpm/cli/gnuplot.hpp"
 #include "mpm/io/output_file.hpp"
 #include "mpm/study/fits.hpp"
@@ -41,19 +46,41 @@ inline std::string number_cell(std::optional<double> value) {
   return text;
 }
 
+/// The ending of a case's score by the report's rule: stopped when the case is not done (refused, stopped, failed:
+/// it did not run to its end), else the score's own (done, or failed when no better than a flat line); none for a
+/// done case without a score (no exact solution).
+inline std::optional<Ending> case_ending(const CaseResult& result, const std::optional<Measured>& score) {
+  if (result.status != "done") return Ending::stopped;
+  if (!score) return std::nullopt;
+  return score->ending;
+}
+
+/// A score's value and band as study.csv's cells, "" for none (and for the infinite band of a one-sample history).
+inline std::string value_cell(const std::optional<Measured>& score) { return number_cell(score ? std::optional<double>(score->value) : std::nullopt); }
+inline std::string band_cell(const std::optional<Measured>& score) { return number_cell(score ? std::optional<double>(score->band) : std::nullopt); }
+
+/// A score's ending (case_ending) as study.csv's cell, "" for none.
+inline std::string ending_cell(const CaseResult& result, const std::optional<Measured>& score) {
+  const auto ending = case_ending(result, score);
+  return ending ? ending_label(*ending) : "";
+}
+
 /// The text of study.csv.
 inline std::string study_csv(const Study& study, const std::vector<Case>& cases, const std::vector<CaseResult>& results) {
   std::string text = "case";
   for (const auto& axis : study.axes) text += "," + csv_field(axis.key);
-  text += ",status,rms_at_t,rms_at_integrator_time,energy_drift,steps,wall_s,cpu_s,why\n";
+  text += ",status,rms_at_t,rms_at_integrator_time,energy_drift,steps,wall_s,cpu_s,why,rms_at_t_band,"
+          "rms_at_integrator_time_band,ending_at_t,ending_at_integrator_time\n";
   for (const auto& one : cases) {
     const CaseResult& result = results[one.index];
     text += std::to_string(one.index);
     for (std::size_t k = 0; k < study.axes.size(); ++k) text += "," + csv_field(study.axes[k].values[one.choice[k]].label);
     const bool ran = result.status != "refused";
-    text += "," + result.status + "," + number_cell(result.score_at_t) + "," + number_cell(result.score_shifted) + "," +
+    text += "," + result.status + "," + value_cell(result.score_at_t) + "," + value_cell(result.score_shifted) + "," +
             number_cell(result.energy_drift) + "," + number_cell(result.steps) + "," + number_cell(ran ? result.wall_s : std::optional<double>()) +
-            "," + number_cell(ran ? result.cpu_s : std::optional<double>()) + "," + csv_field(result.why) + "\n";
+            "," + number_cell(ran ? result.cpu_s : std::optional<double>()) + "," + csv_field(result.why) + "," +
+            band_cell(result.score_at_t) + "," + band_cell(result.score_shifted) + "," + ending_cell(result, result.score_at_t) + "," +
+            ending_cell(result, result.score_shifted) + "\n";
   }
   return text;
 }
@@ -71,12 +98,15 @@ inline std::string fits_csv(const Study& study, const std::vector<Fit>& fits) {
   std::string text;
   for (std::size_t k = 0; k < study.axes.size(); ++k)
     if (static_cast<int>(k) != study.refine) text += csv_field(study.axes[k].key) + ",";
-  text += "score,p,p_stderr,C,points,why\n";
+  text += "score,p,p_stderr,C,points,why,p_band,failed\n";
   for (const auto& fit : fits) {
     for (std::size_t k = 0; k < study.axes.size(); ++k)
       if (static_cast<int>(k) != study.refine) text += csv_field(study.axes[k].values[fit.choice[k]].label) + ",";
+    const Measured order = order_of(fit);
     text += fit.score + "," + number_cell(fit.p) + "," + number_cell(fit.p_error) + "," + number_cell(fit.c) + "," +
-            std::to_string(fit.points) + "," + csv_field(fit.why) + "\n";
+            std::to_string(fit.points) + "," + csv_field(fit.why) + "," +
+            number_cell(order.ending == Ending::done ? std::optional<double>(order.band) : std::nullopt) + "," +
+            std::to_string(fit.failed) + "\n";
   }
   return text;
 }
@@ -88,7 +118,8 @@ struct Curve {
 };
 
 /// The curves of score `name` against the refine axis's N (`against_cpu`: against the run's CPU time), one per
-/// combination of the other axes, finite positive points only; curves without a point left out.
+/// combination of the other axes, finite positive points only (a failed score drawn too: it is a measured error,
+/// though no point of a fit); curves without a point left out.
 inline std::vector<Curve> score_curves(const Study& study, const std::vector<Case>& cases, const std::vector<CaseResult>& results,
                                        const std::string& name, bool against_cpu) {
   std::vector<Curve> curves;
@@ -98,9 +129,9 @@ inline std::vector<Curve> score_curves(const Study& study, const std::vector<Cas
     std::size_t k = 0;
     while (k < titles.size() && titles[k] != title) ++k;
     if (k == titles.size()) titles.push_back(title), curves.push_back({title, {}});
-    const auto score = fit_point(results[one.index], name);
+    const auto score = plot_point(results[one.index], name);
     const double x = against_cpu ? results[one.index].cpu_s : study.refine >= 0 ? *study.axes[study.refine].values[one.choice[study.refine]].number : 0.0;
-    if (score && x > 0.0) curves[k].points.emplace_back(x, *score);
+    if (score && x > 0.0) curves[k].points.emplace_back(x, score->value);
   }
   std::vector<Curve> drawn;
   for (auto& curve : curves)
@@ -181,12 +212,19 @@ TEST_CASE("study writing: CSV fields quoted where needed, fits and curves per co
   study.refine = 0;
   const auto cases = expand_cases(study);
   std::vector<CaseResult> results(cases.size());
-  for (auto& result : results) result.status = "done", result.score_at_t = 0.5, result.score_shifted = 0.25, result.cpu_s = 0.1;
+  for (auto& result : results)
+    result.status = "done", result.score_at_t = Measured{0.5, 0.01, Ending::done}, result.score_shifted = Measured{0.25, 0.02, Ending::failed},
+    result.cpu_s = 0.1;
   results[1].status = "refused", results[1].why = "error: s.toml:3: solver.shape: must be one of a, b";
   results[1].score_at_t = results[1].score_shifted = std::nullopt;
+  results[3].score_at_t = results[3].score_shifted = std::nullopt;  // done, no exact solution: no score, no ending
   const std::string csv = study_csv(study, cases, results);
-  CHECK(csv.substr(0, csv.find('\n')) == "case,grid.cells,solver.shape,status,rms_at_t,rms_at_integrator_time,energy_drift,steps,wall_s,cpu_s,why");
-  CHECK(csv.find("\n1,10,it's,refused,,,,,,,\"error: s.toml:3: solver.shape: must be one of a, b\"\n") != std::string::npos);
+  CHECK(csv.substr(0, csv.find('\n')) == "case,grid.cells,solver.shape,status,rms_at_t,rms_at_integrator_time,energy_drift,steps,wall_s,cpu_s,why,"
+                                         "rms_at_t_band,rms_at_integrator_time_band,ending_at_t,ending_at_integrator_time");
+  CHECK(csv.find("\n1,10,it's,refused,,,,,,,\"error: s.toml:3: solver.shape: must be one of a, b\",,,stopped,stopped\n") != std::string::npos);
+  CHECK(csv.find("\n0,10,linear,done,0.5,0.25,,,0,0.1,,0.01,0.02,done,failed\n") != std::string::npos);
+  CHECK(csv.find("\n3,20,it's,done,,,,,0,0.1,,,,,\n") != std::string::npos);
+  results[3].score_at_t = Measured{0.5, 0.01, Ending::done}, results[3].score_shifted = Measured{0.25, 0.02, Ending::failed};
   const auto curves = score_curves(study, cases, results, "rms_at_t", false);
   REQUIRE(curves.size() == 2);
   CHECK(curves[1].title == "it's");
@@ -198,7 +236,10 @@ TEST_CASE("study writing: CSV fields quoted where needed, fits and curves per co
   CHECK(gp.find("set key outside") != std::string::npos);
   Fit fit;
   fit.choice = {0, 1}, fit.score = "rms_at_t", fit.points = 1, fit.why = "1 finite point; a fit needs 3 at least";
-  CHECK(fits_csv(study, {fit}) == "solver.shape,score,p,p_stderr,C,points,why\nit's,rms_at_t,,,,1,1 finite point; a fit needs 3 at least\n");
+  CHECK(fits_csv(study, {fit}) ==
+        "solver.shape,score,p,p_stderr,C,points,why,p_band,failed\nit's,rms_at_t,,,,1,1 finite point; a fit needs 3 at least,,0\n");
+  fit.p = 1.5, fit.p_error = 0.25, fit.c = 2.0, fit.points = 4, fit.failed = 1, fit.why = "";
+  CHECK(fits_csv(study, {fit}) == "solver.shape,score,p,p_stderr,C,points,why,p_band,failed\nit's,rms_at_t,1.5,0.25,2,4,,0.5,1\n");
 }
 
 }  // namespace mpm::study
