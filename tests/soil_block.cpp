@@ -13,6 +13,7 @@
 
 #include "mpm/exact/column_log_strain.hpp"
 #include "tests/support.hpp"
+#include "verification/soil_domain.hpp"
 #include "verification/soil_report.hpp"
 
 namespace {

@@ -17,14 +17,31 @@ struct Claim {
   std::string measured;  ///< the numbers we measured
   bool holds = false;
   bool hard = false;     ///< a theory bound: failing it fails the suite
+  /// decided by the one rule (mpm::judge) as undecided (within its numbers' bands) or stopped (a run stopped):
+  /// neither holds nor fails
+  bool undecided = false, stopped = false;
 };
+
+/// A claim decided by the one rule: holds, does not hold, undecided or stopped, as `outcome`.
+inline Claim judged_claim(const std::string& text, const std::string& measured, mpm::Outcome outcome, bool hard = false) {
+  return {text, measured, outcome == mpm::Outcome::holds, hard, outcome == mpm::Outcome::undecided,
+          outcome == mpm::Outcome::stopped};
+}
+
+/// A table cell's text with each bar escaped (\\|): "|e(h/2)|" would otherwise split the cell.
+inline std::string cell(const std::string& text) {
+  std::string escaped;
+  for (char c : text) escaped += c == '|' ? std::string("\\|") : std::string(1, c);
+  return escaped;
+}
 
 /// A Markdown table of claims: | claim | measured | verdict |.
 inline void write_claims(std::ostream& out, const std::vector<Claim>& claims) {
   out << "| claim | measured | verdict |\n|---|---|---|\n";
   for (const Claim& claim : claims)
-    out << "| " << claim.text << (claim.hard ? " *(hard check)*" : "") << " | " << claim.measured << " | "
-        << (claim.holds ? "**holds**" : "**does not hold**") << " |\n";
+    out << "| " << cell(claim.text) << (claim.hard ? " *(hard check)*" : "") << " | " << cell(claim.measured) << " | "
+        << (claim.undecided ? "**undecided**" : claim.stopped ? "**stopped**" : claim.holds ? "**holds**" : "**does not hold**")
+        << " |\n";
   out << "\n";
 }
 
@@ -112,8 +129,8 @@ inline std::string stopped_places(const DomainClaim& claim) {
 inline void write_domain_claims(std::ostream& out, const std::vector<DomainClaim>& claims) {
   out << "| claim | measure | holds on | fails on | not compared (stopped, undecided) | verdict |\n|---|---|---|---|---|---|\n";
   for (const DomainClaim& claim : claims)
-    out << "| " << claim.statement << (claim.hard ? " *(hard check)*" : "") << " | " << claim.measure << " | "
-        << places(claim, true) << " | " << places(claim, false) << " | " << stopped_places(claim) << " | **"
+    out << "| " << cell(claim.statement) << (claim.hard ? " *(hard check)*" : "") << " | " << cell(claim.measure) << " | "
+        << cell(places(claim, true)) << " | " << cell(places(claim, false)) << " | " << cell(stopped_places(claim)) << " | **"
         << claim.verdict() << "** |\n";
   out << "\n";
 }

@@ -79,6 +79,12 @@ inline mpm::Measured ringing_measured(const DykaResult& run) {
   if (!run.failed) m.value = run.ringing, m.band = mpm::band_of_halves(run.ringing, run.even.ringing, run.odd.ringing);
   return m;
 }
+/// The plateau overshoot (DykaResult::overshoot, / v0) with the band of its sampling.
+inline mpm::Measured overshoot_measured(const DykaResult& run) {
+  mpm::Measured m = rms_measured(run);
+  if (!run.failed) m.value = run.overshoot, m.band = mpm::band_of_halves(run.overshoot, run.even.overshoot, run.odd.overshoot);
+  return m;
+}
 /// The plateau deficit (DykaResult::undershoot, / v0) with the band of its sampling.
 inline mpm::Measured deficit_measured(const DykaResult& run) {
   mpm::Measured m = rms_measured(run);

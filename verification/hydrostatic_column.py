@@ -22,6 +22,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import verdict_rule  # noqa: E402
+
 TOLERANCE = 1e-4  # relative: 0.01 %
 QUANTITY = "sigma_yy_min_at_0.2s"
 
@@ -41,7 +44,11 @@ def published_values(path):
             analytical = float(row["value"])
         elif row["quantity"] == QUANTITY:
             _, update, cell = row["case"].split("/")
-            values[(update, float(cell.split("=")[1]))] = (float(row["value"]), row)
+            printed = row["value"].lower().split("e")[0]
+            digits = len(printed.split(".")[1]) if "." in printed else 0
+            exponent = int(row["value"].lower().split("e")[1]) if "e" in row["value"].lower() else 0
+            # the published value's band: half its last printed digit (verdict_rule.py, the report's rule 1)
+            values[(update, float(cell.split("=")[1]))] = (float(row["value"]), row, 0.5 * 10.0 ** (exponent - digits))
     return values, analytical
 
 
@@ -79,10 +86,13 @@ def measure(study_dir):
 
 
 def compare(cases, published):
-    """Adds CB-Geo's value and the relative difference to each case; returns the problems found."""
+    """Adds CB-Geo's value, the relative difference and its outcome by the one rule (verdict_rule.py: |difference|
+    below 0.01 %, its band half the published value's last printed digit; a case that did not finish is stopped) to
+    each case; returns the problems found (a stopped case, a missing value, a difference beyond 0.01 %)."""
     problems = []
     for case in cases:
         if case["status"] != "done":
+            case["outcome"] = "stopped"
             problems.append(f"case {case['case']}: {case['status']} ({case['why']})")
             continue
         found = [value for (update, h), value in published.items()
@@ -90,9 +100,10 @@ def compare(cases, published):
         if not found:
             problems.append(f"case {case['case']}: no published value for {case['update']} at h = {case['h']:g} m")
             continue
-        case["cbgeo"] = found[0][0]
+        case["cbgeo"], case["band"] = found[0][0], found[0][2] / abs(found[0][0])
         case["difference"] = (case["ours"] - case["cbgeo"]) / abs(case["cbgeo"])
-        if not abs(case["difference"]) <= TOLERANCE:
+        case["outcome"] = verdict_rule.judge(abs(case["difference"]), case["band"], "done", "below", TOLERANCE)
+        if case["outcome"] == "fails":
             problems.append(f"{case['update']} h = {case['h']:g} m: ours {case['ours']:.6f} Pa, CB-Geo "
                             f"{case['cbgeo']:.3f} Pa, {100 * case['difference']:+.4f} % (more than 0.01 %)")
     return problems
@@ -121,9 +132,17 @@ def report(cases, analytical, problems, data_path):
     done = [case for case in cases if "cbgeo" in case]
     if done:
         coarse = max(done, key=lambda case: case["h"])
-        lines += ["", f"**{'holds' if not problems else 'does not hold'}**: ours agrees with CB-Geo within 0.01 % on "
-                  f"{sum(1 for c in done if abs(c['difference']) <= TOLERANCE)} of {len(cases)} cases; the largest "
-                  f"difference is {100 * max(abs(c['difference']) for c in done):.4f} %.", "",
+        where = lambda c: f"{c['update']}, h = {c['h']:g} m ({100 * c['difference']:+.4f} % ± {100 * c['band']:.1g} %)"
+        listed = lambda outcome: "; ".join(where(c) for c in done if c["outcome"] == outcome) or "-"
+        others = "; ".join([f"{where(c)}, undecided" for c in done if c["outcome"] == "undecided"] +
+                           [f"case {c['case']}: {c['status']}" for c in cases if c.get("outcome") == "stopped"]) or "-"
+        lines += ["", "| claim | measure | holds on | fails on | not compared (stopped, undecided) | verdict |",
+                  "|---|---|---|---|---|---|",
+                  f"| Ours agrees with CB-Geo's published smallest sigma_yy within 0.01 % *(hard check)* | abs(ours - CB-Geo) / "
+                  f"abs(CB-Geo) < 0.01 % beyond its band (half CB-Geo's last printed digit), by the one rule | {listed('holds')} "
+                  f"| {listed('fails')} | {others} | "
+                  f"**{verdict_rule.verdict_text([c.get('outcome', 'stopped') for c in cases])}** |", "",
+                  f"The largest difference is {100 * max(abs(c['difference']) for c in done):.4f} %.", "",
                   f"Both codes sit below rho g H = {coarse['rho_g_H']:.3f} Pa (CB-Geo's \"analytical\" "
                   f"{analytical if analytical is not None else float('nan'):.1f} Pa) by nearly h / 2H: linear shape "
                   "functions give every particle of the bottom cell the one stress of that cell, the weight above its "

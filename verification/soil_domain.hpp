@@ -2,6 +2,8 @@
 // finite-strain column, step by step and shape by shape, and the energy growth of linear shapes against the cell
 // crossings of every linear run. Each sample says where it is and what it measured; a stopped run is its own outcome.
 #pragma once
+#include <doctest/doctest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -17,36 +19,65 @@ inline double finite_strain_gap(const SoilOutcome& o) { return o.settlement.mean
 
 inline std::string millimetres(double metres_value) { return number(1e3 * metres_value, "%+.2f"); }
 
-/// What one refinement step (h -> h/2) does to the finite-strain gap e, with the estimators' floors f of both runs:
-/// "falls" when |e(h/2)| + f < |e(h)|, "grows" when |e(h/2)| > |e(h)| + f, "changes sign" when the two gaps have
-/// opposite signs and each lies beyond its own floor, "flat within the floor" otherwise; "stopped" when a run stopped.
-inline std::string refinement_outcome(const SoilOutcome& coarse, const SoilOutcome& fine) {
-  if (coarse.result.failed || fine.result.failed) return "stopped";
-  const double a = finite_strain_gap(coarse), b = finite_strain_gap(fine);
-  const double fa = coarse.settlement.mean_floor, fb = fine.settlement.mean_floor, floor = fa + fb;
-  if (a * b < 0.0 && std::abs(a) > fa && std::abs(b) > fb) return "changes sign";
-  if (std::abs(b) + floor < std::abs(a)) return "falls";
-  if (std::abs(b) > std::abs(a) + floor) return "grows";
-  return "flat within the floor";
+/// One refinement step (h -> h/2) of the finite-strain gap e, judged by the one rule (mpm::judge): the claim
+/// |e(h/2)| < |e(h)|, each gap with its estimator's floor f as its band. It holds when |e(h/2)| + f(h) + f(h/2) < |e(h)|
+/// (the rule as the claim states it), fails when |e(h/2)| > |e(h)| + f(h) + f(h/2), is undecided in between and stopped
+/// when a run stopped. `words` names what the gap did: "falls", "grows", "flat within the floors", each with
+/// ", changes sign" where the two gaps have opposite signs beyond their floors (a sign change is no outcome of its own:
+/// a gap that changes sign and shrinks beyond the floors has fallen).
+struct RefinementStep {
+  mpm::Outcome outcome;
+  std::string words;
+};
+inline RefinementStep refinement_step(double coarse_gap, double coarse_floor, double fine_gap, double fine_floor, bool stopped) {
+  if (stopped) return {mpm::Outcome::stopped, "stopped"};
+  const mpm::Outcome outcome = mpm::judge({std::abs(fine_gap), fine_floor, mpm::Ending::done}, mpm::Side::below,
+                                          {std::abs(coarse_gap), coarse_floor, mpm::Ending::done});
+  std::string words = outcome == mpm::Outcome::holds ? "falls" : outcome == mpm::Outcome::fails ? "grows" : "flat within the floors";
+  if (coarse_gap * fine_gap < 0.0 && std::abs(coarse_gap) > coarse_floor && std::abs(fine_gap) > fine_floor) words += ", changes sign";
+  return {outcome, words};
 }
 
-/// One sample per method and refinement step: "uGIMP, 1 -> 0.5 m: +0.30 -> -0.20 mm (floors 0.02, 0.01 mm), changes
-/// sign", with |e(h/2)| / |e(h)| as its value; it holds where the gap falls by more than the floors.
+TEST_CASE("soil refinement step: each branch of the rule by hand (gaps and floors in mm)") {
+  using mpm::Outcome;
+  CHECK(refinement_step(1.14, 0.03, 0.18, 0.05, false).outcome == Outcome::holds);  // 0.18 + 0.08 < 1.14
+  CHECK(refinement_step(1.14, 0.03, -0.18, 0.05, false).outcome == Outcome::holds);  // a sign change that shrinks: falls
+  CHECK(refinement_step(1.14, 0.03, -0.18, 0.05, false).words == "falls, changes sign");
+  CHECK(refinement_step(0.30, 0.02, -0.20, 0.01, false).outcome == Outcome::holds);
+  CHECK(refinement_step(0.20, 0.05, -0.30, 0.04, false).outcome == Outcome::fails);  // grows by 0.10 > 0.09
+  CHECK(refinement_step(0.20, 0.05, -0.30, 0.04, false).words == "grows, changes sign");
+  CHECK(refinement_step(0.20, 0.05, 0.26, 0.04, false).outcome == Outcome::undecided);  // 0.06 <= 0.09
+  CHECK(refinement_step(0.20, 0.05, 0.26, 0.04, false).words == "flat within the floors");
+  CHECK(refinement_step(0.5, 0.125, 0.25, 0.125, false).outcome == Outcome::undecided);  // falls by exactly the floors
+  CHECK(refinement_step(0.5, 0.125, 0.24, 0.125, false).outcome == Outcome::holds);
+  CHECK(refinement_step(0.03, 0.05, -0.02, 0.04, false).words == "flat within the floors");  // no sign beyond the floors
+  CHECK(refinement_step(104.0, 0.1, 3.2, 0.1, true).outcome == Outcome::stopped);
+}
+
+/// The refinement step between two runs (SoilOutcome): refinement_step on their gaps and floors.
+inline RefinementStep refinement_outcome(const SoilOutcome& coarse, const SoilOutcome& fine) {
+  return refinement_step(finite_strain_gap(coarse), coarse.settlement.mean_floor, finite_strain_gap(fine),
+                         fine.settlement.mean_floor, coarse.result.failed || fine.result.failed);
+}
+
+/// One sample per method and refinement step: "uGIMP, 1 -> 0.5 m: +0.30 -> -0.20 mm (floors 0.02, 0.01 mm), falls,
+/// changes sign", with |e(h/2)| / |e(h)| as its value, decided by refinement_step.
 inline DomainClaim refinement_domain_claim(const SoilLookup& get, const std::vector<std::string>& methods,
                                            const std::vector<double>& sizes, const std::string& integrator) {
   DomainClaim claim;
   claim.statement = std::string("Under refinement the mean settlement after the ramp approaches the finite-strain column") +
                     (integrator == "fe" ? " (forward Euler)" : " (predictor-corrector)") +
                     ": at each halving of h its gap e falls by more than the estimator's floor";
-  claim.measure = "|e(h/2)| / |e(h)|; holds where |e(h/2)| + floor(h) + floor(h/2) < |e(h)| (e: mean over the last 4 T1 - "
-                  "finite-strain static, mm; floor: the range of that mean as the window's end moves back over one T1)";
+  claim.measure = "|e(h/2)| / |e(h)|; holds where |e(h/2)| + floor(h) + floor(h/2) < |e(h)|, fails where |e(h/2)| > "
+                  "|e(h)| + floor(h) + floor(h/2), undecided between (a sign change is named, and judged so) (e: mean over "
+                  "the last 4 T1 - finite-strain static, mm; floor: the range of that mean as the window's end moves back over one T1)";
   for (const auto& method : methods)
     for (size_t k = 1; k < sizes.size(); ++k) {
       const auto& coarse = get(run_name(method, integrator, sizes[k - 1]));
       const auto& fine = get(run_name(method, integrator, sizes[k]));
-      const std::string outcome = refinement_outcome(coarse, fine);
+      const RefinementStep step = refinement_outcome(coarse, fine);
       std::string where = method_label(method) + ", " + number(sizes[k - 1], "%g") + " -> " + number(sizes[k], "%g") + " m: ";
-      if (outcome == "stopped") {
+      if (step.outcome == mpm::Outcome::stopped) {
         const auto& stopped = coarse.result.failed ? coarse : fine;
         where += "the " + number(stopped.result.scene.spacing, "%g") + " m run stopped at t = " +
                  number(stopped.result.time.empty() ? 0.0 : stopped.result.time.back(), "%.2f") + " s";
@@ -55,8 +86,8 @@ inline DomainClaim refinement_domain_claim(const SoilLookup& get, const std::vec
       }
       const double a = finite_strain_gap(coarse), b = finite_strain_gap(fine);
       where += millimetres(a) + " -> " + millimetres(b) + " mm (floors " + number(1e3 * coarse.settlement.mean_floor, "%.2f") + ", " +
-               number(1e3 * fine.settlement.mean_floor, "%.2f") + " mm), " + outcome;
-      claim.add(where, std::abs(b) / std::abs(a), outcome == "falls");
+               number(1e3 * fine.settlement.mean_floor, "%.2f") + " mm), " + step.words;
+      claim.add(where, std::abs(b) / std::abs(a), step.outcome);
     }
   return claim;
 }
@@ -67,7 +98,7 @@ inline std::string refinement_outcomes(const SoilLookup& get, const std::string&
   std::string text;
   for (size_t k = 1; k < sizes.size(); ++k)
     text += (k > 1 ? ", " : "") +
-            refinement_outcome(get(run_name(method, integrator, sizes[k - 1])), get(run_name(method, integrator, sizes[k])));
+            refinement_outcome(get(run_name(method, integrator, sizes[k - 1])), get(run_name(method, integrator, sizes[k]))).words;
   return text;
 }
 

@@ -180,6 +180,27 @@ inline std::string error_cost_text(const std::vector<CostEntry>& entries, const 
          "): " + front + (ties.empty() ? "" : " (tie: " + ties + ")");
 }
 
+/// "A shape function of the paper (uGIMP, LME) is still the most accurate on the 2 m grid by `criterion`": one criterion per
+/// claim. The paper's best against the others' best by the one rule (mpm::judge), each error with its band `band_of`;
+/// a stopped best is stopped. Holds with the paper's best below beyond the bands, undecided within them.
+inline Claim best_of_paper_claim(const std::vector<CostEntry>& entries, const ErrorOf& error, const ErrorOf& band_of,
+                                 const std::string& criterion, double spread) {
+  std::vector<CostEntry> paper, others;
+  for (const auto& entry : entries)
+    (entry.label.rfind("ugimp", 0) == 0 || entry.label.rfind("lme", 0) == 0 ? paper : others).push_back(entry);
+  const CostEntry &a = most_accurate(paper, error), &b = most_accurate(others, error);
+  auto measured = [&](const CostEntry& e) {
+    return mpm::Measured{error(*e.run), band_of(*e.run), e.run->result.failed ? mpm::Ending::stopped : mpm::Ending::done};
+  };
+  const mpm::Outcome outcome = mpm::judge(measured(a), mpm::Side::below, measured(b));
+  return judged_claim("With today's baselines in the comparison, a shape function of the paper (uGIMP, LME) is still the most accurate on "
+          "the 2 m grid, by " + criterion,
+          "the paper's best " + a.label + " " + significant_metres(error(*a.run)) + " (band " + significant_metres(band_of(*a.run)) +
+              "), the others' best " + b.label + " " + significant_metres(error(*b.run)) + " (band " +
+              significant_metres(band_of(*b.run)) + "). " + error_cost_text(entries, error, spread),
+          outcome);
+}
+
 /// Today's baselines on the 2 m grid: USL and MUSL stable at CFL 0.1, and which method is most accurate for its cost by each of two errors.
 inline std::vector<Claim> baseline_claims(const SoilLookup& get, const std::vector<std::string>& methods,
                                           const std::vector<std::string>& stress_updates) {
@@ -205,16 +226,12 @@ inline std::vector<Claim> baseline_claims(const SoilLookup& get, const std::vect
   std::vector<const SoilOutcome*> timed;
   for (const auto& entry : entries) timed.push_back(entry.run);
   const double spread = timing_spread(timed);
-  auto of_paper = [&](const ErrorOf& error) {
-    const std::string& label = most_accurate(entries, error).label;
-    return label.rfind("ugimp", 0) == 0 || label.rfind("lme", 0) == 0;
-  };
-  claims.push_back({"With today's baselines in the comparison, a shape function of the paper (uGIMP, LME) is still the most accurate "
-                    "on the 2 m grid, by the RMS of u over 0-20 s against the small-strain solution (Eq. 43, the paper's measure) and by "
-                    "the mean after the ramp against the finite-strain static column (the model the solver discretises)",
-                    "Eq. 43: " + error_cost_text(entries, small_strain, spread) + ". Finite-strain column: " +
-                        error_cost_text(entries, finite_strain, spread),
-                    of_paper(small_strain) && of_paper(finite_strain), false});
+  claims.push_back(best_of_paper_claim(entries, small_strain, [](const SoilOutcome& o) { return o.settlement.rms_band; },
+                                       "the RMS of u over 0-20 s against the small-strain solution (Eq. 43, the paper's measure; "
+                                       "band: the RMS on the even or the odd samples alone)", spread));
+  claims.push_back(best_of_paper_claim(entries, finite_strain, [](const SoilOutcome& o) { return o.settlement.mean_floor; },
+                                       "the mean after the ramp against the finite-strain static column (the model the solver "
+                                       "discretises; band: the estimator's floor)", spread));
   return claims;
 }
 

@@ -89,8 +89,10 @@ inline double flat_line_score(const std::vector<double>& exact) {
   return std::sqrt(sum / exact.size());
 }
 
-/// The ending of a run that finished with score `rms` against an exact history whose flat line scores `flat`.
-inline Ending score_ending(double rms, double flat) { return rms >= flat ? Ending::failed : Ending::done; }
+/// The ending of a run that finished with score `rms` against an exact history whose flat line scores `flat`. Where
+/// the exact history is constant (flat 0) the rule does not apply: the flat line is then the exact history itself, and
+/// a run's round-off would fail it; its RMS alone says how far it strays.
+inline Ending score_ending(double rms, double flat) { return flat > 0.0 && rms >= flat ? Ending::failed : Ending::done; }
 
 TEST_CASE("verdict rule: each branch by hand") {
   const Measured a{1.0, 0.1, Ending::done}, b{1.5, 0.1, Ending::done};
@@ -118,6 +120,7 @@ TEST_CASE("verdict rule: a ratio's band and ending, a band from halves, a flat l
   CHECK(flat_line_score({0.0, 1.0, 0.0, 1.0}) == doctest::Approx(0.5));  // a square wave of height 1
   CHECK(score_ending(0.5, 0.5) == Ending::failed);
   CHECK(score_ending(0.49, 0.5) == Ending::done);
+  CHECK(score_ending(1e-15, 0.0) == Ending::done);  // a constant exact history: the rule does not apply
 }
 
 }  // namespace mpm

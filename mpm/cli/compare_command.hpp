@@ -435,7 +435,7 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   CHECK(std::isnan(one.ringing));
   CHECK(std::isnan(one.amplitude));
   CHECK(one.flat_rms == 0.0);
-  CHECK(one.ending == Ending::failed);  // 0.5 >= 0: a flat line at the one exact value does better
+  CHECK(one.ending == Ending::done);  // a constant exact history (flat line 0): the failed-score rule does not apply
 }
 
 TEST_CASE("mpm compare: damping as amplitude on every row and on each half, a flat line's score, the ending") {
