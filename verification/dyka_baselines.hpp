@@ -145,7 +145,7 @@ inline std::vector<DomainClaim> baseline_claims(const Runs& runs) {
                    "|RMS_uGIMP / RMS_B-spline2 - 1| <= 1e-4", {}, false};
   DomainClaim updates{"USL and MUSL differ from USF by 5-11 % on the Dyka bar, USL below and MUSL above",
                       "RMS / RMS_USF - 1 (linear FE): USL in [-11 %, -5 %], MUSL in [+5 %, +11 %]", {}, false};
-  DomainClaim wider{"A wider LME (gamma 0.8, 1.5) buys accuracy over gamma 3", "RMS_γ / RMS_γ3 < 1", {}, false};
+  DomainClaim wider{"A wider LME (gamma 0.8, 1.5) buys accuracy over gamma 3", "RMS_γ / RMS_γ3 < 1 beyond its band", {}, false};
   for (int cells : baseline_cells) {
     if (cells > 640) continue;
     for (const auto& integrator : integrators) {
@@ -155,7 +155,7 @@ inline std::vector<DomainClaim> baseline_claims(const Runs& runs) {
       for (const std::string gamma : {"0.8", "1.5"}) {
         const auto &g = runs.at(baseline_name("lme" + gamma + "_" + integrator, cells)), &g3 = runs.at(sweep_name("lme", integrator, cells));
         add_pair(wider, "γ " + gamma + " " + integrator + " " + mesh_text(cells), ": " + rms_text(g.rms / speed_v0) + " / " + rms_text(g3.rms / speed_v0), g,
-                 "γ " + gamma, g3, "γ 3", g.rms / g3.rms, g.rms < g3.rms);
+                 "γ " + gamma, rms_measured(g), g3, "γ 3", rms_measured(g3), mpm::Side::below);
       }
     }
     const auto& usf = runs.at(sweep_name("linear", "fe", cells));
@@ -167,11 +167,11 @@ inline std::vector<DomainClaim> baseline_claims(const Runs& runs) {
     }
   }
   DomainClaim cubic{"The cubic B-spline stays accurate through grid crossing: it finishes at 2560 cells with an error below its 640-cell one",
-                    "RMS(2560) / RMS(640) < 1", {}, false};
+                    "RMS(2560) / RMS(640) < 1 beyond its band", {}, false};
   for (const auto& integrator : integrators) {
     const auto &fine = runs.at(baseline_name("bspline3_" + integrator, 2560)), &coarse = runs.at(baseline_name("bspline3_" + integrator, 640));
-    add_pair(cubic, integrator, ": " + rms_text(coarse.rms / speed_v0) + " -> " + rms_text(fine.rms / speed_v0), fine, "2560", coarse, "640",
-             fine.rms / coarse.rms, fine.rms < coarse.rms);
+    add_pair(cubic, integrator, ": " + rms_text(coarse.rms / speed_v0) + " -> " + rms_text(fine.rms / speed_v0), fine, "2560",
+             rms_measured(fine), coarse, "640", rms_measured(coarse), mpm::Side::below);
   }
   return {same, cubic, updates, wider};
 }

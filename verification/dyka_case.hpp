@@ -14,6 +14,7 @@
 #include "mpm/analysis/verdict.hpp"
 #include "mpm/exact/bar.hpp"
 #include "mpm/run.hpp"
+#include "verification/dyka_profiles.hpp"
 #include "verification/fast_runs.hpp"
 #include "verification/parallel.hpp"
 
@@ -49,6 +50,8 @@ struct DykaResult {
   /// What a flat line at the exact history's mean scores (mpm::flat_line_score): a finished run whose RMS is no
   /// smaller has failed (mpm::Ending::failed), it approximates nothing.
   double flat_rms = 0.0;
+  /// v and sigma along the bar at the steps nearest to profile_fractions of the end time (dyka_profiles.hpp)
+  std::vector<Profile> profiles;
   double mass_error = 0.0;     ///< largest relative |sum m_I - sum m_p| of the run
   double newton_mean = 0.0, neighbours_mean = 0.0;
   int newton_max = 0;
@@ -65,7 +68,9 @@ struct VelocityRecorder : mpm::Monitor<1> {
     time.push_back(t);
     velocity.push_back(particles.velocity[particle][0]);
     energy.push_back(balances.total());
+    profiles.sample(t, particles);
   }
+  ProfileCapture profiles;
   int particle;
   std::vector<double> time, velocity, energy;
 };
@@ -129,6 +134,7 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   const mpm::Setup<1> setup = mpm::build_setup<1>(scene);
   result.cells = scene.cells[0];
   VelocityRecorder recorder(setup.observed.at(0));
+  for (double fraction : profile_fractions) recorder.profiles.targets.push_back(fraction * scene.control.end_time);
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
   mpm::RunSummary summary;
@@ -154,6 +160,10 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
       loaded = std::max(loaded, setup.particles.reference_position[p][0] + setup.particles.half_length[p][0]);
   const mpm::exact::ElasticBar bar(length, scene.young_modulus, scene.density, {{0.0, loaded, v0, 0.0}});
   const double reference_position = setup.particles.reference_position[setup.observed[0]][0];
+  result.profiles = recorder.profiles.profiles;
+  for (Profile& profile : result.profiles)
+    for (double x : profile.position)
+      profile.exact_velocity.push_back(bar.velocity(x, profile.time)), profile.exact_stress.push_back(bar.stress(x, profile.time));
   result.time = recorder.time;
   result.velocity = recorder.velocity;
   for (size_t n = 0; n < result.time.size(); ++n) {

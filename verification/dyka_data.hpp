@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "mpm/analysis/verdict.hpp"
+
 #include "verification/dyka_report.hpp"
 
 namespace verification::dyka {
@@ -16,20 +18,30 @@ inline std::ofstream csv(const Runs& runs, const std::string& file, const std::s
   return out;
 }
 inline const char* status(const DykaResult& run) { return run.failed ? "failed" : "ok"; }
+/// The run's ending by the one rule (mpm/analysis/verdict.hpp): stopped, failed (RMS no smaller than a flat line's), done.
+inline const char* ending(const DykaResult& run) {
+  return run.failed ? "stopped" : mpm::score_ending(run.rms, run.flat_rms) == mpm::Ending::failed ? "failed" : "done";
+}
+/// The band of RMS / v0 from its even and odd rows (mpm::band_of_halves); NaN for a stopped run.
+inline double rms_band_over_v0(const DykaResult& run) {
+  return run.failed ? std::nan("") : mpm::band_of_halves(run.rms, run.even.rms, run.odd.rms) / speed_v0;
+}
 
 /// One row of dyka_sweep.csv for `run`, `shape` + `integrator` on `cells`.
 inline void sweep_row(std::ofstream& out, const DykaResult& run, const std::string& shape, const std::string& integrator, int cells) {
   out << shape << "," << integrator << "," << cells << "," << 0.1333 / cells << "," << crossing_ratio(cells) << "," << band_of(cells) << ","
       << run.rms << "," << run.rms / speed_v0 << "," << run.largest_speed / speed_v0 << "," << run.wall_seconds << "," << run.steps << ","
       << status(run) << "," << run.rms_own_time / speed_v0 << "," << run.newton_mean << "," << run.newton_max << "," << run.neighbours_mean << ","
-      << run.cpu_seconds << "," << run.overshoot << "," << run.undershoot << "," << run.ringing << "\n";
+      << run.cpu_seconds << "," << run.overshoot << "," << run.undershoot << "," << run.ringing << "," << rms_band_over_v0(run) << ","
+      << ending(run) << "\n";
 }
 
 /// dyka_sweep.csv (Fig. 6, the work-precision chart; the smooth suite reads it), dyka_cfl.csv (every CFL) and
 /// dyka_sweep_authors.csv (LME under the authors' beta, CFL 0.5, on authors_cells; same columns as dyka_sweep.csv).
 inline void write_sweep(const Runs& runs) {
   const std::string columns = "shape,integrator,cells,h,crossing_ratio,band,rms,rms_over_v0,largest_speed_over_v0,wall_seconds,steps,status,"
-                              "rms_own_time_over_v0,newton_mean,newton_max,neighbours_mean,cpu_seconds,overshoot,undershoot,ringing";
+                              "rms_own_time_over_v0,newton_mean,newton_max,neighbours_mean,cpu_seconds,overshoot,undershoot,ringing,"
+                              "rms_band_over_v0,ending";
   std::ofstream sweep = csv(runs, "dyka_sweep.csv", columns), all = csv(runs, "dyka_cfl.csv", "cfl," + columns);
   std::ofstream authors = csv(runs, "dyka_sweep_authors.csv", columns);
   for (const auto& shape : shapes)

@@ -92,6 +92,22 @@ inline mpm::Measured deficit_measured(const DykaResult& run) {
   return m;
 }
 
+/// The spread of RMS over `runs`, 100 (largest - smallest) / smallest in %, with its band from the two runs' bands;
+/// stopped when a run stopped or every run failed.
+inline mpm::Measured rms_spread(const std::vector<const DykaResult*>& runs) {
+  std::vector<mpm::Measured> m;
+  bool every_failed = true;
+  for (const DykaResult* run : runs) {
+    m.push_back(rms_measured(*run));
+    if (m.back().ending == mpm::Ending::stopped) return {std::nan(""), 0.0, mpm::Ending::stopped};
+    every_failed = every_failed && m.back().ending == mpm::Ending::failed;
+  }
+  if (m.empty() || every_failed) return {std::nan(""), 0.0, mpm::Ending::stopped};
+  const auto by_value = [](const mpm::Measured& a, const mpm::Measured& b) { return a.value < b.value; };
+  const mpm::Measured &low = *std::min_element(m.begin(), m.end(), by_value), &high = *std::max_element(m.begin(), m.end(), by_value);
+  return {100.0 * (high.value - low.value) / low.value, 100.0 * (high.band + low.band) / low.value, mpm::Ending::done};
+}
+
 /// "NPC stopped at 156 µs: ...", "both failed (RMS no smaller than a flat line's)": why a comparison is not compared.
 inline std::string not_compared_text(const DykaResult& a, const std::string& a_label, const DykaResult& b,
                                      const std::string& b_label) {

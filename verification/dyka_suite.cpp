@@ -17,6 +17,7 @@
 #include <fstream>
 
 #include "verification/dyka_accuracy.hpp"
+#include "verification/dyka_profile_claims.hpp"
 #include "verification/dyka_baselines.hpp"
 #include "verification/dyka_data.hpp"
 #include "verification/dyka_fair.hpp"
@@ -46,7 +47,8 @@ std::vector<Section> figures_part(Runs& runs) {
                       authors_cells.end());
   run_all(runs, independent_cases(Part::figures), true);
   write_sweep(runs), write_gamma(runs), write_orders(runs);
-  return {all_runs_section(runs), fig6_section(runs), fig7_section(runs), fig8_section(runs), fig9_10_section(runs)};
+  return {all_runs_section(runs), fig6_section(runs), fig7_section(runs), profile_section(runs), fig8_section(runs),
+          fig9_10_section(runs)};
 }
 
 /// make studies: the sweep again as the reference, the fair comparison, the choices, the energy, the baselines and the

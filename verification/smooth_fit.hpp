@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/analysis/verdict.hpp"
 #include "verification/claims.hpp"
 
 namespace verification::smooth {
@@ -19,6 +20,10 @@ struct OrderFit {
   int points = 0;
   int stopped = 0;  ///< runs of the range that stopped
   bool valid() const { return std::isfinite(order); }
+  /// the order with two standard errors as its band (the one rule, mpm/analysis/verdict.hpp); no fit: stopped
+  mpm::Measured measured() const {
+    return valid() ? mpm::Measured{order, 2.0 * error, mpm::Ending::done} : mpm::Measured{order, 0.0, mpm::Ending::stopped};
+  }
   /// "0.93 ± 0.02", or "— (2 stopped)", "— (2 meshes)"
   std::string text() const {
     if (valid()) return number(order, "%.3g") + " ± " + number(error, "%.1g");

@@ -59,6 +59,16 @@ inline Outcome judge(const Measured& a, Side side, const Measured& b) {
   return (side == Side::below ? a.value < b.value : a.value > b.value) ? Outcome::holds : Outcome::fails;
 }
 
+/// "a lies within [low, high]": both edges judged by the rule; fails when a lies beyond either edge by more than its
+/// band, undecided when it lies within its band of an edge, stopped as judge says.
+inline Outcome judge_within(const Measured& a, double low, double high) {
+  const Outcome above = judge(a, Side::above, {low, 0.0, Ending::done}), below = judge(a, Side::below, {high, 0.0, Ending::done});
+  if (above == Outcome::stopped || below == Outcome::stopped) return Outcome::stopped;
+  if (above == Outcome::fails || below == Outcome::fails) return Outcome::fails;
+  if (above == Outcome::undecided || below == Outcome::undecided) return Outcome::undecided;
+  return Outcome::holds;
+}
+
 /// A threshold: a fixed number, no band, no run behind it.
 inline Measured threshold(double value) { return {value, 0.0, Ending::done}; }
 
@@ -106,6 +116,11 @@ TEST_CASE("verdict rule: each branch by hand") {
   CHECK(judge({std::nan(""), 0.0, Ending::done}, Side::below, b) == Outcome::stopped);
   CHECK(judge(a, Side::below, threshold(1.0)) == Outcome::undecided);  // on the threshold within its band
   CHECK(std::string(outcome_name(Outcome::undecided)) == "undecided");
+  CHECK(judge_within({1.0, 0.1, Ending::done}, 0.8, 1.3) == Outcome::holds);
+  CHECK(judge_within({1.25, 0.1, Ending::done}, 0.8, 1.3) == Outcome::undecided);  // within its band of the upper edge
+  CHECK(judge_within({1.5, 0.1, Ending::done}, 0.8, 1.3) == Outcome::fails);
+  CHECK(judge_within({0.5, 0.1, Ending::done}, 0.8, 1.3) == Outcome::fails);
+  CHECK(judge_within({1.0, 0.1, Ending::stopped}, 0.8, 1.3) == Outcome::stopped);
 }
 
 TEST_CASE("verdict rule: a ratio's band and ending, a band from halves, a flat line's score") {
