@@ -23,10 +23,16 @@ SIMPLE_HEADER = "| claim | measured | verdict |"
 PLACES_HEADER = "| claim | holds on | fails on | verdict |"  # authors_code.py before it wrote the domain table
 
 
-def cells(line):
-    """The cells of a Markdown table row, split at the bars that are not escaped (\\|), the escapes undone."""
+def cells(line, width=None):
+    """The cells of a Markdown table row, split at the bars that are not escaped (\\|), the escapes undone. Given the
+    table's `width`, a row with more cells (a report written before cells escaped their bars: a bar in its second
+    cell, the rule) has its second cell rejoined at those bars."""
     inner = line.strip()[1:-1] if line.strip().endswith("|") else line.strip()[1:]
-    return [cell.strip().replace("\\|", "|") for cell in re.split(r"(?<!\\)\|", inner)]
+    raw = re.split(r"(?<!\\)\|", inner)
+    if width and len(raw) > width:
+        extra = len(raw) - width
+        raw = [raw[0], "|".join(raw[1:extra + 2])] + raw[extra + 2:]
+    return [cell.strip().replace("\\|", "|") for cell in raw]
 
 
 def counts(verdict):
@@ -62,9 +68,7 @@ def read_section_file(path, target):
         elif not line.startswith("|"):
             header = None
         elif header and not line.startswith("|---"):
-            c = cells(line)
-            if len(c) > len(cells(header)):  # a report written before cells escaped their bars: a bar in a middle cell
-                c = [c[0]] + [" | ".join(c[1:len(c) - len(cells(header)) + 2])] + c[len(c) - len(cells(header)) + 2:]
+            c = cells(line, len(cells(header)))
             if header == DOMAIN_HEADER and len(c) == 6:
                 holds, fails, undecided, stopped = counts(c[5])
                 rows.append(dict(target=target, section=section, claim=c[0], rule=c[1], holds=holds, fails=fails,
