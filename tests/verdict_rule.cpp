@@ -1,5 +1,5 @@
 // The one verdict rule (mpm/analysis/verdict.hpp) on the constructed cases that verification/verdict_rule.py is
-// tested on too (tests/verdict_rule.sh): tests/data/verdict_rule_cases.csv, one comparison and its outcome per row.
+// tested on too (tests/verdict_rule.py): tests/data/verdict_rule_cases.csv, one comparison and its outcome per row.
 #include <doctest/doctest.h>
 
 #include <fstream>

@@ -44,7 +44,7 @@ assemble() {  # assemble RESULTS
     echo "   soil's settlement the floor of its estimator; a published value half its last printed digit."
     echo "2. A comparison whose numbers lie within their bands together is **undecided**: neither holds nor fails."
     echo "3. A comparison with a run that stopped is **stopped**: its own outcome, never scored as holding or failing"
-    echo "   (in a hard check, a bound of the theory, a stop fails it)."
+    echo "   (in a hard check, a bound of the theory, a stop fails it; an undecided sample does not)."
     echo "4. A run that finished with an RMS no smaller than a flat line's (the exact history's spread about its mean)"
     echo "   has **failed**: beside a finished run it is compared (and loses); two failed runs are not compared (stopped)."
     echo "5. Every verdict counts holds, fails, undecided and stopped over every run of its study; \"holds on k of n\""

@@ -46,9 +46,11 @@ inline void write_claims(std::ostream& out, const std::vector<Claim>& claims) {
 }
 
 /// True when every hard claim holds.
+/// True when every hard claim holds or is undecided (within its numbers' bands a bound is not shown broken: the same
+/// as a DomainClaim's undecided sample); a stopped hard claim fails.
 inline bool hard_claims_hold(const std::vector<Claim>& claims) {
   for (const Claim& claim : claims)
-    if (claim.hard && !claim.holds) return false;
+    if (claim.hard && !claim.holds && !claim.undecided) return false;
   return true;
 }
 
@@ -135,7 +137,8 @@ inline void write_domain_claims(std::ostream& out, const std::vector<DomainClaim
   out << "\n";
 }
 
-/// True when every hard claim holds on every sample (and has at least one).
+/// True when every hard claim holds on every decided sample (and has at least one): an undecided sample does not fail it,
+/// a stopped one does.
 inline bool hard_claims_hold(const std::vector<DomainClaim>& claims) {
   for (const DomainClaim& claim : claims)
     if (claim.hard && (claim.samples.empty() || claim.count(false) > 0)) return false;

@@ -33,7 +33,30 @@ inline void sweep_row(std::ofstream& out, const DykaResult& run, const std::stri
       << run.rms << "," << run.rms / speed_v0 << "," << run.largest_speed / speed_v0 << "," << run.wall_seconds << "," << run.steps << ","
       << status(run) << "," << run.rms_own_time / speed_v0 << "," << run.newton_mean << "," << run.newton_max << "," << run.neighbours_mean << ","
       << run.cpu_seconds << "," << run.overshoot << "," << run.undershoot << "," << run.ringing << "," << rms_band_over_v0(run) << ","
-      << ending(run) << "\n";
+      << ending(run) << "," << (run.failed ? std::nan("") : mpm::band_of_halves(run.ringing, run.even.ringing, run.odd.ringing)) << ","
+      << (run.failed ? std::nan("") : mpm::band_of_halves(run.overshoot, run.even.overshoot, run.odd.overshoot)) << ","
+      << (run.failed ? std::nan("") : mpm::band_of_halves(run.undershoot, run.even.undershoot, run.odd.undershoot)) << "\n";
+}
+
+/// dyka_profiles.csv: the profiles' scores (dyka_profiles.hpp) of every run of the sweep at CFL 0.5, one row per run,
+/// chosen time and field, each score on every particle and on the even and the odd ones; a run that stopped before a
+/// chosen time has no row there.
+inline void write_profiles(const Runs& runs) {
+  std::ofstream out = csv(runs, "dyka_profiles.csv",
+                          "shape,integrator,cells,target_time,step_time,field,rms,rms_even,rms_odd,ringing,ringing_even,ringing_odd,"
+                          "amplitude,amplitude_even,amplitude_odd,ending");
+  for (const auto& shape : shapes)
+    for (const auto& integrator : integrators)
+      for (int cells : sweep_cells) {
+        const DykaResult& run = runs.at(sweep_name(shape, integrator, cells));
+        for (const Profile& p : run.failed ? std::vector<Profile>{} : run.profiles)
+          for (const bool velocity : {true, false}) {
+            const ProfileScores s = velocity ? score_profile(p.velocity, p.exact_velocity) : score_profile(p.stress, p.exact_stress);
+            out << shape << "," << integrator << "," << cells << "," << p.target << "," << p.time << "," << (velocity ? "v" : "sigma");
+            for (const ProfileScore& score : {s.rms, s.ringing, s.amplitude}) out << "," << score.whole << "," << score.even << "," << score.odd;
+            out << "," << ending(run) << "\n";
+          }
+      }
 }
 
 /// dyka_sweep.csv (Fig. 6, the work-precision chart; the smooth suite reads it), dyka_cfl.csv (every CFL) and
@@ -41,7 +64,7 @@ inline void sweep_row(std::ofstream& out, const DykaResult& run, const std::stri
 inline void write_sweep(const Runs& runs) {
   const std::string columns = "shape,integrator,cells,h,crossing_ratio,band,rms,rms_over_v0,largest_speed_over_v0,wall_seconds,steps,status,"
                               "rms_own_time_over_v0,newton_mean,newton_max,neighbours_mean,cpu_seconds,overshoot,undershoot,ringing,"
-                              "rms_band_over_v0,ending";
+                              "rms_band_over_v0,ending,ringing_band,overshoot_band,undershoot_band";
   std::ofstream sweep = csv(runs, "dyka_sweep.csv", columns), all = csv(runs, "dyka_cfl.csv", "cfl," + columns);
   std::ofstream authors = csv(runs, "dyka_sweep_authors.csv", columns);
   for (const auto& shape : shapes)
@@ -55,6 +78,7 @@ inline void write_sweep(const Runs& runs) {
   for (const auto& integrator : integrators)
     for (int cells : authors_cells)
       sweep_row(authors, runs.at(sweep_name(authors_lme, integrator, cells)), authors_lme, integrator, cells);
+  write_profiles(runs);
 }
 
 /// dyka_fair.csv: FE against NPC, fairly (the meshes without crossing).

@@ -99,9 +99,12 @@ inline Section fig8_section(const Runs& runs) {
 /// The claims of Figs. 9 and 10 on `scope`: the shapes compared on every mesh without crossing (LME: scope.lme), and
 /// the theory's bound on the convergence.
 inline std::vector<DomainClaim> fig9_10_claims(const Runs& runs, const Scope& scope) {
+  // The paper's figures are at 40 cells: scored there; the other meshes without crossing are a row of their own.
   DomainClaim agree{"Without grid crossing the three shape functions give nearly the same v_A (paper/08_test_cases.md: within about 1%)",
                     "spread of RMS over the shapes, (largest - smallest) / smallest <= 1 % (the paper's figure) beyond its band, "
-                    "every mesh with crossing ratio < 1", {}, false};
+                    "at 40 cells, the mesh of the paper's Figs. 9 and 10", {}, false};
+  DomainClaim agree_beyond{"Beyond the figures' mesh: the three shape functions agree within about 1 % on the other meshes without "
+                           "grid crossing", "as above, every other mesh with crossing ratio < 1", {}, false};
   const std::string lme_label = scope.lme == authors_lme ? "LME at the authors' β " : "LME ";
   for (const auto& integrator : integrators)
     for (int cells : scope.cells) {
@@ -112,11 +115,12 @@ inline std::vector<DomainClaim> fig9_10_claims(const Runs& runs, const Scope& sc
                                                &runs.at(sweep_name("ugimp", integrator, cells)),
                                                &runs.at(sweep_name(scope.lme, integrator, cells))});
       const std::string where = integrator + " " + std::to_string(cells) + " cells";
+      DomainClaim& claim = cells == 40 ? agree : agree_beyond;
       if (spread.ending == mpm::Ending::stopped) {
-        agree.add(where + ": a run stopped", std::nan(""), mpm::Outcome::stopped);
+        claim.add(where + ": a run stopped", std::nan(""), mpm::Outcome::stopped);
         continue;
       }
-      agree.add(where + ": spread " + text(spread.value, "%.3g") + " ± " + text(spread.band, "%.2g") + " % (linear " + rms_text(linear) +
+      claim.add(where + ": spread " + text(spread.value, "%.3g") + " ± " + text(spread.band, "%.2g") + " % (linear " + rms_text(linear) +
                     ", uGIMP " + rms_text(ugimp) + ", " + lme_label + rms_text(lme) + ")",
                 spread.value, mpm::judge(spread, mpm::Side::below, mpm::threshold(1.0)));
     }
@@ -132,7 +136,7 @@ inline std::vector<DomainClaim> fig9_10_claims(const Runs& runs, const Scope& sc
       add_pair(bound, shape_label(shape) + " " + integrator, ": order " + order_text(fit), r640, "640", r40, "40", r640.rms / r40.rms,
                fit.fitted() && fit.order >= 0.2 && r640.rms <= 0.574 * r40.rms);
     }
-  return {agree, bound};
+  return {agree, agree_beyond, bound};
 }
 
 /// Figs. 9 and 10: the claims at this project's beta, then under the authors' beta (LME's runs at it).

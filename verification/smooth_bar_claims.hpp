@@ -40,15 +40,24 @@ inline std::vector<DomainClaim> reference_claims(const Runs& runs, const BarScen
   return list;
 }
 
-/// A ratio of two runs' measures over every mesh of the series `a` and `b` share (both finished).
+/// A run's error `measure` with its band (the stress's for the stress error, the velocity's for the others: the even and
+/// odd particles' RMS), stopped where the run stopped.
+inline mpm::Measured smooth_measured(const SmoothResult& r, double SmoothResult::*measure) {
+  if (r.failed || !std::isfinite(r.*measure)) return {std::nan(""), 0.0, mpm::Ending::stopped};
+  return {r.*measure, measure == &SmoothResult::stress_error ? r.stress_band : r.velocity_band, mpm::Ending::done};
+}
+
+/// A ratio of two runs' measures over every mesh of the series `a` and `b` share, decided by the one rule: within
+/// (low, high) beyond the ratio's band (mpm::judge_within), stopped where a run stopped.
 inline void add_ratios(DomainClaim& claim, const Runs& runs, const Case& a, const Case& b, double SmoothResult::*measure_a,
                        double SmoothResult::*measure_b, double low, double high) {
   for (int n : runs.meshes(a)) {
     Case x = a, y = b;
     x.cells = y.cells = n;
     if (!runs.has(y)) continue;
-    const double ratio = runs.at(x).*measure_a / runs.at(y).*measure_b;
-    claim.add(where(x), ratio, ratio > low && ratio < high);
+    const mpm::Measured r = mpm::ratio(smooth_measured(runs.at(x), measure_a), smooth_measured(runs.at(y), measure_b));
+    const mpm::Outcome outcome = mpm::judge_within(r, low, high);
+    claim.add(where(x) + (outcome == mpm::Outcome::stopped ? ": a run stopped" : ", ratio ± " + number(r.band, "%.2g")), r.value, outcome);
   }
 }
 
@@ -128,7 +137,7 @@ inline std::vector<DomainClaim> large_bar_claims(const Runs& runs) {
     const auto at16 = std::find(v.cells.begin(), v.cells.end(), 16) - v.cells.begin();
     add_orders(converges, where(p) + ": " + error_text(v.values[at16], "%.2g") + " -> " + error_text(v.values.back(), "%.2g") +
                    ", order " + fit.text() + stopped_text(v),
-               fit.order, orders_against({fit}, 0.5), v.stopped.empty() && v.values.back() < v.values[at16]);
+               fit.order, orders_against({fit}, 0.5), v.stopped.empty() && v.values.back() < v.values[at16], !v.stopped.empty());
   }
   std::vector<DomainClaim> list{converges};
   list.push_back(finish_claim(runs, cases_of(runs, Group::bar, true, true, true, false), "vibrating bar, large amplitude, CFL 0.5"));

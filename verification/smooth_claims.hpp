@@ -60,7 +60,7 @@ inline DomainClaim convergence_claim(const Runs& runs, const std::vector<Case>& 
     const auto first = std::find(v.cells.begin(), v.cells.end(), from) - v.cells.begin();
     const bool falls = v.values.back() <= fall * v.values[first] && s.values.back() <= fall * s.values[first];
     add_orders(claim, where(p) + ": v " + vo.text() + ", σ " + so.text() + stopped_text(v), vo.order,
-               orders_against({vo, so}, 0.5), v.stopped.empty() && falls);
+               orders_against({vo, so}, 0.5), v.stopped.empty() && falls, !v.stopped.empty());
   }
   return claim;
 }

@@ -86,7 +86,7 @@ inline std::vector<DomainClaim> manufactured_claims(const Runs& runs) {
     const OrderFit fit = fit_order(v.cells, v.values, 12);
     add_orders(converges, where(p) + ": " + error_text(v.values.front(), "%.2g") + " -> " + error_text(v.values.back(), "%.2g") +
                    ", order " + fit.text() + stopped_text(v),
-               fit.order, orders_against({fit}, 0.5), v.stopped.empty());
+               fit.order, orders_against({fit}, 0.5), v.stopped.empty(), !v.stopped.empty());
   }
   list.push_back(converges);
   list.push_back(finish_claim(runs, cases_of(runs, Group::manufactured, true, true, true, false), "2D manufactured, large amplitude"));

@@ -65,9 +65,14 @@ inline int orders_against(std::initializer_list<OrderFit> fits, double threshold
   return side;
 }
 
-/// Adds a sample of an order claim: holds where `other` holds and the orders resolve their threshold from above, fails
+/// Adds a sample of an order claim: stopped where a run of the series stopped (the one rule: its own outcome; a hard
+/// claim counts it as failing), holds where `other` holds and the orders resolve their threshold from above, fails
 /// where `other` fails or an order lies below it, undecided (orders within 2 s.e. of it) otherwise.
-inline void add_orders(DomainClaim& claim, const std::string& where, double value, int side, bool other) {
+inline void add_orders(DomainClaim& claim, const std::string& where, double value, int side, bool other, bool stopped) {
+  if (stopped) {
+    claim.add_stopped(where);
+    return;
+  }
   if (other && side == 0)
     claim.add_undecided(where + " — an order within 2 s.e. of the threshold", value);
   else

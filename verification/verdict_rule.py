@@ -1,7 +1,7 @@
 """The one verdict rule of the report, for the scripts that judge (hydrostatic_column.py, authors_code.py).
 
 The same rule as the C++ suites' and `mpm study`'s (mpm/analysis/verdict.hpp), tested on the same constructed cases
-(tests/data/verdict_rule_cases.csv, by tests/verdict_rule.sh). A compared number carries the half-width of the band
+(tests/data/verdict_rule_cases.csv, by tests/verdict_rule.py). A compared number carries the half-width of the band
 its own measurement resolves and its run's ending: "done", "failed" (it ran to its end, but scored no better than a
 flat line) or "stopped". For the claim "a lies below (or above) b":
 1. stopped when a run of either number stopped, or both runs failed (or a value is not a number);
