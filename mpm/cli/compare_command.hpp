@@ -119,6 +119,9 @@ struct ColumnScore {
   /// ending it gives the column by the report's rule (mpm::score_ending): failed when rms is no smaller, else done.
   double flat_rms = 0.0;
   Ending ending = Ending::done;
+  /// The ringing on the even and on the odd rows alone: the band of the ringing's own sampling, as rms_even and
+  /// rms_odd are the RMS's (NaN where a half has fewer than two rows or its exact history does not vary)
+  double ringing_even = std::nan(""), ringing_odd = std::nan("");
 };
 
 /// Every other value of `values`, from row `first` (0: the even rows, 1: the odd ones).
@@ -159,6 +162,8 @@ inline ColumnScore score_column(const std::vector<double>& times, const std::vec
   score.amplitude_odd = amplitude_ratio(every_other(computed, 1), every_other(exact, 1));
   score.flat_rms = flat_line_score(exact);
   score.ending = score_ending(score.rms, score.flat_rms);
+  score.ringing_even = ringing_of(every_other(computed, 0), every_other(exact, 0));
+  score.ringing_odd = ringing_of(every_other(computed, 1), every_other(exact, 1));
   for (std::size_t n = 0; n < computed.size(); ++n)
     if (std::abs(computed[n] - exact[n]) > score.max_abs) {
       score.max_abs = std::abs(computed[n] - exact[n]);
@@ -288,10 +293,11 @@ inline std::vector<std::pair<std::string, std::string>> checked_columns(const Co
 }
 
 /// The header of compare's output: the first ten columns as the first step of issue 46 printed them, the damping
-/// measure, a flat line's score and the ending appended after them (a reader by position keeps working).
+/// measure, a flat line's score, the ending and the ringing's halves appended after them (a reader by position keeps
+/// working).
 inline constexpr const char* compare_header =
     "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing,amplitude,amplitude_even,"
-    "amplitude_odd,flat_rms,ending";
+    "amplitude_odd,flat_rms,ending,ringing_even,ringing_odd";
 
 /// Scores the CSV of `request` against the exact solution of `options`' scene at its point, prints the scores and
 /// draws --plot; returns the exit code (1 above the tolerance). \throws Refused, SceneError, OutputFailure.
@@ -333,7 +339,8 @@ inline int compare(const ExactOptions& options, const CompareRequest& request, s
     text << score.column << "," << score.quantity << "," << score.samples << "," << score.rms << ","
          << score.rms_normalised << "," << score.max_abs << "," << score.t_of_max << "," << score.rms_even << ","
          << score.rms_odd << "," << score.ringing << "," << score.amplitude << "," << score.amplitude_even << ","
-         << score.amplitude_odd << "," << score.flat_rms << "," << ending_label(score.ending) << "\n";
+         << score.amplitude_odd << "," << score.flat_rms << "," << ending_label(score.ending) << "," << score.ringing_even << ","
+         << score.ringing_odd << "\n";
     if (request.tolerance && !(score.rms_normalised <= *request.tolerance)) above << " " << score.column;
   }
   out << text.str() << std::flush;
@@ -356,7 +363,7 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "Scores any CSV with a header line (another code's output) against the scene's exact solution (as mpm exact\n"
       "evaluates it) at the material point --at and at the CSV's own sample times, and prints CSV:\n"
       "  column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing,\n"
-      "  amplitude,amplitude_even,amplitude_odd,flat_rms,ending\n"
+      "  amplitude,amplitude_even,amplitude_odd,flat_rms,ending,ringing_even,ringing_odd\n"
       "rms: Eq. (43), sqrt(sum (c_n - e_n)^2 / N) over the N rows, in the quantity's unit; rms_normalised: rms\n"
       "divided by the solution's scale of the quantity: velocity V* (the largest |v_0| or |sigma_0|/Z of the initial\n"
       "data: v0 for the Dyka bar, so the paper's RMS/v0), stress Z V*, displacement V* L/c (dyka_bar); rho g H,\n"
@@ -373,7 +380,8 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "even and the odd rows, nan where the exact history does not vary there; ringing above 1 with amplitude near 1\n"
       "is oscillation, both below 1 damping. flat_rms: what a flat line at the exact mean scores (the quantity's\n"
       "unit); ending: failed when rms >= flat_rms (no approximation at all: a report's comparison of two failed\n"
-      "runs is not decided), else done.");
+      "runs is not decided), else done. ringing_even, ringing_odd: the ringing on the even and on the odd rows\n"
+      "alone, the band of the ringing's sampling.");
   app.add_option("RESULT.csv", request.result_path, "the CSV to score")->required();
   app.add_option("SCENE.toml", options.scene_path, "the scene file whose exact solution scores it")->required();
   declare_exact_options(app, options);
@@ -427,6 +435,9 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   // adds 2 x 1 to the exact TV of 9: 11 / 9; a constant exact history: nan.
   CHECK(score.ringing == doctest::Approx(1.0).epsilon(1e-14));
   CHECK(score_column(times, {1.0, -3.0, 0.5, 4.0}, exact, 1.0).ringing == doctest::Approx(11.0 / 9.0).epsilon(1e-14));
+  // its halves: even rows {1, 0.5} against {1, 0.5} follow (1); odd rows {-3, 4} against {-2, 4}: 7 / 6
+  CHECK(score_column(times, {1.0, -3.0, 0.5, 4.0}, exact, 1.0).ringing_even == doctest::Approx(1.0).epsilon(1e-14));
+  CHECK(score_column(times, {1.0, -3.0, 0.5, 4.0}, exact, 1.0).ringing_odd == doctest::Approx(7.0 / 6.0).epsilon(1e-14));
   CHECK(std::isnan(score_column(times, {1.0, 2.0, 1.0, 2.0}, {1.0, 1.0, 1.0, 1.0}, 1.0).ringing));
   CHECK(std::isnan(score_column(times, {1.0, 2.0, 1.0, 2.0}, {1.0, 1.0 + 4e-16, 1.0, 1.0}, 1.0).ringing));  // round-off
   const ColumnScore one = score_column({0.5}, {2.0}, {1.5}, 1.0);  // one row: no odd row, no variation
