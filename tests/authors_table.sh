@@ -42,13 +42,14 @@ run() {  # run OUT SHAPE INTEGRATOR CELLS MARGIN: the shipped Dyka scene without
 score() {  # score CSV CELLS: rms_normalised of mpm compare at X = h/2 over every row (the scene's end at the last)
   scores "$1" "$2" | cut -d, -f1
 }
-scores() {  # scores CSV CELLS: rms_normalised, and the same on the even and on the odd rows alone (by column name)
+scores() {  # scores CSV CELLS: rms_normalised, the same on the even and on the odd rows alone, the ending (by name)
   local last
   last=$(tail -n 1 "$1" | cut -d, -f1)
   "$mpm" compare "$1" "$root/scenes/dyka_bar.toml" --at "$(python3 -c "print(0.1333 / $2 / 2)")" \
     --column A.v_x=v_x --set "solver.end_time=$last" |
     awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k }
-             NR == 2 { s = $c["rms_normalised"] / $c["rms"]; printf "%s,%.9g,%.9g\n", $c["rms_normalised"], s * $c["rms_even"], s * $c["rms_odd"] }'
+             NR == 2 { s = $c["rms_normalised"] / $c["rms"]
+                       printf "%s,%.9g,%.9g,%s\n", $c["rms_normalised"], s * $c["rms_even"], s * $c["rms_odd"], $c["ending"] }'
 }
 largest_difference() {  # largest_difference OURS THEIRS: max |v_ours - v_theirs| / v0, ours interpolated at theirs
   python3 -c "import sys; print('%.3g' % float(sys.argv[1]))" "$(python3 "$root/tests/largest_velocity_difference.py" "$1" "$2")"
@@ -70,7 +71,7 @@ near() {  # near GOT WANT RELATIVE
 }
 table=$work/table.csv
 header=shape,integrator,cells,their_grid,ours_rms_over_v0,theirs_rms_over_v0,rms_gap_percent
-echo "$header,ours_on_their_grid_rms_over_v0,max_dv_over_v0,ours_even,ours_odd,theirs_even,theirs_odd,rms_gap_band_percent" >"$table"
+echo "$header,ours_on_their_grid_rms_over_v0,max_dv_over_v0,ours_even,ours_odd,theirs_even,theirs_odd,rms_gap_band_percent,ours_ending,theirs_ending" >"$table"
 for case in "${cases[@]}"; do
   read -r shape integrator stem cells grid margin <<<"$case"
   if [[ $max_cells -gt 0 && $cells -gt $max_cells ]]; then echo "$stem: left out (more than $max_cells cells)"; continue; fi
@@ -80,15 +81,15 @@ for case in "${cases[@]}"; do
     matched=$work/matched_$stem
     run "$matched" "$shape" "$integrator" "$cells" "$margin" || fail "$stem: our run on their grid failed"
   fi
-  IFS=, read -r ours ours_even ours_odd < <(scores "$work/ours_$stem/observers.csv" "$cells")
-  IFS=, read -r theirs theirs_even theirs_odd < <(scores "$theirs_file" "$cells")
+  IFS=, read -r ours ours_even ours_odd ours_ending < <(scores "$work/ours_$stem/observers.csv" "$cells")
+  IFS=, read -r theirs theirs_even theirs_odd theirs_ending < <(scores "$theirs_file" "$cells")
   matched_rms=$(score "$matched/observers.csv" "$cells")
   dv=$(largest_difference "$matched/observers.csv" "$theirs_file")
   gap=$(python3 -c "print('%.2f' % (100 * abs($theirs / $ours - 1)))")
   # the gap's band (the report's rule 1): the gap on the even and on the odd rows alone, its larger move from the whole
   gap_band=$(python3 -c "g = lambda t, o: 100 * abs(t / o - 1); w = g($theirs, $ours)
 print('%.2g' % max(abs(g($theirs_even, $ours_even) - w), abs(g($theirs_odd, $ours_odd) - w)))")
-  echo "$shape,$integrator,$cells,$grid,$ours,$theirs,$gap,$matched_rms,$dv,$ours_even,$ours_odd,$theirs_even,$theirs_odd,$gap_band" >>"$table"
+  echo "$shape,$integrator,$cells,$grid,$ours,$theirs,$gap,$matched_rms,$dv,$ours_even,$ours_odd,$theirs_even,$theirs_odd,$gap_band,$ours_ending,$theirs_ending" >>"$table"
   echo "$stem: RMS/v0 ours $ours, theirs $theirs ($gap %); ours on their grid $matched_rms, max |dv|/v0 $dv"
   row=$(their_row "$stem")
   near "$theirs" "$row" 5e-6 || fail "$stem: their RMS/v0 $theirs, other_codes.csv says $row"

@@ -3,7 +3,9 @@
 # root of a copy of the tree (a scratch folder, as tests/mutants/run.py copies it): the first block's `make lab`
 # builds the copy's build-lab/bin/mpm, the blocks of exercises 6 and 7 edit the copy's kernels and rebuild it with
 # `make lab`, and every exercise's answer is checked against what its block prints and writes. Each exercise's block
-# must end within the minute the page promises. Exercise 1 also checks every particle number of
+# must end within the minute the page promises on 2 cores, checked as its CPU time (its processes' user + system
+# seconds) within 2 minutes: CPU time does not grow when other work shares the machine, a wall time does (a CI run
+# beside a build took 64 s of wall for exercise 7, which takes about 21 s alone). Exercise 1 also checks every particle number of
 # paper/12_worked_example.md's tables (the `<!-- worked INTEGRATOR STEP particle P QUANTITY -->` markers of the
 # particle update) against the snapshot one step of the run writes.
 #   lab.sh MPM      MPM: the CLI of the build that runs the test (CMake passes it)
@@ -38,14 +40,20 @@ for block in 0 1 2 3 4 5 6 7; do
     continue
   fi
   start=$(date +%s.%N)
+  times >"$work/times_before"  # in this shell (not a subshell): its children's user and system time so far, last line
   (cd "$tree" && bash "$work/block$block.sh" >"$work/out$block" 2>"$work/err$block") ||
     fail "lab block $block: $(tail -20 "$work/err$block")"
+  times >"$work/times_after"
+  cpu_before=$(tail -1 "$work/times_before") cpu_after=$(tail -1 "$work/times_after")
   seconds=$(awk -v start="$start" -v now="$(date +%s.%N)" 'BEGIN { printf "%.1f", now - start }')
-  echo "lab block $block: $seconds s"
+  cpu=$(awk -v a="$cpu_before" -v b="$cpu_after" 'function s(t,  f, n, k, total) { n = split(t, f, " ")
+      for (k = 1; k <= n; k++) { sub(/s$/, "", f[k]); split(f[k], m, "m"); total += 60 * m[1] + m[2] }; return total }
+    BEGIN { printf "%.1f", s(b) - s(a) }')
+  echo "lab block $block: $seconds s wall, $cpu s CPU"
   if [[ $block == 0 ]]; then
     [[ -x $tree/build-lab/bin/mpm ]] || { fail "make lab built no build-lab/bin/mpm: $(grep -m3 -E "error|Error" "$work/err0")"; exit 1; }
-  elif [[ $rebuilds == 1 ]] && awk -v s="$seconds" 'BEGIN { exit !(s > 60) }'; then
-    fail "exercise $block took $seconds s on the lab build, over the minute the page promises"
+  elif [[ $rebuilds == 1 ]] && awk -v s="$cpu" 'BEGIN { exit !(s > 120) }'; then
+    fail "exercise $block took $cpu s of CPU ($seconds s wall) on the lab build, over the minute on 2 cores the page promises"
   fi
   ran+=("$block")
 done

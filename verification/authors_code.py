@@ -31,7 +31,9 @@ def main():
     # than half the table's last printed digit of the gap.
     printed = lambda r: 0.5 * 10.0 ** -(len(r["rms_gap_percent"].split(".")[1]) if "." in r["rms_gap_percent"] else 0)
     band = lambda r: max(float(r.get("rms_gap_band_percent") or 0.0), printed(r))
-    outcome = lambda r: verdict_rule.judge(abs(float(r["rms_gap_percent"])), band(r), "done", "below", 1.0)
+    # the gap's ending: two failed histories (each no better than a flat line, mpm compare's ending) are not compared
+    ending = lambda r: "stopped" if (r.get("ours_ending"), r.get("theirs_ending")) == ("failed", "failed") else "done"
+    outcome = lambda r: verdict_rule.judge(abs(float(r["rms_gap_percent"])), band(r), ending(r), "below", 1.0)
     within = [r for r in rows if outcome(r) == "holds"]
     beyond = [r for r in rows if outcome(r) == "fails"]
     undecided = [r for r in rows if outcome(r) == "undecided"]
