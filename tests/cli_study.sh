@@ -89,15 +89,12 @@ grep -q '^usl,rms_at_t,,,,0,0 finite points; a fit needs 3 at least,,0$' "$fits"
 "$mpm" study "$work/tiny.toml" --out "$work/out" --jobs 1 >/dev/null 2>&1 || fail "a second study into the same folder"
 [[ $(wc -l <"$csv") -eq 7 ]] || fail "second study.csv: $(wc -l <"$csv") lines"
 
+# dyka_study FILE END_TIME AXIS: a study of the Dyka bar to END_TIME without snapshots along the one axis AXIS
+dyka_study() {
+  printf 'scene = "%s"\n[set]\nsolver.end_time = %s\noutput.snapshots = []\n[axes]\n%s\n' "$scenes/dyka_bar.toml" "$2" "$3" >"$1"
+}
 # A case stopped by energy growth (forward Euler beyond its CFL limit 2): its own outcome with why, no score
-cat >"$work/unstable.toml" <<TOML
-scene = "$scenes/dyka_bar.toml"
-[set]
-solver.end_time = 2.0e-5
-output.snapshots = []
-[axes]
-solver.cfl = [2.5]
-TOML
+dyka_study "$work/unstable.toml" 2.0e-5 "solver.cfl = [2.5]"
 "$mpm" study "$work/unstable.toml" --out "$work/unstable" >/dev/null 2>"$work/stderr" || fail "unstable study: $(cat "$work/stderr")"
 row=$(sed -n 2p "$work/unstable/study.csv")
 [[ $row == 0,2.5,stopped,,,[0-9]*,unstable:\ energy\ grew\ to* ]] || fail "a stopped case: $row"
@@ -107,14 +104,7 @@ row=$(sed -n 2p "$work/unstable/study.csv")
 # the exact velocity there is v0 at every sample, a flat line at its mean scores 0, and the failed-score rule does not
 # apply (mpm::score_ending: the flat line is the exact history itself): every case done, its RMS a point of the fit
 # (the rule's failed branch in a fit: the doctests of mpm/study/fits.hpp).
-cat >"$work/early.toml" <<TOML
-scene = "$scenes/dyka_bar.toml"
-[set]
-solver.end_time = 2.0e-6
-output.snapshots = []
-[axes]
-grid.cells = [[10], [20], [40]]
-TOML
+dyka_study "$work/early.toml" 2.0e-6 "grid.cells = [[10], [20], [40]]"
 "$mpm" study "$work/early.toml" --out "$work/early" --jobs 2 >"$work/stdout" 2>"$work/stderr" || fail "early study: $(cat "$work/stderr")"
 for row in 1 2 3; do
   [[ $(field "$work/early/study.csv" $row status),$(field "$work/early/study.csv" $row ending_at_t) == done,done ]] ||

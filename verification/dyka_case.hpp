@@ -113,11 +113,9 @@ inline void plateau_deviations(DykaResult& result, double speed) {
 /// The scores of RMS, ringing and the plateau deviations on the rows n with n % 2 == parity alone.
 inline DykaResult::Scores half_scores(const DykaResult& whole, int parity, double speed) {
   DykaResult half;
-  for (size_t n = parity; n < whole.time.size(); n += 2) {
-    half.time.push_back(whole.time[n]);
-    half.velocity.push_back(whole.velocity[n]);
-    half.exact.push_back(whole.exact[n]);
-  }
+  half.time = mpm::every_other(whole.time, parity);
+  half.velocity = mpm::every_other(whole.velocity, parity);
+  half.exact = mpm::every_other(whole.exact, parity);
   if (half.time.size() < 2) return {};
   plateau_deviations(half, speed);
   return {mpm::rms_error(half.velocity, half.exact), mpm::total_variation_ratio(half.velocity, half.exact), half.overshoot,

@@ -81,8 +81,6 @@ struct ProfileScores {
 /// `measure` on every value, on the even-indexed and on the odd-indexed ones.
 template <class Measure>
 ProfileScore score_halves(const std::vector<double>& computed, const std::vector<double>& exact, Measure measure) {
-  std::vector<double> half[2], half_exact[2];
-  for (std::size_t p = 0; p < computed.size(); ++p) half[p % 2].push_back(computed[p]), half_exact[p % 2].push_back(exact[p]);
   auto value = [&](const std::vector<double>& a, const std::vector<double>& b) {
     try {
       return a.size() >= 2 ? measure(a, b) : std::nan("");
@@ -90,7 +88,8 @@ ProfileScore score_halves(const std::vector<double>& computed, const std::vector
       return std::nan("");
     }
   };
-  return {value(computed, exact), value(half[0], half_exact[0]), value(half[1], half_exact[1])};
+  return {value(computed, exact), value(mpm::every_other(computed, 0), mpm::every_other(exact, 0)),
+          value(mpm::every_other(computed, 1), mpm::every_other(exact, 1))};
 }
 
 inline ProfileScores score_profile(const std::vector<double>& computed, const std::vector<double>& exact) {

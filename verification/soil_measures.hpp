@@ -92,9 +92,10 @@ inline SettlementMeasures measure_settlement(const SoilResult& result) {
   m.final_error = m.final_displacement - m.exact_final;
   m.rms_error = mpm::rms_error(result.displacement, m.exact);
   if (result.time.size() >= 2) {
-    std::vector<double> half[2], half_exact[2];
-    for (size_t n = 0; n < result.time.size(); ++n) half[n % 2].push_back(result.displacement[n]), half_exact[n % 2].push_back(m.exact[n]);
-    m.rms_band = mpm::band_of_halves(m.rms_error, mpm::rms_error(half[0], half_exact[0]), mpm::rms_error(half[1], half_exact[1]));
+    auto half = [&](std::size_t first) {
+      return mpm::rms_error(mpm::every_other(result.displacement, first), mpm::every_other(m.exact, first));
+    };
+    m.rms_band = mpm::band_of_halves(m.rms_error, half(0), half(1));
   }
   m.static_small_strain = column.static_displacement(result.reference_height);
   m.static_log_strain = log_strain_column(result.scene).displacement(result.reference_height);

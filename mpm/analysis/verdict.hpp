@@ -89,6 +89,14 @@ inline double band_of_halves(double whole, double even, double odd) {
   return std::max(std::abs(even - whole), std::abs(odd - whole));
 }
 
+/// Every other value of `values`, from index `first` (0: the even rows or particles, 1: the odd ones): the halves a
+/// score is taken on again for its band.
+inline std::vector<double> every_other(const std::vector<double>& values, std::size_t first) {
+  std::vector<double> some;
+  for (std::size_t n = first; n < values.size(); n += 2) some.push_back(values[n]);
+  return some;
+}
+
 /// A run's score fails when it is no smaller than a flat line's: the RMS about the exact history's mean,
 /// \f$ \sqrt{\tfrac1N \sum_n (\hat v_n - \bar{\hat v})^2} \f$, what predicting the mean at every sample scores.
 inline double flat_line_score(const std::vector<double>& exact) {
@@ -132,6 +140,8 @@ TEST_CASE("verdict rule: a ratio's band and ending, a band from halves, a flat l
   CHECK(judge(ratio({2.0, 0.0, Ending::failed}, {4.0, 0.0, Ending::failed}), Side::below, threshold(1.0)) == Outcome::stopped);
   CHECK(ratio({2.0, 0.0, Ending::done}, {4.0, 0.0, Ending::stopped}).ending == Ending::stopped);
   CHECK(band_of_halves(1.0, 1.1, 0.95) == doctest::Approx(0.1));
+  CHECK(every_other({1.0, 2.0, 3.0, 4.0, 5.0}, 0) == std::vector<double>{1.0, 3.0, 5.0});
+  CHECK(every_other({1.0, 2.0, 3.0, 4.0, 5.0}, 1) == std::vector<double>{2.0, 4.0});
   CHECK(flat_line_score({0.0, 1.0, 0.0, 1.0}) == doctest::Approx(0.5));  // a square wave of height 1
   CHECK(score_ending(0.5, 0.5) == Ending::failed);
   CHECK(score_ending(0.49, 0.5) == Ending::done);

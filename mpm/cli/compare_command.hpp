@@ -124,13 +124,6 @@ struct ColumnScore {
   double ringing_even = std::nan(""), ringing_odd = std::nan("");
 };
 
-/// Every other value of `values`, from row `first` (0: the even rows, 1: the odd ones).
-inline std::vector<double> every_other(const std::vector<double>& values, std::size_t first) {
-  std::vector<double> some;
-  for (std::size_t n = first; n < values.size(); n += 2) some.push_back(values[n]);
-  return some;
-}
-
 /// Eq. (43) over every other row of `computed` and `exact`, from row `first` (0: the even rows, 1: the odd ones); NaN
 /// when there is no row there (one row: no odd row).
 inline double rms_of_every_other(const std::vector<double>& computed, const std::vector<double>& exact, std::size_t first) {
@@ -292,7 +285,7 @@ inline std::vector<std::pair<std::string, std::string>> checked_columns(const Co
   return columns;
 }
 
-/// The header of compare's output: the first ten columns as the first step of issue 46 printed them, the damping
+/// The header of compare's output: the first ten columns as they were first printed, the damping
 /// measure, a flat line's score, the ending and the ringing's halves appended after them (a reader by position keeps
 /// working).
 inline constexpr const char* compare_header =
