@@ -46,3 +46,14 @@ TEST_CASE("Eq. (42): Dyka subset: the stability limits of linear shape functions
   CHECK_FALSE(dyka("linear", "npc", 40, 1.35).failed);
   CHECK(dyka("linear", "npc", 40, 1.5).failed);
 }
+
+TEST_CASE("mpm compare's plateau deficit (mpm::plateau_deviations) is the Dyka suite's on the suite's own histories") {
+  for (const std::string integrator : {"fe", "npc"}) {
+    const auto run = dyka("linear", integrator, 40);
+    const mpm::PlateauDeviations generic = mpm::plateau_deviations(run.time, run.velocity, run.exact);
+    INFO(integrator, ": suite overshoot ", run.overshoot, " deficit ", run.undershoot, "; generic ", generic.overshoot, " ", generic.deficit);
+    CHECK(generic.deficit == doctest::Approx(run.undershoot).epsilon(1e-12));
+    CHECK(generic.overshoot == doctest::Approx(run.overshoot).epsilon(1e-12));
+    CHECK(run.undershoot > 0.01);  // both integrators lose some of the plateau: a test that can fail
+  }
+}

@@ -99,11 +99,7 @@ inline std::vector<DomainClaim> fig6_claims(const Runs& runs, const Scope& scope
       const OrderFit fit = fit_runs(runs, negligible, shape, integrator);
       const auto &r40 = runs.at(sweep_name(shape, integrator, 40)), &r160 = runs.at(sweep_name(shape, integrator, 160));
       const std::string where = shape_label(shape) + " " + integrator;
-      if (fit.fitted())
-        order.add(where + ": order " + order_text(fit), fit.order,
-                  mpm::judge({fit.order, 2.0 * fit.standard_error, mpm::Ending::done}, mpm::Side::above, mpm::threshold(0.0)));
-      else
-        order.add_stopped(where + ": no fit (" + order_text(fit) + ")");
+      add_order(order, where, fit, 0.0);
       add_pair(falls, where, ": RMS/v0 " + rms_text(r40.rms / speed_v0) + " -> " + rms_text(r160.rms / speed_v0), r160, "160",
                rms_measured(r160), r40, "40", rms_measured(r40), mpm::Side::below);
     }

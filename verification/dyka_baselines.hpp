@@ -196,12 +196,18 @@ inline std::vector<DomainClaim> baseline_claims(const Runs& runs) {
 
 /// The free end: the Dyka bar's own linearised step (40 cells, forward Euler) at rest and with every particle moved
 /// outward by 1e-6 h (mpm::moved_body_cfl_limit), per stress update; and the runs of the stability map on either side.
-inline DomainClaim free_end_claim(const Runs& runs) {
-  DomainClaim claim{"The quadratic B-spline with USL stops on the free bar at CFL numbers its held bar's step calls stable because of the free end: "
-                    "moved outward by 1e-6 h, the end particle brings the node 1.5 h beyond it into its support with a vanishing mass, and the "
-                    "step's limit on the Dyka bar falls by over 10 %; USF, MUSL, linear USL and the cubic B-spline keep theirs within 0.5 %; "
-                    "the run at v0/100 finishes at 0.98 times that lower limit and stops at 1.02 times it (40 cells; data/dyka_free_end.csv)",
-                    "limit moved / at rest (where: at rest -> moved; the runs)", {}, false};
+/// Three criteria, three rows: the quadratic B-spline with USL loses over 10 % of its limit, the others keep theirs,
+/// and the runs either side of the lower limit finish and stop.
+inline std::vector<DomainClaim> free_end_claims(const Runs& runs) {
+  const std::string why = "The quadratic B-spline with USL stops on the free bar at CFL numbers its held bar's step calls stable because of "
+                          "the free end (40 cells; data/dyka_free_end.csv): ";
+  DomainClaim falls{why + "moved outward by 1e-6 h, the end particle brings the node 1.5 h beyond it into its support with a vanishing mass, "
+                          "and the step's limit falls by over 10 %",
+                    "limit moved / at rest < 0.9 (where: at rest -> moved)", {}, false};
+  DomainClaim keep{why + "USF, MUSL, linear USL and the cubic B-spline keep their limit within 0.5 % when moved so",
+                   "|limit moved / at rest - 1| < 0.005 (where: at rest -> moved)", {}, false};
+  DomainClaim runs_either_side{why + "the run at v0/100 finishes at 0.98 times the lower limit and stops at 1.02 times it",
+                               "the run's ending as stated (value: the CFL over the lower limit)", {}, false};
   std::ofstream out(runs.folder + "/dyka_free_end.csv");
   out << std::setprecision(8) << "method,cfl_limit_at_rest,cfl_limit_moved\n";
   for (const std::string method : {"linear_usl", "bspline2_usf", "bspline2_usl", "bspline2_musl", "bspline3_usl"}) {
@@ -211,24 +217,26 @@ inline DomainClaim free_end_claim(const Runs& runs) {
     const mpm::io::Scene bar = mpm::load_scene(runs.scene, settings);
     const double rest = mpm::moved_body_cfl_limit<1>(bar, 0.0), moved = mpm::moved_body_cfl_limit<1>(bar, -1e-6);
     out << method << "," << rest << "," << moved << "\n";
-    std::string where = method + " " + text(rest, "%.4g") + " -> " + text(moved, "%.4g");
-    bool holds = method == "bspline2_usl" ? moved < 0.9 * rest : std::abs(moved / rest - 1.0) < 5e-3;
-    if (method == "bspline2_usl")
-      for (const double factor : {0.98, 1.02}) {
-        const auto run = run_dyka(runs.scene, "dyka_free_end", with(settings, {"solver.end_time=2e-2", "solver.energy_growth_limit=100",
-            "initial_velocity[0].velocity=[-0.05]", "solver.cfl=" + text(factor * moved, "%.17g"), "output.every=100000", "output.snapshots=[]"}));
-        where += "; its run at " + text(factor) + " x " + text(moved, "%.4g") + (run.failed ? " stops" : " finishes");
-        holds = holds && run.failed == (factor > 1.0);
-      }
-    claim.add(where, moved / rest, holds);
+    const std::string where = method + " " + text(rest, "%.4g") + " -> " + text(moved, "%.4g");
+    if (method != "bspline2_usl") {
+      keep.add(where, moved / rest, std::abs(moved / rest - 1.0) < 5e-3);
+      continue;
+    }
+    falls.add(where, moved / rest, moved < 0.9 * rest);
+    for (const double factor : {0.98, 1.02}) {
+      const auto run = run_dyka(runs.scene, "dyka_free_end", with(settings, {"solver.end_time=2e-2", "solver.energy_growth_limit=100",
+          "initial_velocity[0].velocity=[-0.05]", "solver.cfl=" + text(factor * moved, "%.17g"), "output.every=100000", "output.snapshots=[]"}));
+      runs_either_side.add(method + " at " + text(factor) + " x " + text(moved, "%.4g") + (run.failed ? ": stops" : ": finishes"), factor,
+                           run.failed == (factor > 1.0));
+    }
   }
-  return claim;
+  return {falls, keep, runs_either_side};
 }
 
 inline Section baselines_section(const Runs& runs, const std::vector<FrontEntry>& entries) {
   Section section{"Today's baselines: B-splines, USL and MUSL, LME at small gamma (data/dyka_baselines.csv)", "", front_claims(runs, entries)};
   for (auto& claim : baseline_claims(runs)) section.claims.push_back(claim);
-  section.claims.push_back(free_end_claim(runs));
+  for (auto& claim : free_end_claims(runs)) section.claims.push_back(claim);
   return section;
 }
 

@@ -31,6 +31,9 @@ struct DykaResult {
   double final_energy_ratio = 0.0;  ///< kinetic + strain energy at the end over its initial value
   double smallest_energy_ratio = 0.0, largest_energy_ratio = 0.0;  ///< its least and greatest value over the run
   double largest_energy_step_increase = 0.0;  ///< the largest rise of that ratio in one step (negative: it fell in every step)
+  /// the bands of the sampled energy ratios, what each moves by when its sample lands a step earlier or later: the
+  /// larger change of the ratio over the steps beside the least and beside the greatest value, and over the last step
+  double smallest_energy_band = 0.0, largest_energy_band = 0.0, last_energy_step_change = 0.0;
   double largest_speed = 0.0;  ///< max |v_A|, m/s
   double wall_seconds = 0.0;
   double cpu_seconds = 0.0;    ///< CPU time of the thread that ran it (the runs are one thread each)
@@ -190,6 +193,13 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
     result.largest_energy_step_increase = -1e300;
     for (size_t n = 1; n < recorder.energy.size(); ++n)
       result.largest_energy_step_increase = std::max(result.largest_energy_step_increase, (recorder.energy[n] - recorder.energy[n - 1]) / initial);
+    const std::vector<double>& e = recorder.energy;
+    auto beside = [&e, initial](std::size_t k) {  // the larger change over the steps into and out of sample k
+      return std::max(k > 0 ? std::abs(e[k] - e[k - 1]) : 0.0, k + 1 < e.size() ? std::abs(e[k + 1] - e[k]) : 0.0) / initial;
+    };
+    result.smallest_energy_band = beside(std::min_element(e.begin(), e.end()) - e.begin());
+    result.largest_energy_band = beside(std::max_element(e.begin(), e.end()) - e.begin());
+    if (recorder.energy.size() > 1) result.last_energy_step_change = std::abs(recorder.energy.back() - recorder.energy.end()[-2]) / initial;
   }
   return result;
 }

@@ -153,6 +153,16 @@ inline void add_single(DomainClaim& claim, const std::string& where, const std::
     claim.add(where + detail + " ± " + text(m.band, "%.2g"), m.value, outcome);
 }
 
+/// A sample of an order claim: the fitted order above `threshold` beyond 2 standard errors (the one rule), or stopped
+/// where there is no fit (fewer than 3 finished runs).
+inline void add_order(DomainClaim& claim, const std::string& where, const OrderFit& fit, double threshold) {
+  if (fit.fitted())
+    claim.add(where + ": order " + order_text(fit), fit.order,
+              mpm::judge({fit.order, 2.0 * fit.standard_error, mpm::Ending::done}, mpm::Side::above, mpm::threshold(threshold)));
+  else
+    claim.add_stopped(where + ": no fit (" + order_text(fit) + ")");
+}
+
 /// Fitted order of a run family over the meshes `cells` it ran (finished runs only), by `measure` (RMS/v0 by default).
 template <class Measure>
 OrderFit fit_runs(const Runs& runs, const std::vector<int>& cells, const std::string& shape, const std::string& integrator, Measure measure) {

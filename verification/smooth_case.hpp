@@ -30,6 +30,11 @@ struct SmoothResult {
   /// the bands of velocity_error and stress_error: their larger move when scored on the even or the odd particles
   /// alone (mpm::band_of_halves; the one rule of the report, mpm/analysis/verdict.hpp)
   double velocity_band = 0.0, stress_band = 0.0;
+  /// what a flat field scores on the velocity: the RMS of the exact velocity about its mean over the particles and the
+  /// sample times, / velocity scale (mpm::flat_line_score's rule); a run whose velocity_error is no smaller has failed
+  double velocity_flat = std::numeric_limits<double>::quiet_NaN();
+  /// how the run ended (mpm/analysis/verdict.hpp): stopped, failed (no better than a flat field), or done
+  mpm::Ending ending() const { return failed ? mpm::Ending::stopped : mpm::score_ending(velocity_error, velocity_flat); }
   double energy_ratio = std::numeric_limits<double>::quiet_NaN();    ///< (kinetic + strain) at the end / at t = 0
   double initial_mismatch = 0.0;  ///< largest |v_p(0) - exact v(X_p, 0)| / velocity scale: the scene's initial field checked
   double wall_seconds = 0.0;
@@ -47,9 +52,10 @@ inline const std::vector<double>& bar_sample_fractions() {
 }
 
 /// Accumulates the squared errors of every particle at every snapshot, and the energies. exact(particles, p,
-/// index, time, own_time) returns the squared velocity error, the squared stress error and the squared
-/// velocity error at own_time: time, plus half the next step for a staggered integrator (forward Euler), the
-/// step being the one the loop takes next, Eq. (42) from the particles as they are.
+/// index, time, own_time) returns the squared velocity error, the squared stress error, the squared
+/// velocity error at own_time (time, plus half the next step for a staggered integrator (forward Euler), the
+/// step being the one the loop takes next, Eq. (42) from the particles as they are), and the exact velocity (for the
+/// flat field's score).
 template <int Dim, class Exact>
 struct ErrorMonitor : mpm::Monitor<Dim> {
   explicit ErrorMonitor(Exact exact_solution) : exact(std::move(exact_solution)) {}
@@ -62,7 +68,8 @@ struct ErrorMonitor : mpm::Monitor<Dim> {
   void snapshot(int index, double time, const mpm::Particles<Dim>& particles) override {
     const double own_time = staggered ? time + 0.5 * mpm::courant_time_step(particles, young_modulus, cell_size, cfl) : time;
     for (int p = 0; p < particles.size(); ++p) {
-      const auto [velocity_error, stress_error, own_time_error] = exact(particles, p, index, time, own_time);
+      const auto [velocity_error, stress_error, own_time_error, exact_velocity] = exact(particles, p, index, time, own_time);
+      exact_sum += exact_velocity, exact_squares += exact_velocity.squaredNorm();
       velocity_squares += velocity_error;
       stress_squares += stress_error;
       own_time_squares += own_time_error;
@@ -74,6 +81,8 @@ struct ErrorMonitor : mpm::Monitor<Dim> {
   double velocity_squares = 0.0, stress_squares = 0.0, own_time_squares = 0.0, initial_energy = 0.0, final_energy = 0.0;
   double half_velocity_squares[2] = {0.0, 0.0}, half_stress_squares[2] = {0.0, 0.0};  ///< even and odd particles
   long count = 0, half_count[2] = {0, 0};
+  mpm::Vector<Dim> exact_sum = mpm::Vector<Dim>::Zero();  ///< the exact velocities summed, and their squares
+  double exact_squares = 0.0;
 };
 
 /// Runs a set-up scene with the monitor, fills the result; SimulationFailure is recorded, not thrown.
@@ -101,6 +110,8 @@ SmoothResult run_and_measure(const mpm::io::Scene& scene, const mpm::Setup<Dim>&
     result.stress_error = std::sqrt(monitor.stress_squares / monitor.count) / stress_scale;
     result.velocity_error_own_time = std::sqrt(monitor.own_time_squares / monitor.count) / velocity_scale;
     result.energy_ratio = monitor.final_energy / monitor.initial_energy;
+    const mpm::Vector<Dim> mean = monitor.exact_sum / double(monitor.count);
+    result.velocity_flat = std::sqrt(std::max(0.0, monitor.exact_squares / monitor.count - mean.squaredNorm())) / velocity_scale;
     if (monitor.half_count[0] > 0 && monitor.half_count[1] > 0) {
       auto half = [&](const double* squares, int k, double scale) { return std::sqrt(squares[k] / monitor.half_count[k]) / scale; };
       result.velocity_band = mpm::band_of_halves(result.velocity_error, half(monitor.half_velocity_squares, 0, velocity_scale),
@@ -190,7 +201,7 @@ inline SmoothResult run_bar(const BarScene& bar, const BarCase& c, const mpm::ex
     const double s = reference ? reference->stress(X, index) : mode.stress(X, time);
     const double dv = particles.velocity[p][0] - v, ds = particles.stress[p](0, 0) - s;
     const double dv_own = reference ? std::numeric_limits<double>::quiet_NaN() : particles.velocity[p][0] - mode.velocity(X, own_time);
-    return std::tuple<double, double, double>{dv * dv, ds * ds, dv_own * dv_own};
+    return std::tuple<double, double, double, mpm::Vector<1>>{dv * dv, ds * ds, dv_own * dv_own, mpm::Vector<1>(v)};
   };
   ErrorMonitor<1, decltype(exact)> monitor(exact);
   SmoothResult result = run_and_measure<1>(scene, setup, monitor, V, mode.impedance() * V);
@@ -256,7 +267,8 @@ inline SmoothResult run_manufactured(const std::string& scene_path, const Manufa
     const mpm::Matrix<2>& sigma = particles.stress[p];
     const double dv = (particles.velocity[p] - mpm::Vector<2>(v[0], v[1])).squaredNorm();
     const double ds = (sigma(0, 0) - s.xx) * (sigma(0, 0) - s.xx) + (sigma(1, 1) - s.yy) * (sigma(1, 1) - s.yy) + 2.0 * (sigma(0, 1) - s.xy) * (sigma(0, 1) - s.xy);
-    return std::tuple<double, double, double>{dv, ds, (particles.velocity[p] - mpm::Vector<2>(v_own[0], v_own[1])).squaredNorm()};
+    return std::tuple<double, double, double, mpm::Vector<2>>{dv, ds, (particles.velocity[p] - mpm::Vector<2>(v_own[0], v_own[1])).squaredNorm(),
+                                                              mpm::Vector<2>(v[0], v[1])};
   };
   ErrorMonitor<2, decltype(exact)> monitor(exact);
   return run_and_measure<2>(scene, setup, monitor, c.large ? large.velocity_scale() : small.velocity_scale(),

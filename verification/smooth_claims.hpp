@@ -24,6 +24,7 @@ struct SeriesData {
   std::vector<int> cells;
   std::vector<double> values;
   std::vector<int> stopped;  ///< the meshes whose run stopped
+  std::vector<int> failed;   ///< the meshes whose run finished no better than a flat field (SmoothResult::ending)
 };
 inline SeriesData series(const Runs& runs, Case pattern, double SmoothResult::*measure) {
   SeriesData data;
@@ -32,37 +33,84 @@ inline SeriesData series(const Runs& runs, Case pattern, double SmoothResult::*m
     const SmoothResult& r = runs.at(pattern);
     data.cells.push_back(n), data.values.push_back(r.failed ? std::nan("") : r.*measure);
     if (r.failed) data.stopped.push_back(n);
+    if (r.ending() == mpm::Ending::failed) data.failed.push_back(n);
   }
   return data;
 }
-inline OrderFit order(const Runs& runs, const Case& pattern, double SmoothResult::*measure, int from_cells) {
-  const SeriesData data = series(runs, pattern, measure);
-  return fit_order(data.cells, data.values, from_cells);
+/// The order of a series from `from_cells` up, its failed runs left out and counted (as `mpm study` leaves them out).
+inline OrderFit fit_series(const SeriesData& data, int from_cells) {
+  std::vector<int> cells;
+  std::vector<double> values;
+  int failed = 0;
+  for (std::size_t k = 0; k < data.cells.size(); ++k) {
+    const bool left_out = std::find(data.failed.begin(), data.failed.end(), data.cells[k]) != data.failed.end();
+    if (left_out) failed += data.cells[k] >= from_cells;
+    else cells.push_back(data.cells[k]), values.push_back(data.values[k]);
+  }
+  OrderFit fit = fit_order(cells, values, from_cells);
+  fit.failed = failed;
+  return fit;
 }
-/// " (stopped at 128, 256 cells)" or "".
+inline OrderFit order(const Runs& runs, const Case& pattern, double SmoothResult::*measure, int from_cells) {
+  return fit_series(series(runs, pattern, measure), from_cells);
+}
+/// " (stopped at 128, 256 cells)", " (failed at 64 cells)", both, or "".
 inline std::string stopped_text(const SeriesData& data) {
-  if (data.stopped.empty()) return "";
-  std::string text;
-  for (int n : data.stopped) text += (text.empty() ? "" : ", ") + std::to_string(n);
-  return " (stopped at " + text + " cells)";
+  auto list = [](const std::vector<int>& cells) {
+    std::string text;
+    for (int n : cells) text += (text.empty() ? "" : ", ") + std::to_string(n);
+    return text;
+  };
+  return (data.stopped.empty() ? std::string() : " (stopped at " + list(data.stopped) + " cells)") +
+         (data.failed.empty() ? std::string() : " (failed at " + list(data.failed) + " cells: no better than a flat field)");
 }
 
-/// A hard or soft bound: the series converges (velocity and stress orders >= 0.5 from `from` cells, no run stopped, both
-/// errors at the finest mesh <= `fall` x at `from` cells), evaluated on each of `patterns`. Value: the velocity order.
-inline DomainClaim convergence_claim(const Runs& runs, const std::vector<Case>& patterns, const std::string& statement, int from, double fall,
-                                     bool hard) {
-  DomainClaim claim{statement, "velocity and stress orders (± standard error) above 0.5 by 2 s.e. from " + std::to_string(from) +
-                                   " cells, errors at the finest mesh <= " + number(fall, "%g") + " x at " + std::to_string(from) + "; no run stopped",
-                    {}, hard};
-  for (const Case& p : patterns) {
-    const SeriesData v = series(runs, p, &SmoothResult::velocity_error), s = series(runs, p, &SmoothResult::stress_error);
-    const OrderFit vo = fit_order(v.cells, v.values, from), so = fit_order(s.cells, s.values, from);
-    const auto first = std::find(v.cells.begin(), v.cells.end(), from) - v.cells.begin();
-    const bool falls = v.values.back() <= fall * v.values[first] && s.values.back() <= fall * s.values[first];
-    add_orders(claim, where(p) + ": v " + vo.text() + ", σ " + so.text() + stopped_text(v), vo.order,
-               orders_against({vo, so}, 0.5), v.stopped.empty() && falls, !v.stopped.empty());
-  }
-  return claim;
+/// A run's error `measure` with its band (the stress's for the stress error, the velocity's for the others: the even and
+/// odd particles' RMS) and its ending (SmoothResult::ending: stopped, failed or done).
+inline mpm::Measured smooth_measured(const SmoothResult& r, double SmoothResult::*measure) {
+  if (r.failed || !std::isfinite(r.*measure)) return {std::nan(""), 0.0, mpm::Ending::stopped};
+  return {r.*measure, measure == &SmoothResult::stress_error ? r.stress_band : r.velocity_band, r.ending()};
+}
+
+/// A sample of an order claim: the series' fitted order of `measure` on `side` of `threshold` (OrderFit::against).
+inline void add_order(DomainClaim& claim, const std::string& where, const SeriesData& data, const OrderFit& fit, mpm::Side side,
+                      double threshold) {
+  claim.add(where + ": " + fit.text() + stopped_text(data), fit.order, fit.against(side, threshold));
+}
+
+/// A sample of a falling-error claim: the error at the series' finest mesh over its error at `from` cells at most
+/// `fall`, the ratio's band from the two runs' (the one rule: a stopped run, or two failed runs, make it stopped).
+inline void add_fall(DomainClaim& claim, const std::string& where, const Runs& runs, Case pattern, double SmoothResult::*measure, int from,
+                     double fall) {
+  const std::vector<int> meshes = runs.meshes(pattern);
+  Case fine = pattern, coarse = pattern;
+  fine.cells = meshes.back(), coarse.cells = from;
+  const mpm::Measured a = smooth_measured(runs.at(fine), measure), b = smooth_measured(runs.at(coarse), measure);
+  const mpm::Measured r = mpm::ratio(a, b);
+  const mpm::Outcome outcome = mpm::judge(r, mpm::Side::below, mpm::threshold(fall));
+  claim.add(where + ": " + (outcome == mpm::Outcome::stopped ? std::string("a run stopped, or both failed")
+                                                                : error_text(b.value, "%.2g") + " -> " + error_text(a.value, "%.2g") +
+                                                                      ", ratio ± " + number(r.band, "%.2g")),
+            r.value, outcome);
+}
+
+/// A hard or soft bound: the series converges, as two criteria, two rows: its velocity and stress orders lie above 0.5
+/// (from `from` cells, beyond 2 standard errors), and its velocity and stress errors at the finest mesh are at most
+/// `fall` times those at `from` cells (beyond the ratio's band); a sample per series and measure, on each of `patterns`.
+inline std::vector<DomainClaim> convergence_claims(const Runs& runs, const std::vector<Case>& patterns, const std::string& statement,
+                                                   int from, double fall, bool hard) {
+  const std::string start = std::to_string(from) + " cells";
+  DomainClaim orders{statement + ": the velocity and stress orders lie above 0.5",
+                     "order from " + start + " > 0.5 beyond 2 standard errors (a sample per series and measure)", {}, hard};
+  DomainClaim falls{statement + ": the errors at the finest mesh are at most " + number(fall, "%g") + " of those at " + start,
+                    "error at the finest mesh / at " + start + " <= " + number(fall, "%g") + " beyond its band", {}, hard};
+  for (const Case& p : patterns)
+    for (const auto& [name, measure] : {std::pair{"v", &SmoothResult::velocity_error}, std::pair{"σ", &SmoothResult::stress_error}}) {
+      const SeriesData data = series(runs, p, measure);
+      add_order(orders, where(p) + ", " + name, data, fit_series(data, from), mpm::Side::above, 0.5);
+      add_fall(falls, where(p) + ", " + name, runs, p, measure, from, fall);
+    }
+  return {orders, falls};
 }
 
 /// Every run of `cases` finishes (no stop: the solver's diagnosis, instability or a particle off the grid).

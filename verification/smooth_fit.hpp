@@ -1,5 +1,6 @@
 // Observed orders with their standard errors, and the smooth suite's numbers as report text.
 #pragma once
+#include <doctest/doctest.h>
 #include <gsl/gsl_fit.h>
 
 #include <cmath>
@@ -19,15 +20,24 @@ struct OrderFit {
   double order = std::nan(""), error = std::nan("");
   int points = 0;
   int stopped = 0;  ///< runs of the range that stopped
+  int failed = 0;   ///< runs of the range whose score failed (no better than a flat field): left out, as `mpm study` leaves them
   bool valid() const { return std::isfinite(order); }
   /// the order with two standard errors as its band (the one rule, mpm/analysis/verdict.hpp); no fit: stopped
   mpm::Measured measured() const {
     return valid() ? mpm::Measured{order, 2.0 * error, mpm::Ending::done} : mpm::Measured{order, 0.0, mpm::Ending::stopped};
   }
-  /// "0.93 ± 0.02", or "— (2 stopped)", "— (2 meshes)"
+  /// "0.93 ± 0.02", or "— (2 stopped)", "— (2 meshes)"; "(1 failed, left out)" after either where runs failed
   std::string text() const {
-    if (valid()) return number(order, "%.3g") + " ± " + number(error, "%.1g");
-    return stopped ? "— (" + std::to_string(stopped) + " stopped)" : "— (" + std::to_string(points) + " meshes)";
+    const std::string left_out = failed ? " (" + std::to_string(failed) + " failed, left out)" : "";
+    if (valid()) return number(order, "%.3g") + " ± " + number(error, "%.1g") + left_out;
+    return (stopped ? "— (" + std::to_string(stopped) + " stopped)" : "— (" + std::to_string(points) + " meshes)") + left_out;
+  }
+  /// "the order lies on `side` of `threshold`" by the one rule: stopped where a run of the range stopped or too few
+  /// meshes ran; fails where runs failed and left fewer than 3 meshes (their scores are no approximation: the series
+  /// does not converge); otherwise judged with 2 standard errors as the band.
+  mpm::Outcome against(mpm::Side side, double threshold) const {
+    if (!valid()) return stopped == 0 && failed > 0 ? mpm::Outcome::fails : mpm::Outcome::stopped;
+    return mpm::judge(measured(), side, mpm::threshold(threshold));
   }
 };
 
@@ -54,29 +64,19 @@ inline OrderFit fit_order(const std::vector<int>& cells, const std::vector<doubl
   return fit;
 }
 
-/// Whether fitted orders resolve `threshold`: +1 if every one is above it by more than 2 standard errors, -1 if one is
-/// below it by more than 2 (or is no fit), 0 (undecided) otherwise.
-inline int orders_against(std::initializer_list<OrderFit> fits, double threshold) {
-  int side = 1;
-  for (const OrderFit& fit : fits) {
-    if (!fit.valid() || fit.order + 2.0 * fit.error < threshold) return -1;
-    if (fit.order - 2.0 * fit.error <= threshold) side = 0;
-  }
-  return side;
-}
-
-/// Adds a sample of an order claim: stopped where a run of the series stopped (the one rule: its own outcome; a hard
-/// claim counts it as failing), holds where `other` holds and the orders resolve their threshold from above, fails
-/// where `other` fails or an order lies below it, undecided (orders within 2 s.e. of it) otherwise.
-inline void add_orders(DomainClaim& claim, const std::string& where, double value, int side, bool other, bool stopped) {
-  if (stopped) {
-    claim.add_stopped(where);
-    return;
-  }
-  if (other && side == 0)
-    claim.add_undecided(where + " — an order within 2 s.e. of the threshold", value);
-  else
-    claim.add(where, value, other && side > 0);
+TEST_CASE("smooth orders: a fit against its threshold by the one rule, failed runs left out") {
+  OrderFit fit;
+  fit.order = 0.9, fit.error = 0.1;
+  CHECK(fit.against(mpm::Side::above, 0.5) == mpm::Outcome::holds);
+  CHECK(fit.against(mpm::Side::above, 0.75) == mpm::Outcome::undecided);  // 0.15 <= 2 s.e.
+  CHECK(fit.against(mpm::Side::above, 1.2) == mpm::Outcome::fails);
+  OrderFit none;
+  none.failed = 2;
+  CHECK(none.against(mpm::Side::above, 0.5) == mpm::Outcome::fails);
+  none.stopped = 1;
+  CHECK(none.against(mpm::Side::above, 0.5) == mpm::Outcome::stopped);
+  CHECK(fit_order({8, 16, 32}, {0.4, 0.2, 0.1}, 8).order == doctest::Approx(1.0));
+  CHECK(fit_order({8, 16, 32}, {0.4, std::nan(""), 0.1}, 8).stopped == 1);
 }
 
 /// An error as report text: "stopped" for NaN.

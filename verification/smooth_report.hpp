@@ -13,7 +13,7 @@ namespace verification::smooth {
 inline void write_bar_orders(const std::string& folder, const Runs& runs) {
   std::ofstream out(folder + "/smooth_bar_orders.csv");
   out << "amplitude,shape,integrator,ppc,cfl,velocity_order,stress_order,failed_runs,velocity_order_own_time,"
-         "velocity_order_error,stress_order_error,velocity_order_own_time_error\n";
+         "velocity_order_error,stress_order_error,velocity_order_own_time_error,score_failed_runs\n";
   for (bool large : {false, true})
     for (const Case& p : [&] {
            auto paper = cases_of(runs, Group::bar, large, true, false, true), baselines = cases_of(runs, Group::bar, large, false, true, true);
@@ -24,7 +24,7 @@ inline void write_bar_orders(const std::string& folder, const Runs& runs) {
                      own = order(runs, p, &SmoothResult::velocity_error_own_time, 16);
       CsvRow row;
       row << (large ? "large" : "small") << p.method.shape << p.method.integrator << p.ppc << number(p.cfl, "%.1f") << v.order << s.order
-          << series(runs, p, &SmoothResult::velocity_error).stopped.size() << own.order << v.error << s.error << own.error;
+          << series(runs, p, &SmoothResult::velocity_error).stopped.size() << own.order << v.error << s.error << own.error << v.failed;
       out << row.text.str() << "\n";
     }
 }
@@ -32,7 +32,7 @@ inline void write_bar_orders(const std::string& folder, const Runs& runs) {
 /// smooth_manufactured_orders.csv: every series of the 2D manufactured solutions, orders from 12 cells with standard errors.
 inline void write_manufactured_orders(const std::string& folder, const Runs& runs) {
   std::ofstream out(folder + "/smooth_manufactured_orders.csv");
-  out << "amplitude,shape,integrator,ppc,velocity_order,stress_order,failed_runs,velocity_order_error,stress_order_error\n";
+  out << "amplitude,shape,integrator,ppc,velocity_order,stress_order,failed_runs,velocity_order_error,stress_order_error,score_failed_runs\n";
   for (bool large : {false, true})
     for (const Method& m : with_paper(bar_baselines()))
       for (int ppc : {1, 2}) {
@@ -41,7 +41,7 @@ inline void write_manufactured_orders(const std::string& folder, const Runs& run
         const OrderFit v = order(runs, p, &SmoothResult::velocity_error, 12), s = order(runs, p, &SmoothResult::stress_error, 12);
         CsvRow row;
         row << (large ? "large" : "small") << m.shape << m.integrator << ppc << v.order << s.order
-            << series(runs, p, &SmoothResult::velocity_error).stopped.size() << v.error << s.error;
+            << series(runs, p, &SmoothResult::velocity_error).stopped.size() << v.error << s.error << v.failed;
         out << row.text.str() << "\n";
       }
 }

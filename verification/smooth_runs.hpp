@@ -114,13 +114,20 @@ struct CsvRow {
 };
 
 inline const char* status(const SmoothResult& r) { return r.failed ? "failed" : "ok"; }
+/// The run's ending by the one rule (mpm/analysis/verdict.hpp): "stopped" (status failed), "failed" (it finished no
+/// better than a flat field: velocity_error >= velocity_flat), or "done".
+inline const char* ending_name(const SmoothResult& r) {
+  return r.ending() == mpm::Ending::stopped ? "stopped" : r.ending() == mpm::Ending::failed ? "failed" : "done";
+}
 
-/// Writes smooth_bar.csv, smooth_crossing.csv and smooth_manufactured.csv: one row per run, in the studies' order.
+/// Writes smooth_bar.csv, smooth_crossing.csv and smooth_manufactured.csv: one row per run, in the studies' order; each
+/// ends with the bands of its two errors (the even and odd particles'), the flat field's score and the run's ending.
 inline void write_runs(const std::string& folder, const std::vector<Axes>& studies, const Runs& runs) {
+  const char* ending_columns = "velocity_band,stress_band,velocity_flat,ending\n";
   std::ofstream bar(folder + "/smooth_bar.csv"), crossing(folder + "/smooth_crossing.csv"), manufactured(folder + "/smooth_manufactured.csv");
-  bar << "amplitude,shape,integrator,ppc,cfl,cells,velocity_error,stress_error,energy_ratio,wall_seconds,steps,status,velocity_error_own_time,cpu_seconds\n";
-  crossing << "shape,integrator,ppc,amplitude_over_h,velocity_error,stress_error,status,velocity_error_own_time,cpu_seconds\n";
-  manufactured << "amplitude,shape,integrator,ppc,cells,velocity_error,stress_error,wall_seconds,steps,status,cpu_seconds\n";
+  bar << "amplitude,shape,integrator,ppc,cfl,cells,velocity_error,stress_error,energy_ratio,wall_seconds,steps,status,velocity_error_own_time,cpu_seconds," << ending_columns;
+  crossing << "shape,integrator,ppc,amplitude_over_h,velocity_error,stress_error,status,velocity_error_own_time,cpu_seconds," << ending_columns;
+  manufactured << "amplitude,shape,integrator,ppc,cells,velocity_error,stress_error,wall_seconds,steps,status,cpu_seconds," << ending_columns;
   for (const Case& c : expand(studies)) {
     const SmoothResult& r = runs.at(c);
     CsvRow row;
@@ -135,6 +142,7 @@ inline void write_runs(const std::string& folder, const std::vector<Axes>& studi
           << r.wall_seconds << r.steps << status(r) << r.cpu_seconds;
     else
       continue;
+    row << r.velocity_band << r.stress_band << r.velocity_flat << ending_name(r);
     (c.group == Group::bar ? bar : c.group == Group::crossing ? crossing : manufactured) << row.text.str() << "\n";
   }
 }

@@ -88,14 +88,16 @@ inline std::vector<DomainClaim> plane_claims(const SoilOutcome& o, double tolera
                        "largest |u_x(X) + u_x(W - X)|, |u_y(X) - u_y(W - X)| over the mirrored pairs, m", {}, true};
   symmetry.add(std::to_string(m.pairs) + " pairs; largest |u_x| " + metres(m.largest_lateral), m.largest_asymmetry,
                !o.result.failed && m.pairs > 0 && m.largest_asymmetry <= 1e-9);
-  DomainClaim spread{"Free sides, nu = 0.3: the check is two-dimensional: the block spreads sideways by over 1 mm and sigma_yy "
-                     "varies along the rows by over 1 % of rho g H (with rollers both are zero)",
-                     "largest |u_x| (m); the largest range of sigma_yy along a row / (rho g H)", {}, false};
+  // The check is two-dimensional (with rollers both measures are zero): two criteria, two rows.
+  DomainClaim spread{"Free sides, nu = 0.3: the check is two-dimensional: the block spreads sideways by over 1 mm",
+                     "largest |u_x| > 1e-3 m", {}, false};
+  DomainClaim varies{"Free sides, nu = 0.3: the check is two-dimensional: sigma_yy varies along the rows by over 1 % of rho g H",
+                     "the largest range of sigma_yy along a row / (rho g H) > 0.01", {}, false};
   double widest = 0.0;
   for (const auto& [height, range] : m.row_stress_range) widest = std::max(widest, range / scale);
   spread.add("lateral displacement", m.largest_lateral, m.largest_lateral > 1e-3);
-  spread.add("sigma_yy along a row", widest, widest > 0.01);
-  return {equilibrium, symmetry, spread};
+  varies.add("sigma_yy along a row", widest, widest > 0.01);
+  return {equilibrium, symmetry, spread, varies};
 }
 
 }  // namespace verification

@@ -102,4 +102,60 @@ TEST_CASE("amplitude_ratio: full, offset, damped, overshooting and flat historie
   CHECK_THROWS(amplitude_ratio({1.0}, {1.0, 2.0}));
 }
 
+/// The plateaus' deviations of a history against the exact one's, in units of the exact history's largest |value|.
+struct PlateauDeviations {
+  double overshoot = std::nan("");  ///< the largest step beyond the exact level, along the jump into the plateau
+  double deficit = std::nan("");    ///< damping: the largest shortfall of the level, against that jump (>= 0)
+};
+
+/// Damping as the amplitude lost on the plateaus: a plateau is a run of at least `least_samples` samples on which the
+/// exact history keeps one value, its direction the sign of the exact jump into it (the first plateau's: of its own
+/// value; none where that is 0); on the middle half of each plateau (in time) the signed deviation
+/// \f$ d_n = s\,(v_n - \hat v_n) / \max_m |\hat v_m| \f$ gives the overshoot \f$ \max d_n \f$ and the deficit
+/// \f$ \max(-d_n) \f$, both at least 0. NaN where the exact history has no plateau with a direction (a smooth
+/// history has none: its amplitude is amplitude_ratio's). Not an equation of the paper: the yardstick of the report's
+/// damping claims (the Dyka bar's plateau deficit, paper/08_test_cases.md) for any code's history (mpm compare).
+/// \throws std::invalid_argument when the sizes differ.
+inline PlateauDeviations plateau_deviations(const std::vector<double>& time, const std::vector<double>& computed,
+                                            const std::vector<double>& exact, std::size_t least_samples = 3) {
+  if (computed.size() != exact.size() || time.size() != exact.size()) throw std::invalid_argument("plateau_deviations: sizes differ");
+  double largest = 0.0;
+  for (double value : exact) largest = std::max(largest, std::abs(value));
+  PlateauDeviations result;
+  if (!(largest > 0.0)) return result;
+  for (std::size_t first = 0; first < exact.size();) {
+    std::size_t last = first;
+    while (last + 1 < exact.size() && exact[last + 1] == exact[first]) ++last;
+    const double jump = first == 0 ? exact[first] : exact[first] - exact[first - 1];
+    const double direction = last - first + 1 < least_samples ? 0.0 : jump > 0.0 ? 1.0 : jump < 0.0 ? -1.0 : 0.0;
+    const double quarter = 0.25 * (time[last] - time[first]);
+    for (std::size_t n = first; n <= last && direction != 0.0; ++n)
+      if (time[n] >= time[first] + quarter && time[n] <= time[last] - quarter) {
+        const double deviation = direction * (computed[n] - exact[n]) / largest;
+        result.overshoot = std::isnan(result.overshoot) ? std::max(0.0, deviation) : std::max(result.overshoot, deviation);
+        result.deficit = std::isnan(result.deficit) ? std::max(0.0, -deviation) : std::max(result.deficit, -deviation);
+      }
+    first = last + 1;
+  }
+  return result;
+}
+
+TEST_CASE("plateau_deviations: a jump overshot, a damped jump, a smooth history by hand") {
+  const std::vector<double> t{0, 1, 2, 3, 4, 5, 6, 7, 8}, exact{0, 0, 0, 2, 2, 2, 2, 2, 0};
+  // the plateau 2 on t = 3..7: its middle half t = 4..6; the first plateau 0 has no direction (its own value is 0)
+  const auto over = plateau_deviations(t, {0, 0, 0, 3, 2.5, 2.2, 2.1, 2, 0}, exact);
+  CHECK(over.overshoot == doctest::Approx(0.25));  // 2.5 - 2 over the largest |exact| 2
+  CHECK(over.deficit == 0.0);
+  const auto damped = plateau_deviations(t, {0, 0, 0, 1, 1.5, 1.6, 1.5, 1, 0}, exact);
+  CHECK(damped.deficit == doctest::Approx(0.25));  // 2 - 1.5
+  CHECK(damped.overshoot == 0.0);
+  const auto down = plateau_deviations({0, 1, 2, 3, 4}, {0, -1.5, -1.8, -1.9, 0}, {0, -2, -2, -2, -2});
+  CHECK(down.deficit == doctest::Approx(0.1));  // along the jump down: -1.8 falls 0.2 short of -2
+  // a half-way sample at a jump (exact 1 between 0 and 2) is no plateau: computed far from it there counts nothing
+  CHECK(plateau_deviations({0, 1, 2, 3, 4, 5, 6, 7}, {0, 0, 0, 0.2, 2, 2, 2, 2}, {0, 0, 0, 1, 2, 2, 2, 2}).deficit == 0.0);
+  CHECK(std::isnan(plateau_deviations({0, 1, 2}, {0, 1, 2}, {0, 1, 2}).deficit));  // no plateau
+  CHECK(std::isnan(plateau_deviations({0, 1, 2}, {1, 1, 1}, {0, 0, 0}).deficit));  // the exact history is 0
+  CHECK_THROWS(plateau_deviations({0, 1}, {0}, {0, 1}));
+}
+
 }  // namespace mpm

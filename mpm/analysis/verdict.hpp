@@ -60,9 +60,12 @@ inline Outcome judge(const Measured& a, Side side, const Measured& b) {
 }
 
 /// "a lies within [low, high]": both edges judged by the rule; fails when a lies beyond either edge by more than its
-/// band, undecided when it lies within its band of an edge, stopped as judge says.
+/// band, undecided when it lies within its band of an edge, stopped as judge says. An infinite edge is no edge (an
+/// open range, "a > 10": judge would take an infinite threshold for a run that stopped).
 inline Outcome judge_within(const Measured& a, double low, double high) {
-  const Outcome above = judge(a, Side::above, {low, 0.0, Ending::done}), below = judge(a, Side::below, {high, 0.0, Ending::done});
+  if (a.ending == Ending::stopped || !std::isfinite(a.value)) return Outcome::stopped;
+  const Outcome above = std::isinf(low) ? Outcome::holds : judge(a, Side::above, {low, 0.0, Ending::done});
+  const Outcome below = std::isinf(high) ? Outcome::holds : judge(a, Side::below, {high, 0.0, Ending::done});
   if (above == Outcome::stopped || below == Outcome::stopped) return Outcome::stopped;
   if (above == Outcome::fails || below == Outcome::fails) return Outcome::fails;
   if (above == Outcome::undecided || below == Outcome::undecided) return Outcome::undecided;
@@ -129,6 +132,10 @@ TEST_CASE("verdict rule: each branch by hand") {
   CHECK(judge_within({1.5, 0.1, Ending::done}, 0.8, 1.3) == Outcome::fails);
   CHECK(judge_within({0.5, 0.1, Ending::done}, 0.8, 1.3) == Outcome::fails);
   CHECK(judge_within({1.0, 0.1, Ending::stopped}, 0.8, 1.3) == Outcome::stopped);
+  CHECK(judge_within({12.0, 0.1, Ending::done}, 10.0, HUGE_VAL) == Outcome::holds);  // an open range: one edge
+  CHECK(judge_within({9.0, 0.1, Ending::done}, 10.0, HUGE_VAL) == Outcome::fails);
+  CHECK(judge_within({9.0, 0.1, Ending::done}, -HUGE_VAL, 10.0) == Outcome::holds);
+  CHECK(judge_within({std::nan(""), 0.1, Ending::done}, 10.0, HUGE_VAL) == Outcome::stopped);
 }
 
 TEST_CASE("verdict rule: a ratio's band and ending, a band from halves, a flat line's score") {

@@ -122,6 +122,11 @@ struct ColumnScore {
   /// The ringing on the even and on the odd rows alone: the band of the ringing's own sampling, as rms_even and
   /// rms_odd are the RMS's (NaN where a half has fewer than two rows or its exact history does not vary)
   double ringing_even = std::nan(""), ringing_odd = std::nan("");
+  /// Damping on the plateaus (mpm::plateau_deviations: the largest step beyond and the largest shortfall of the exact
+  /// level on the middle half of each run of at least 3 rows where the exact history is constant, in units of its
+  /// largest |value|), and the deficit on the even and the odd rows alone (its band); NaN where there is no plateau.
+  double plateau_overshoot = std::nan(""), plateau_deficit = std::nan(""), plateau_deficit_even = std::nan(""),
+         plateau_deficit_odd = std::nan("");
 };
 
 /// Eq. (43) over every other row of `computed` and `exact`, from row `first` (0: the even rows, 1: the odd ones); NaN
@@ -157,6 +162,10 @@ inline ColumnScore score_column(const std::vector<double>& times, const std::vec
   score.ending = score_ending(score.rms, score.flat_rms);
   score.ringing_even = ringing_of(every_other(computed, 0), every_other(exact, 0));
   score.ringing_odd = ringing_of(every_other(computed, 1), every_other(exact, 1));
+  const PlateauDeviations plateaus = plateau_deviations(times, computed, exact);
+  score.plateau_overshoot = plateaus.overshoot, score.plateau_deficit = plateaus.deficit;
+  score.plateau_deficit_even = plateau_deviations(every_other(times, 0), every_other(computed, 0), every_other(exact, 0)).deficit;
+  score.plateau_deficit_odd = plateau_deviations(every_other(times, 1), every_other(computed, 1), every_other(exact, 1)).deficit;
   for (std::size_t n = 0; n < computed.size(); ++n)
     if (std::abs(computed[n] - exact[n]) > score.max_abs) {
       score.max_abs = std::abs(computed[n] - exact[n]);
@@ -286,11 +295,12 @@ inline std::vector<std::pair<std::string, std::string>> checked_columns(const Co
 }
 
 /// The header of compare's output: the first ten columns as they were first printed, the damping
-/// measure, a flat line's score, the ending and the ringing's halves appended after them (a reader by position keeps
-/// working).
+/// measure, a flat line's score, the ending, the ringing's halves and the plateaus' deviations appended after them (a
+/// reader by position keeps working).
 inline constexpr const char* compare_header =
     "column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing,amplitude,amplitude_even,"
-    "amplitude_odd,flat_rms,ending,ringing_even,ringing_odd";
+    "amplitude_odd,flat_rms,ending,ringing_even,ringing_odd,plateau_overshoot,plateau_deficit,plateau_deficit_even,"
+    "plateau_deficit_odd";
 
 /// Scores the CSV of `request` against the exact solution of `options`' scene at its point, prints the scores and
 /// draws --plot; returns the exit code (1 above the tolerance). \throws Refused, SceneError, OutputFailure.
@@ -333,7 +343,8 @@ inline int compare(const ExactOptions& options, const CompareRequest& request, s
          << score.rms_normalised << "," << score.max_abs << "," << score.t_of_max << "," << score.rms_even << ","
          << score.rms_odd << "," << score.ringing << "," << score.amplitude << "," << score.amplitude_even << ","
          << score.amplitude_odd << "," << score.flat_rms << "," << ending_label(score.ending) << "," << score.ringing_even << ","
-         << score.ringing_odd << "\n";
+         << score.ringing_odd << "," << score.plateau_overshoot << "," << score.plateau_deficit << ","
+         << score.plateau_deficit_even << "," << score.plateau_deficit_odd << "\n";
     if (request.tolerance && !(score.rms_normalised <= *request.tolerance)) above << " " << score.column;
   }
   out << text.str() << std::flush;
@@ -356,7 +367,8 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "Scores any CSV with a header line (another code's output) against the scene's exact solution (as mpm exact\n"
       "evaluates it) at the material point --at and at the CSV's own sample times, and prints CSV:\n"
       "  column,quantity,samples,rms,rms_normalised,max_abs,t_of_max,rms_even,rms_odd,ringing,\n"
-      "  amplitude,amplitude_even,amplitude_odd,flat_rms,ending,ringing_even,ringing_odd\n"
+      "  amplitude,amplitude_even,amplitude_odd,flat_rms,ending,ringing_even,ringing_odd,\n"
+      "  plateau_overshoot,plateau_deficit,plateau_deficit_even,plateau_deficit_odd\n"
       "rms: Eq. (43), sqrt(sum (c_n - e_n)^2 / N) over the N rows, in the quantity's unit; rms_normalised: rms\n"
       "divided by the solution's scale of the quantity: velocity V* (the largest |v_0| or |sigma_0|/Z of the initial\n"
       "data: v0 for the Dyka bar, so the paper's RMS/v0), stress Z V*, displacement V* L/c (dyka_bar); rho g H,\n"
@@ -374,7 +386,11 @@ inline int compare_command(const std::vector<std::string>& arguments, std::ostre
       "is oscillation, both below 1 damping. flat_rms: what a flat line at the exact mean scores (the quantity's\n"
       "unit); ending: failed when rms >= flat_rms (no approximation at all: a report's comparison of two failed\n"
       "runs is not decided), else done. ringing_even, ringing_odd: the ringing on the even and on the odd rows\n"
-      "alone, the band of the ringing's sampling.");
+      "alone, the band of the ringing's sampling. plateau_overshoot, plateau_deficit: on each run of 3 or more rows\n"
+      "where the exact history is constant (a plateau), on its middle half in time, the largest step beyond and the\n"
+      "largest shortfall of the exact level along the jump into it, over the largest |exact|: the deficit is the\n"
+      "amplitude lost (damping), the overshoot the oscillation's reach; plateau_deficit_even, plateau_deficit_odd:\n"
+      "the deficit on the even and the odd rows alone, its band; nan where the exact history has no plateau.");
   app.add_option("RESULT.csv", request.result_path, "the CSV to score")->required();
   app.add_option("SCENE.toml", options.scene_path, "the scene file whose exact solution scores it")->required();
   declare_exact_options(app, options);
@@ -438,6 +454,13 @@ TEST_CASE("Eq. (43): mpm compare: a series off by a constant c has rms = max_abs
   CHECK(std::isnan(one.rms_odd));
   CHECK(std::isnan(one.ringing));
   CHECK(std::isnan(one.amplitude));
+  CHECK(std::isnan(one.plateau_deficit));  // no plateau of 3 rows
+  // a jump to 2 held over rows 1-7, damped to 1.5 on its middle half: deficit (2 - 1.5) / 2, on either half's rows too
+  const ColumnScore damped = score_column({0, 1, 2, 3, 4, 5, 6, 7}, {0, 1, 1.5, 1.5, 1.5, 1.5, 1.5, 1}, {0, 2, 2, 2, 2, 2, 2, 2}, 1.0);
+  CHECK(damped.plateau_deficit == doctest::Approx(0.25));
+  CHECK(damped.plateau_overshoot == 0.0);
+  CHECK(damped.plateau_deficit_even == doctest::Approx(0.25));
+  CHECK(damped.plateau_deficit_odd == doctest::Approx(0.25));
   CHECK(one.flat_rms == 0.0);
   CHECK(one.ending == Ending::done);  // a constant exact history (flat line 0): the failed-score rule does not apply
 }
