@@ -2,6 +2,8 @@
 // Hard claims are bounds the theory gives: one that does not hold fails the suite (exit 1).
 // Soft claims are the paper's: one that does not hold is reported, with its numbers, and nothing more.
 #pragma once
+#include <doctest/doctest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -143,6 +145,41 @@ inline bool hard_claims_hold(const std::vector<DomainClaim>& claims) {
   for (const DomainClaim& claim : claims)
     if (claim.hard && (claim.samples.empty() || claim.count(false) > 0)) return false;
   return true;
+}
+
+/// "A method of the paper is still the most accurate": the smallest value of each group, the paper's methods' and the
+/// others', among its runs that did not stop, compared by the one rule (mpm::judge: the paper's best below the others'
+/// beyond their bands). `paper` and `others` are the groups' measured numbers (an error: smaller is better); the indices
+/// of the two bests, npos where a group has no run that finished (the outcome is then stopped).
+struct BestOfGroups {
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::size_t paper = none, other = none;
+  mpm::Outcome outcome = mpm::Outcome::stopped;
+};
+inline std::size_t smallest_finished(const std::vector<mpm::Measured>& group) {
+  std::size_t best = BestOfGroups::none;
+  for (std::size_t k = 0; k < group.size(); ++k)
+    if (group[k].ending != mpm::Ending::stopped && (best == BestOfGroups::none || group[k].value < group[best].value)) best = k;
+  return best;
+}
+inline BestOfGroups judge_best(const std::vector<mpm::Measured>& paper, const std::vector<mpm::Measured>& others) {
+  BestOfGroups best{smallest_finished(paper), smallest_finished(others), mpm::Outcome::stopped};
+  if (best.paper != BestOfGroups::none && best.other != BestOfGroups::none)
+    best.outcome = mpm::judge(paper[best.paper], mpm::Side::below, others[best.other]);
+  return best;
+}
+
+TEST_CASE("judge_best: each group's smallest finished value, by the one rule") {
+  using mpm::Ending;
+  const std::vector<mpm::Measured> paper{{0.30, 0.01, Ending::done}, {0.05, 0.0, Ending::stopped}, {0.20, 0.01, Ending::done}};
+  const BestOfGroups held = judge_best(paper, {{0.25, 0.01, Ending::done}, {0.40, 0.01, Ending::failed}});
+  CHECK(held.paper == 2);  // the stopped run's 0.05 is no best
+  CHECK(held.other == 0);
+  CHECK(held.outcome == mpm::Outcome::holds);
+  CHECK(judge_best(paper, {{0.21, 0.01, Ending::done}}).outcome == mpm::Outcome::undecided);
+  CHECK(judge_best(paper, {{0.10, 0.01, Ending::done}}).outcome == mpm::Outcome::fails);
+  CHECK(judge_best(paper, {{0.10, 0.0, Ending::stopped}}).outcome == mpm::Outcome::stopped);
+  CHECK(judge_best({}, {{0.10, 0.0, Ending::done}}).paper == BestOfGroups::none);
 }
 
 /// printf-style formatting of one number, for the report.

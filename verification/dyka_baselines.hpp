@@ -110,15 +110,17 @@ inline std::vector<DomainClaim> front_claims(const Runs& runs, const std::vector
                         "paper's methods are on it only by the spread is a tie",
                     {}, false};
   for (int cells : baseline_cells) {
-    const FrontEntry *most = nullptr, *paper_best = nullptr, *other_best = nullptr;
+    const FrontEntry* most = nullptr;
+    std::vector<const FrontEntry*> of_paper, of_others;  // the mesh's finished runs, and their measures, per group
+    std::vector<mpm::Measured> paper_rms, others_rms;
     std::string on, tied;
     bool paper_on = false, paper_clear = false;  // clear: on the front with no faster, more accurate method in the spread
     int count = 0;
     for (const auto& e : entries)
       if (e.cells == cells && !e.stopped) {
         if (!most || e.rms < most->rms) most = &e;
-        const FrontEntry*& best_of = paper(e.method) ? paper_best : other_best;
-        if (!best_of || e.rms < best_of->rms) best_of = &e;
+        (paper(e.method) ? of_paper : of_others).push_back(&e);
+        (paper(e.method) ? paper_rms : others_rms).push_back(rms_measured(runs.at(e.run)));
         if (!e.on_front) continue;
         ++count;
         on += (on.empty() ? "" : ", ") + e.method + " " + rms_text(e.rms) + " " + text(1e3 * e.cpu, "%.3g") + " ms";
@@ -126,14 +128,16 @@ inline std::vector<DomainClaim> front_claims(const Runs& runs, const std::vector
         paper_on = paper_on || paper(e.method);
         paper_clear = paper_clear || (paper(e.method) && e.ties.empty());
       }
-    if (paper_best && other_best) {
-      const mpm::Measured a = rms_measured(runs.at(paper_best->run)), b = rms_measured(runs.at(other_best->run));
-      best.add(mesh_text(cells) + " (" + band_of(cells) + "): most accurate " + most->method + "; the paper's " + paper_best->method +
-                   " " + rms_text(a.value) + " ± " + text(a.band, "%.2g") + ", the others' " + other_best->method + " " +
-                   rms_text(b.value) + " ± " + text(b.band, "%.2g"),
-               a.value / b.value, mpm::judge(a, mpm::Side::below, b));
+    const BestOfGroups judged = judge_best(paper_rms, others_rms);
+    if (judged.paper != BestOfGroups::none && judged.other != BestOfGroups::none) {
+      const mpm::Measured &a = paper_rms[judged.paper], &b = others_rms[judged.other];
+      best.add(mesh_text(cells) + " (" + band_of(cells) + "): most accurate " + most->method + "; the paper's " +
+                   of_paper[judged.paper]->method + " " + rms_text(a.value) + " ± " + text(a.band, "%.2g") + ", the others' " +
+                   of_others[judged.other]->method + " " + rms_text(b.value) + " ± " + text(b.band, "%.2g"),
+               a.value / b.value, judged.outcome);
     } else {
-      best.add_stopped(mesh_text(cells) + ": " + (paper_best ? "no other method" : "no method of the paper") + " finished");
+      best.add_stopped(mesh_text(cells) + ": " + (judged.paper != BestOfGroups::none ? "no other method" : "no method of the paper") +
+                       " finished");
     }
     const std::string where = mesh_text(cells) + ": " + on + (tied.empty() ? "" : " (tie: " + tied + ")");
     if (paper_on && !paper_clear)

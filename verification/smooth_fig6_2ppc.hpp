@@ -156,19 +156,23 @@ inline std::vector<DomainClaim> fig6_baseline_claims(const DykaTable& d) {
                       "RMS/v0 of the baseline over linear's, same mesh, < 1 beyond its band", {}, false};
   DomainClaim finish{"Every run of today's baselines finishes (2 ppc)", "the run reaches 200 µs (1) or stops (0, its own outcome)", {}, false};
   for (int cells : {160, 1280}) {
-    const DykaRun *paper = nullptr, *other = nullptr;  // the paper's best and the best of the others
+    std::vector<const DykaRun*> of_paper, of_others;  // the mesh's finished runs, and their measures, per group
+    std::vector<mpm::Measured> paper_rms, others_rms;
     for (const Method& m : with_paper(crossing_baselines())) {
       const DykaRun* run = d.find(m, 2, cells);
       if (!run || run->stopped()) continue;
-      const bool of_paper = (m.shape == "ugimp" || m.shape == "lme") && m.paper();
-      const DykaRun*& best_of = of_paper ? paper : other;
-      if (!best_of || run->rms < best_of->rms) best_of = run;
+      const bool paper = (m.shape == "ugimp" || m.shape == "lme") && m.paper();
+      (paper ? of_paper : of_others).push_back(run);
+      (paper ? paper_rms : others_rms).push_back(run->measured());
     }
-    if (paper && other)
-      best.add(std::to_string(cells) + " cells: paper's best " + paper->method.name() + " " + number(paper->rms, "%.3g") + " ± " +
-                   number(paper->band, "%.2g") + ", the others' best " + other->method.name() + " " + number(other->rms, "%.3g") +
-                   " ± " + number(other->band, "%.2g"),
-               paper->rms / other->rms, mpm::judge(paper->measured(), mpm::Side::below, other->measured()));
+    const BestOfGroups judged = judge_best(paper_rms, others_rms);
+    if (judged.paper != BestOfGroups::none && judged.other != BestOfGroups::none) {
+      const DykaRun &paper = *of_paper[judged.paper], &other = *of_others[judged.other];
+      best.add(std::to_string(cells) + " cells: paper's best " + paper.method.name() + " " + number(paper.rms, "%.3g") + " ± " +
+                   number(paper.band, "%.2g") + ", the others' best " + other.method.name() + " " + number(other.rms, "%.3g") +
+                   " ± " + number(other.band, "%.2g"),
+               paper.rms / other.rms, judged.outcome);
+    }
     for (const Method& m : crossing_baselines()) {
       const DykaRun* run = d.find(m, 2, cells);
       if (!run) continue;
