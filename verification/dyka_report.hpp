@@ -131,17 +131,6 @@ inline void add_pair(DomainClaim& claim, const std::string& where, const std::st
     claim.add(where + detail + ", ratio ± " + text(r.band, "%.2g"), r.value, outcome);
 }
 
-/// A sample comparing two runs of a claim at `where` by a test of its own (an identity to round-off, a joint bound):
-/// a stopped run is named as such, a sample not compared, never scored; otherwise `where` + `detail` (the measured
-/// numbers), `value` and `holds` as given.
-inline void add_pair(DomainClaim& claim, const std::string& where, const std::string& detail, const DykaResult& a, const std::string& a_label,
-                     const DykaResult& b, const std::string& b_label, double value, bool holds) {
-  if (a.failed || b.failed)
-    claim.add_stopped(where + ": " + (a.failed ? a_label + " " + stopped_text(a) : b_label + " " + stopped_text(b)));
-  else
-    claim.add(where + detail, value, holds);
-}
-
 /// One run's measure `m` on `side` of `bound` by the one rule: where + detail, the measure's band, or "stopped".
 inline void add_single(DomainClaim& claim, const std::string& where, const std::string& detail, const DykaResult& run,
                        const std::string& label, const mpm::Measured& m, mpm::Side side, double bound) {
