@@ -26,6 +26,10 @@ if got_counts != expected_counts:
 if verdict_rule.verdict_text(["holds", "fails", "stopped"]) != "holds on 1 of 2 (1 hold, 1 fail, 0 undecided, 1 stopped)":
     failures += 1
     print("verdict_rule.py: verdict_text: %s" % verdict_rule.verdict_text(["holds", "fails", "stopped"]))
+# none decided, one within its band: "undecided on all 1", not "no samples compared" (C++: claims.hpp's doctest)
+if not verdict_rule.verdict_text(["undecided", "stopped"]).startswith("undecided on all 1 ("):
+    failures += 1
+    print("verdict_rule.py: verdict_text: %s" % verdict_rule.verdict_text(["undecided", "stopped"]))
 # The scripts that judge by it: authors_code.py on a constructed table (a gap within 1 % beyond its band, one within
 # its band of 1 %, one between two failed histories: holds, undecided, stopped).
 import subprocess  # noqa: E402

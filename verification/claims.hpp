@@ -4,6 +4,7 @@
 #pragma once
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -74,6 +75,9 @@ struct DomainClaim {
   std::string measure;           ///< what each sample measures, with the threshold: "RMS_NPC / RMS_FE < 1"
   std::vector<Sample> samples;   ///< every place of the study
   bool hard = false;             ///< a theory bound: failing it anywhere fails the suite
+  /// false for a claim over hundreds of runs: the report names the places where it fails, is undecided or stopped, and
+  /// counts those where it holds ("205 runs, largest 1.2e-15") instead of naming each
+  bool name_holds = true;
 
   void add(const std::string& where, double value, bool holds) { samples.push_back({where, value, holds, false}); }
   /// A place decided by the one rule (mpm::judge, mpm/analysis/verdict.hpp): holds, fails, undecided or stopped.
@@ -94,13 +98,15 @@ struct DomainClaim {
     return n;
   }
   std::size_t holding() const { return count(true); }
-  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "no samples compared", then the four counts of the
+  /// "holds on all 12", "fails on all 12", "holds on 8 of 12", "undecided on all 2" (none decided, some within their
+  /// bands), "no samples compared", then the four counts of the
   /// one rule: "(8 hold, 4 fail, 1 undecided, 0 stopped)". In a hard claim a stopped run fails (it is counted so).
   std::string verdict() const {
     std::size_t undecided = 0;
     for (const Sample& sample : samples) undecided += sample.undecided;
     const std::size_t k = count(true), n = k + count(false), stopped = samples.size() - n - undecided;
-    std::string text = n == 0 ? "no samples compared"
+    std::string text = n == 0 && undecided > 0 ? "undecided on all " + std::to_string(undecided)
+                       : n == 0                  ? "no samples compared"
                        : k == n ? "holds on all " + std::to_string(n)
                        : k == 0 ? "fails on all " + std::to_string(n)
                                 : "holds on " + std::to_string(k) + " of " + std::to_string(n);
@@ -109,8 +115,27 @@ struct DomainClaim {
   }
 };
 
+/// A verdict's class, its words without the counts: "holds on all", "holds on some", "fails on all", "undecided on
+/// all" or "no samples compared". Two verdicts of one claim under two rules differ in direction when their classes do.
+inline std::string verdict_class(const DomainClaim& claim) {
+  const std::size_t k = claim.count(true), n = k + claim.count(false);
+  std::size_t undecided = 0;
+  for (const Sample& sample : claim.samples) undecided += sample.undecided;
+  return n == 0 ? (undecided > 0 ? "undecided on all" : "no samples compared")
+                : k == n ? "holds on all" : k == 0 ? "fails on all" : "holds on some";
+}
+
+inline std::string number(double value, const char* format = "%.4g");
+
 /// The compared samples where a claim holds (holds = true) or fails, as "where (value)" joined by "; ", "-" if none.
 inline std::string places(const DomainClaim& claim, bool holds, const char* format = "%.4g") {
+  if (holds && !claim.name_holds) {  // counted, with the largest value, not named
+    std::size_t n = 0;
+    double largest = -HUGE_VAL;
+    for (const Sample& sample : claim.samples)
+      if (claim.compared(sample) && sample.holds) ++n, largest = std::max(largest, sample.value);
+    return n == 0 ? "-" : "all " + std::to_string(n) + " not named elsewhere in this row (largest value " + number(largest, "%.3g") + ")";
+  }
   std::string text;
   for (const Sample& sample : claim.samples) {
     if (!claim.compared(sample) || sample.holds != holds) continue;
@@ -169,6 +194,17 @@ inline BestOfGroups judge_best(const std::vector<mpm::Measured>& paper, const st
   return best;
 }
 
+TEST_CASE("DomainClaim::verdict: the four counts, and a row of undecided samples named so") {
+  DomainClaim claim{"c", "m", {}, false};
+  claim.add("a", 1.0, mpm::Outcome::undecided);
+  claim.add_stopped("b");
+  CHECK(claim.verdict() == "undecided on all 1 (0 hold, 0 fail, 1 undecided, 1 stopped)");
+  claim.add("c", 1.0, mpm::Outcome::holds);
+  claim.add("d", 1.0, mpm::Outcome::fails);
+  CHECK(claim.verdict() == "holds on 1 of 2 (1 hold, 1 fail, 1 undecided, 1 stopped)");
+  CHECK(verdict_class(claim) == "holds on some");
+}
+
 TEST_CASE("judge_best: each group's smallest finished value, by the one rule") {
   using mpm::Ending;
   const std::vector<mpm::Measured> paper{{0.30, 0.01, Ending::done}, {0.05, 0.0, Ending::stopped}, {0.20, 0.01, Ending::done}};
@@ -183,7 +219,7 @@ TEST_CASE("judge_best: each group's smallest finished value, by the one rule") {
 }
 
 /// printf-style formatting of one number, for the report.
-inline std::string number(double value, const char* format = "%.4g") {
+inline std::string number(double value, const char* format) {
   char text[64];
   std::snprintf(text, sizeof text, format, value);
   return text;

@@ -11,7 +11,7 @@
 
 namespace verification::dyka {
 
-/// Every run: mass conservation and whether it reached its end time, per study.
+/// Every run: mass conservation and whether it reached its end time, a sample per run (those that hold counted, not named).
 inline Section all_runs_section(const Runs& runs) {
   const std::vector<std::pair<std::string, std::string>> studies{
       {"sweep and large CFLs", "dyka_"}, {"baselines", "dyka_base_"}, {"gammas", "dyka_gamma_"}, {"choices", "dyka_choice_"}, {"energy", "dyka_energy_"}};
@@ -25,22 +25,16 @@ inline Section all_runs_section(const Runs& runs) {
   for (const auto& [name, run] : runs.by_name) worst_all = std::max(worst_all, run.mass_error);
   DomainClaim mass{"Mass is conserved: the nodal masses sum to the particle mass (Eq. 13 with the partition of unity), every step of every run "
                    "(largest relative error " + number(worst_all, "%.3g") + ")",
-                   "largest relative error of a step over the study's runs <= 1e-12", {}, true};
+                   "largest relative error of a step of the run <= 1e-12, a sample per run (a stopped run's steps up to its stop: an "
+                   "identity at each step taken, which the stop does not void)", {}, true};
   DomainClaim finished{"Every run reaches its end time (no NaN, no particle off the grid, no energy growth)",
-                       "runs of the study that stopped (0 holds); each stopped run named with the solver's diagnosis", {}, false};
-  for (const auto& [study, prefix] : studies) {
-    double worst = 0.0;
-    int count = 0, stopped = 0;
-    std::string list;
-    for (const auto& [name, run] : runs.by_name)
-      if (study_of(name) == study) {
-        ++count, worst = std::max(worst, run.mass_error);
-        if (run.failed) ++stopped, list += "; `" + name + "` " + stopped_text(run);
-      }
-    if (count == 0) continue;  // a study of the other part (make figures or make studies)
-    const std::string where = study + ", " + std::to_string(count) + " runs";
-    mass.add(where, worst, worst <= 1e-12);
-    finished.add(where + list, stopped, stopped == 0);
+                       "the run reaches its end (1) or stops (0): here a stop is what the claim counts, a fail; each stopped run named "
+                       "with the solver's diagnosis", {}, false};
+  mass.name_holds = finished.name_holds = false;
+  for (const auto& [name, run] : runs.by_name) {
+    const std::string where = "`" + name + "` (" + study_of(name) + ")";
+    mass.add(where, run.mass_error, run.mass_error <= 1e-12);
+    finished.add(where + (run.failed ? " " + stopped_text(run) : ""), run.failed ? 0.0 : 1.0, !run.failed);
   }
   return {"All Dyka runs", "", {mass, finished}};
 }
@@ -66,24 +60,23 @@ inline std::string order_table(const Runs& runs) {
   return table;
 }
 
-/// NPC against FE on the meshes `cells` of the sweep and the large CFLs, per shape: RMS_NPC / RMS_FE.
-inline DomainClaim npc_below_fe(const Runs& runs, const std::string& shape, bool own_time,
-                                const std::vector<int>& cells_of_sweep) {
+/// NPC against FE on the meshes `cells` of the sweep (the figure's CFL 0.5) and, a row of its own, at the large CFLs,
+/// per shape: RMS_NPC / RMS_FE.
+inline std::vector<DomainClaim> npc_below_fe(const Runs& runs, const std::string& shape, bool own_time,
+                                             const std::vector<int>& cells_of_sweep) {
   const std::string label = shape_label(shape);
-  DomainClaim claim{own_time ? "NPC is more accurate than FE with FE's velocity compared at t + dt/2, the time it approximates (" + label + ")"
-                             : "The predictor-corrector is more accurate than forward Euler (Fig. 6, " + label + ")",
-                    own_time ? "RMS_NPC / RMS_FE(t + dt/2) < 1 beyond its band, on every mesh of the sweep at CFL 0.5 and at the large CFLs"
-                             : "RMS_NPC / RMS_FE < 1 beyond its band, on every mesh of the sweep at CFL 0.5 and at the large CFLs",
-                    {}, false};
+  CflRows rows{own_time ? "NPC is more accurate than FE with FE's velocity compared at t + dt/2, the time it approximates (" + label + ")"
+                        : "The predictor-corrector is more accurate than forward Euler (Fig. 6, " + label + ")",
+               own_time ? "RMS_NPC / RMS_FE(t + dt/2) < 1 beyond its band" : "RMS_NPC / RMS_FE < 1 beyond its band"};
   for (const auto& [cells, cfl] : comparison_domain(cells_of_sweep)) {
     const auto &fe = runs.at(sweep_name(shape, "fe", cells, cfl)), &npc = runs.at(sweep_name(shape, "npc", cells, cfl));
     const double fe_rms = own_time ? fe.rms_own_time : fe.rms;
     mpm::Measured fe_measured = rms_measured(fe);
     if (own_time && !fe.failed) fe_measured.value = fe.rms_own_time / speed_v0;  // the band of its sampling as at t
-    add_pair(claim, mesh_text(cells, cfl), ", NPC " + rms_text(npc.rms / speed_v0) + " / FE " + rms_text(fe_rms / speed_v0), npc, "NPC",
-             rms_measured(npc), fe, "FE", fe_measured, mpm::Side::below);
+    add_pair(rows.at(cfl), mesh_text(cells, cfl), ", NPC " + rms_text(npc.rms / speed_v0) + " / FE " + rms_text(fe_rms / speed_v0), npc,
+             "NPC", rms_measured(npc), fe, "FE", fe_measured, mpm::Side::below);
   }
-  return claim;
+  return {rows.figure, rows.beyond};
 }
 
 /// Fig. 6's claims on `scope`: the error falls without crossing; NPC below FE; grid crossing at the finest mesh.
@@ -104,7 +97,8 @@ inline std::vector<DomainClaim> fig6_claims(const Runs& runs, const Scope& scope
                rms_measured(r160), r40, "40", rms_measured(r40), mpm::Side::below);
     }
   std::vector<DomainClaim> claims{order, falls};
-  for (const auto& shape : scope.shapes) claims.push_back(npc_below_fe(runs, shape, false, scope.cells));
+  for (const auto& shape : scope.shapes)
+    for (auto& claim : npc_below_fe(runs, shape, false, scope.cells)) claims.push_back(claim);
   const int fine = sweep_cells.back(), coarse = band_cells("transition").back();
   const std::string not_run = std::find(scope.cells.begin(), scope.cells.end(), fine) == scope.cells.end()
                                   ? " (" + std::to_string(fine) + " cells not run under the authors' β: no sample)"
@@ -148,30 +142,30 @@ inline Section fig6_section(const Runs& runs) {
 inline std::vector<DomainClaim> fig7_claims(const Runs& runs, const Scope& scope) {
   std::vector<DomainClaim> claims;
   for (const auto& shape : scope.shapes) {
-    DomainClaim less{"The predictor-corrector rings less than forward Euler (" + shape_label(shape) + ")",
-                     "ringing NPC / FE < 1 beyond its band (where: NPC, FE)", {}, false};
+    CflRows less{"The predictor-corrector rings less than forward Euler (" + shape_label(shape) + ")",
+                 "ringing NPC / FE < 1 beyond its band (where: NPC, FE)"};
     // "Removes" is a bound on the ringing, derived from the paper's own band for NPC (1.0-1.09 v0): a history that
     // overshoots each exact jump of |v0| once by 0.09 v0 and settles has a total variation 2 x 0.09 = 0.18 above the
     // exact one's per jump, a ratio of at most 1.18 (jumps of 2 |v0| would give less).
-    DomainClaim removes{"The predictor-corrector removes the spurious oscillations (" + shape_label(shape) + ")",
-                        "NPC's ringing (total variation of v_A over the exact one's) <= 1.18: one overshoot of 0.09 v0 "
-                        "(the paper's band) per jump of v0, beyond its band (value)", {}, false};
+    CflRows removes{"The predictor-corrector removes the spurious oscillations (" + shape_label(shape) + ")",
+                    "NPC's ringing (total variation of v_A over the exact one's) <= 1.18: one overshoot of 0.09 v0 "
+                    "(the paper's band) per jump of v0, beyond its band (value)"};
     // Damping is its own row. The paper's band for NPC, 1.0-1.09 v0, puts its plateaus at v0 or above, no deficit at
     // all; 0.09 v0 is a choice: the band's width, taken as the tolerance below v0 as well as above it.
-    DomainClaim keeps{"The predictor-corrector keeps the plateaus' amplitude (" + shape_label(shape) + ")",
-                      "NPC's plateau deficit (largest shortfall below the exact plateau) <= 0.09 v0, the width of the "
-                      "paper's band 1.0-1.09 v0 taken as a tolerance below v0 too, beyond its band (value)", {}, false};
+    CflRows keeps{"The predictor-corrector keeps the plateaus' amplitude (" + shape_label(shape) + ")",
+                  "NPC's plateau deficit (largest shortfall below the exact plateau) <= 0.09 v0, the width of the "
+                  "paper's band 1.0-1.09 v0 taken as a tolerance below v0 too, beyond its band (value)"};
     for (const auto& [cells, cfl] : comparison_domain(scope.cells)) {
       const auto &fe = runs.at(sweep_name(shape, "fe", cells, cfl)), &npc = runs.at(sweep_name(shape, "npc", cells, cfl));
       const std::string where = mesh_text(cells, cfl);
-      add_pair(less, where, ", NPC " + text(npc.ringing, "%.2f") + ", FE " + text(fe.ringing, "%.2f"), npc, "NPC",
+      add_pair(less.at(cfl), where, ", NPC " + text(npc.ringing, "%.2f") + ", FE " + text(fe.ringing, "%.2f"), npc, "NPC",
                ringing_measured(npc), fe, "FE", ringing_measured(fe), mpm::Side::below);
-      add_single(removes, where, ", NPC ringing " + text(npc.ringing, "%.2f"), npc, "NPC", ringing_measured(npc),
+      add_single(removes.at(cfl), where, ", NPC ringing " + text(npc.ringing, "%.2f"), npc, "NPC", ringing_measured(npc),
                  mpm::Side::below, 1.18);
-      add_single(keeps, where, ", NPC −" + text(npc.undershoot, "%.3f"), npc, "NPC", deficit_measured(npc), mpm::Side::below,
+      add_single(keeps.at(cfl), where, ", NPC −" + text(npc.undershoot, "%.3f"), npc, "NPC", deficit_measured(npc), mpm::Side::below,
                  0.09);
     }
-    claims.insert(claims.end(), {less, removes, keeps});
+    claims.insert(claims.end(), {less.figure, removes.figure, keeps.figure, less.beyond, removes.beyond, keeps.beyond});
   }
   // The paper's expectation is quoted for 40 cells (paper/08_test_cases.md, Fig. 7): scored there, one criterion per row;
   // its extension to the other meshes of the sweep is a row of its own.

@@ -75,7 +75,9 @@ inline std::vector<FrontEntry> fronts(const Runs& runs) {
     std::vector<CostPoint> points;
     for (const auto& e : mesh) {
       CostPoint point;
+      const mpm::Measured rms = rms_measured(runs.at(e.run));
       point.label = e.method, point.error = e.rms, point.stopped = e.stopped, point.repeats = e.repeats;
+      point.error_band = rms.band, point.failed = rms.ending == mpm::Ending::failed;
       point.cpu = e.cpu, point.cpu_low = e.cpu_low, point.cpu_high = e.cpu_high;
       points.push_back(point);
     }

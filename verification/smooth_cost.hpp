@@ -3,6 +3,7 @@
 #pragma once
 #include <fstream>
 
+#include "verification/error_cost.hpp"
 #include "verification/parallel.hpp"
 #include "verification/smooth_claims.hpp"
 
@@ -76,32 +77,34 @@ struct CostRun {
   std::string where;
   bool paper = false;  ///< uGIMP or LME gamma 3
   double error = std::nan(""), cpu = 0.0;  ///< error NaN: the run stopped (not on any front: its own outcome)
+  double band = 0.0;   ///< the error's band (the even and odd particles')
+  bool failed = false;  ///< finished no better than a flat field (SmoothResult::ending)
 };
 
-/// "uGIMP or LME γ = 3 is on the error-cost front", evaluated on each of their finished runs in `runs`: it holds where no
-/// finished run is both more accurate and cheaper by more than the CPU spread (CPU x (1 + spread) below its own); a tie
-/// where one is more accurate and cheaper only within the spread.
+/// "uGIMP or LME γ = 3 is on the error-cost front", evaluated on each of their finished runs in `runs` by mark_front
+/// (error_cost.hpp): it holds where no finished run is both more accurate beyond the two errors' bands and cheaper by more
+/// than the CPU spread (CPU x (1 + spread) below its own); undecided where one is so only within the band or the spread.
 inline DomainClaim front_claim(const std::vector<CostRun>& runs, const CpuSpread& spread, const std::string& study) {
   DomainClaim claim{"uGIMP or LME γ = 3 is on the error-cost front (" + study + ")",
-                    "no finished run both more accurate and cheaper by more than the CPU time's spread, " + spread.text() +
-                        "; value: the run's error",
+                    "no finished run both more accurate beyond the errors' bands and cheaper by more than the CPU time's spread, " +
+                        spread.text() + "; value: the run's error",
                     {}, false};
-  for (const CostRun& run : runs) {
+  std::vector<CostPoint> points;
+  for (const CostRun& run : runs)
+    points.push_back(cost_point(run.where, run.error, !std::isfinite(run.error), {run.cpu}, spread.relative, run.band, run.failed));
+  mark_front(points, spread.relative);
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const CostRun& run = runs[k];
     if (!run.paper || !std::isfinite(run.error)) continue;
-    const CostRun *beaten_by = nullptr, *tied_with = nullptr;  // tied: more accurate, cheaper within the spread
-    for (const CostRun& other : runs)
-      if (std::isfinite(other.error) && other.error < run.error && other.cpu < run.cpu)
-        (other.cpu * (1.0 + spread.relative) < run.cpu ? beaten_by : tied_with) = &other;
-    const std::string cost = " in " + number(1e3 * run.cpu, "%.3g") + " ms";
-    auto by = [&](const char* how, const CostRun* other) {
-      return std::string("; ") + how + " " + other->where + ": " + number(other->error, "%.3g") + " in " +
-             number(1e3 * other->cpu, "%.3g") + " ms";
-    };
-    if (!beaten_by && tied_with && std::isfinite(spread.relative))
-      claim.add_undecided(run.where + cost + by("tied with", tied_with), run.error);
+    const std::string where = run.where + " in " + number(1e3 * run.cpu, "%.3g") + " ms";
+    if (!std::isfinite(spread.relative))
+      claim.add_undecided(where + "; no timing spread measured", run.error);
+    else if (!points[k].dominated_by.empty())
+      claim.add(where + "; beaten by " + points[k].dominated_by, run.error, false);
+    else if (!points[k].ties.empty())
+      claim.add_undecided(where + "; tied with " + points[k].ties, run.error);
     else
-      claim.add(run.where + cost + (beaten_by ? by("beaten by", beaten_by) : ""), run.error,
-                !beaten_by && std::isfinite(spread.relative));
+      claim.add(where, run.error, true);
   }
   return claim;
 }
@@ -116,7 +119,8 @@ inline std::vector<CostRun> cost_runs(const Runs& runs, const Case& pattern, con
       p.cells = n;
       if (!runs.has(p)) continue;
       const SmoothResult& r = runs.at(p);
-      list.push_back({where(p), m.paper() && m.shape != "linear", r.failed ? std::nan("") : r.velocity_error, r.cpu_seconds});
+      list.push_back({where(p), m.paper() && m.shape != "linear", r.failed ? std::nan("") : r.velocity_error, r.cpu_seconds, r.velocity_band,
+                      r.ending() == mpm::Ending::failed});
     }
   }
   return list;

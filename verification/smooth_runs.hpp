@@ -121,9 +121,10 @@ inline const char* ending_name(const SmoothResult& r) {
 }
 
 /// Writes smooth_bar.csv, smooth_crossing.csv and smooth_manufactured.csv: one row per run, in the studies' order; each
-/// ends with the bands of its two errors (the even and odd particles'), the flat field's score and the run's ending.
+/// ends with the bands of its two errors (the even and odd particles'), the flat field's score, the run's ending and the
+/// band of its energy ratio (its change over the last step).
 inline void write_runs(const std::string& folder, const std::vector<Axes>& studies, const Runs& runs) {
-  const char* ending_columns = "velocity_band,stress_band,velocity_flat,ending\n";
+  const char* ending_columns = "velocity_band,stress_band,velocity_flat,ending,energy_band\n";
   std::ofstream bar(folder + "/smooth_bar.csv"), crossing(folder + "/smooth_crossing.csv"), manufactured(folder + "/smooth_manufactured.csv");
   bar << "amplitude,shape,integrator,ppc,cfl,cells,velocity_error,stress_error,energy_ratio,wall_seconds,steps,status,velocity_error_own_time,cpu_seconds," << ending_columns;
   crossing << "shape,integrator,ppc,amplitude_over_h,velocity_error,stress_error,status,velocity_error_own_time,cpu_seconds," << ending_columns;
@@ -142,7 +143,7 @@ inline void write_runs(const std::string& folder, const std::vector<Axes>& studi
           << r.wall_seconds << r.steps << status(r) << r.cpu_seconds;
     else
       continue;
-    row << r.velocity_band << r.stress_band << r.velocity_flat << ending_name(r);
+    row << r.velocity_band << r.stress_band << r.velocity_flat << ending_name(r) << r.energy_band;
     (c.group == Group::bar ? bar : c.group == Group::crossing ? crossing : manufactured) << row.text.str() << "\n";
   }
 }

@@ -93,12 +93,14 @@ inline void write_refinement(const std::vector<const SoilOutcome*>& sizes, const
 }
 
 /// One line per run: its settings, cost and measures; cpu_seconds is the first run's, cpu_fastest and cpu_slowest the
-/// range of its timing repeats (the runs of the 2 m grid's error-cost fronts; else the first run's, repeats 0).
+/// range of its timing repeats (the runs of the 2 m grid's error-cost fronts; else the first run's, repeats 0), then the
+/// bands the verdicts use: the RMS's, the mean settlement's floor and the energy drift's.
 inline void write_summary(const std::vector<SoilOutcome>& outcomes, const std::string& path) {
   auto out = csv(path,
                  "name,shape,lme_gamma,integrator,h,nu,X,Y,steps,wall_seconds,solver_seconds,u_final,u_exact_final,final_error,"
                  "rms_error,mean_settlement,swing,static_small_strain,static_log_strain,energy_drift,largest_mass_mismatch,status,"
-                 "newton_mean,newton_max,neighbours_mean,stress_update,cpu_seconds,cpu_fastest,cpu_slowest,repeats");
+                 "newton_mean,newton_max,neighbours_mean,stress_update,cpu_seconds,cpu_fastest,cpu_slowest,repeats,rms_band,mean_floor,"
+                 "energy_drift_band");
   for (const auto& o : outcomes) {
     const auto& r = o.result;
     const auto& s = o.settlement;
@@ -110,9 +112,10 @@ inline void write_summary(const std::vector<SoilOutcome>& outcomes, const std::s
         << r.neighbours_mean << "," << mpm::io::name_of(r.scene.stress_update) << "," << r.cpu_seconds << ",";
     const auto& t = o.cpu_repeats;
     if (t.empty())
-      out << r.cpu_seconds << "," << r.cpu_seconds << ",0\n";
+      out << r.cpu_seconds << "," << r.cpu_seconds << ",0";
     else
-      out << *std::min_element(t.begin(), t.end()) << "," << *std::max_element(t.begin(), t.end()) << "," << t.size() << "\n";
+      out << *std::min_element(t.begin(), t.end()) << "," << *std::max_element(t.begin(), t.end()) << "," << t.size();
+    out << "," << s.rms_band << "," << s.mean_floor << "," << s.energy_drift_band << "\n";
   }
 }
 

@@ -58,6 +58,7 @@ struct SettlementMeasures {
   /// after the ramp (constant gravity) the mechanical energy E = kinetic + strain + gravity potential is
   /// conserved: (max - min of E over t >= T/2) / (mean kinetic + strain energy there)
   double energy_drift = std::numeric_limits<double>::quiet_NaN();
+  double energy_drift_band = 0.0;  ///< its band: the larger move of the drift taken on the even or the odd samples alone
   double static_small_strain = 0.0;  ///< static u(Y), paper/07_exact_column.md
   double static_log_strain = 0.0;    ///< static u(Y) at finite (logarithmic) strain
 };
@@ -99,17 +100,22 @@ inline SettlementMeasures measure_settlement(const SoilResult& result) {
   }
   m.static_small_strain = column.static_displacement(result.reference_height);
   m.static_log_strain = log_strain_column(result.scene).displacement(result.reference_height);
-  {
+  // the drift on every sample after the ramp (step 1), or on every other one from `first` (its band's halves)
+  auto drift = [&result](size_t first, size_t step) {
     double lowest = INFINITY, highest = -INFINITY, strain = 0.0;
     int count = 0;
+    size_t after = 0;  // the index among the samples after the ramp
     for (size_t n = 0; n < result.time.size(); ++n) {
       if (result.time[n] < 0.5 * result.scene.ramp_period) continue;
+      if (after++ % step != first) continue;
       const double energy = result.kinetic_plus_strain[n] + result.gravity_potential[n];
       lowest = std::min(lowest, energy), highest = std::max(highest, energy);
       strain += result.kinetic_plus_strain[n], ++count;
     }
-    if (count > 1) m.energy_drift = (highest - lowest) / (strain / count);
-  }
+    return count > 1 ? (highest - lowest) / (strain / count) : std::numeric_limits<double>::quiet_NaN();
+  };
+  m.energy_drift = drift(0, 1);
+  m.energy_drift_band = mpm::band_of_halves(m.energy_drift, drift(0, 2), drift(1, 2));
   const double end = result.scene.control.end_time, period = first_period(result.scene);
   if (!result.failed && end - 5.0 * period >= 0.5 * result.scene.ramp_period) {
     const Window last = window(result, m.exact, end - 4.0 * period, end);

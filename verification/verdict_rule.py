@@ -38,6 +38,7 @@ def verdict_text(outcomes):
     """The verdict's words, as the C++ suites write them (verification/claims.hpp, DomainClaim::verdict)."""
     holds, fails, undecided, stopped = counts(outcomes)
     n = holds + fails
-    text = ("no samples compared" if n == 0 else "holds on all %d" % n if holds == n else
+    text = ("undecided on all %d" % undecided if n == 0 and undecided else
+            "no samples compared" if n == 0 else "holds on all %d" % n if holds == n else
             "fails on all %d" % n if holds == 0 else "holds on %d of %d" % (holds, n))
     return text + " (%d hold, %d fail, %d undecided, %d stopped)" % (holds, fails, undecided, stopped)
