@@ -26,11 +26,13 @@ struct OrderFit {
   mpm::Measured measured() const {
     return valid() ? mpm::Measured{order, 2.0 * error, mpm::Ending::done} : mpm::Measured{order, 0.0, mpm::Ending::stopped};
   }
-  /// "0.93 ± 0.02", or "— (2 stopped)", "— (2 meshes)"; "(1 failed, left out)" after either where runs failed
+  /// "0.93 ± 0.02", or "— (2 stopped in the fitted range)", "— (2 meshes)"; "(1 failed, left out)" after either where
+  /// runs of the range failed (the meshes below the range are not counted: the series' text names every stop)
   std::string text() const {
     const std::string left_out = failed ? " (" + std::to_string(failed) + " failed, left out)" : "";
     if (valid()) return number(order, "%.3g") + " ± " + number(error, "%.1g") + left_out;
-    return (stopped ? "— (" + std::to_string(stopped) + " stopped)" : "— (" + std::to_string(points) + " meshes)") + left_out;
+    return (stopped ? "— (" + std::to_string(stopped) + " stopped in the fitted range)" : "— (" + std::to_string(points) + " meshes)") +
+           left_out;
   }
   /// "the order lies on `side` of `threshold`" by the one rule: stopped where a run of the range stopped or too few
   /// meshes ran; fails where runs failed and left fewer than 3 meshes (their scores are no approximation: the series

@@ -139,6 +139,10 @@ struct StressMeasures {
   double bottom_row_exact = 0.0;      ///< sigma_exact(Y, t) there
   double exact_base = 0.0;            ///< sigma_exact(0, t), the base
   double largest_settlement = 0.0;    ///< max over particles of Y - y
+  /// the bands of rms_relative and largest_settlement (mpm::band_of_halves; the one rule): their larger move when taken
+  /// on the even or the odd rows of particles alone (the RMS: the field varies with Y only), on the even or the odd
+  /// particles alone (the largest: every particle of the top row settles alike)
+  double rms_band = 0.0, largest_settlement_band = 0.0;
 };
 
 /// sigma_yy of every particle at a snapshot against the exact sigma_yy at its reference height:
@@ -147,18 +151,34 @@ inline StressMeasures measure_stress(const SoilResult& result, const SoilSnapsho
   StressMeasures m;
   const auto column = exact_column(result.scene);
   const double scale = result.scene.density * std::abs(result.scene.gravity[1]) * result.scene.length[1];
-  double sum = 0.0;
+  double sum = 0.0, half_sum[2] = {0.0, 0.0}, half_largest[2] = {0.0, 0.0};
+  int half_count[2] = {0, 0}, index = 0;
+  // the RMS's halves are the even and the odd rows of particles (the field varies with Y; along a row it does not)
+  std::vector<double> rows;
+  for (const auto& p : snap.particles) rows.push_back(p.reference_y);
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }), rows.end());
+  auto row_parity = [&rows](double y) {
+    return static_cast<int>(std::lower_bound(rows.begin(), rows.end(), y - 1e-9) - rows.begin()) % 2;
+  };
   m.bottom_row_height = std::numeric_limits<double>::infinity();
   for (const auto& p : snap.particles) m.bottom_row_height = std::min(m.bottom_row_height, p.reference_y);
   int bottom_count = 0;
   for (const auto& p : snap.particles) {
     const double error = (p.sigma_yy - column.stress(p.reference_y, snap.time)) / scale;
     sum += error * error;
+    const int row = row_parity(p.reference_y), half = index++ % 2;  // the bands' halves: rows for the RMS, particles for the largest
+    half_sum[row] += error * error, ++half_count[row];
+    half_largest[half] = std::max(half_largest[half], p.reference_y - p.y);
     m.largest_relative = std::max(m.largest_relative, std::abs(error));
     m.largest_settlement = std::max(m.largest_settlement, p.reference_y - p.y);
     if (std::abs(p.reference_y - m.bottom_row_height) < 1e-9) m.bottom_row_stress += p.sigma_yy, ++bottom_count;
   }
   m.rms_relative = std::sqrt(sum / snap.particles.size());
+  if (half_count[0] > 0 && half_count[1] > 0) {
+    m.rms_band = mpm::band_of_halves(m.rms_relative, std::sqrt(half_sum[0] / half_count[0]), std::sqrt(half_sum[1] / half_count[1]));
+    m.largest_settlement_band = mpm::band_of_halves(m.largest_settlement, half_largest[0], half_largest[1]);
+  }
   m.bottom_row_stress /= bottom_count;
   m.bottom_row_exact = column.stress(m.bottom_row_height, snap.time);
   m.exact_base = column.stress(0.0, snap.time);

@@ -36,6 +36,8 @@ inline std::string metres(double value) { return number(value, "%.4f") + " m"; }
 /// Three significant digits: the errors an error-cost comparison ranks can lie below 0.0001 m.
 inline std::string significant_metres(double value) { return number(value, "%.3g") + " m"; }
 inline std::string percent(double value) { return number(100.0 * value, "%.1f") + " %"; }
+/// A band in per cent, to two significant digits (a small one shows, not 0.0 %).
+inline std::string band_percent(double value) { return number(100.0 * value, "%.2g") + " %"; }
 inline std::string kilopascals(double value) { return number(value / 1e3, "%.1f") + " kPa"; }
 
 inline std::string method_label(const std::string& method) {
@@ -56,6 +58,17 @@ inline std::string run_name(const std::string& method, const std::string& integr
   return method + "_" + integrator + "_h" + number(h, "%g");
 }
 
+/// The settlement at the end against the exact one, |u - u_exact| / |u_exact|, with its band (one rule): the change of u
+/// over the last sample interval (the end landing a sample earlier), / |u_exact|; stopped where the run stopped.
+inline mpm::Measured final_error_measured(const SoilOutcome& o) {
+  const auto& u = o.result.displacement;
+  const double exact = std::abs(o.settlement.exact_final);
+  const double band = u.size() > 1 ? std::abs(u.back() - u.end()[-2]) / exact : 0.0;
+  return {std::abs(o.settlement.final_error) / exact, band, o.result.failed ? mpm::Ending::stopped : mpm::Ending::done};
+}
+/// "error 2.7 % ± 0.01 %"
+inline std::string final_error_text(const mpm::Measured& m) { return "error " + percent(m.value) + " ± " + band_percent(m.band); }
+
 /// Fig. 12: sigma_yy of the LME gamma = 3, NPC run at t = 0, 5 and 20 s.
 inline std::vector<Claim> fig12_claims(const SoilOutcome& paper) {
   std::vector<Claim> claims;
@@ -70,20 +83,24 @@ inline std::vector<Claim> fig12_claims(const SoilOutcome& paper) {
     const auto m = measure_stress(paper.result, snaps[k]);
     const double load = exact_column(scene).gravity_at(snaps[k].time) / std::abs(scene.gravity[1]);
     const bool end = k == 2;
-    claims.push_back(
-        {"t = " + number(snaps[k].time, "%g") + " s: sigma_yy = " + (end ? "-rho g (H - y), -0.589 MPa" : "-rho g (H - y)/2, -0.29 MPa") +
-             " at the base; particles within RMS " + percent(stress_tolerance) + " of rho g(t) H of the exact sigma_yy(Y, t)",
-         "RMS " + percent(m.rms_relative / load) + ", largest " + percent(m.largest_relative / load) + "; bottom row (Y = " +
-             number(m.bottom_row_height, "%g") + " m): " + kilopascals(m.bottom_row_stress) + ", exact " + kilopascals(m.bottom_row_exact) +
-             "; exact at the base " + kilopascals(m.exact_base),
-         m.rms_relative / load <= stress_tolerance, end});
+    // one criterion, the RMS with its band (the even and odd particles'); the base value is shown, not judged
+    const mpm::Measured rms{m.rms_relative / load, m.rms_band / load, mpm::Ending::done};
+    claims.push_back(judged_claim(
+        "t = " + number(snaps[k].time, "%g") + " s (exact sigma_yy = " + (end ? "-rho g (H - y), -0.589 MPa" : "-rho g (H - y)/2, -0.29 MPa") +
+            " at the base): particles within RMS " + percent(stress_tolerance) + " of rho g(t) H of the exact sigma_yy(Y, t)",
+        "RMS " + percent(rms.value) + " ± " + band_percent(rms.band) + ", largest " + percent(m.largest_relative / load) + "; bottom row (Y = " +
+            number(m.bottom_row_height, "%g") + " m): " + kilopascals(m.bottom_row_stress) + ", exact " + kilopascals(m.bottom_row_exact) +
+            "; exact at the base " + kilopascals(m.exact_base),
+        mpm::judge(rms, mpm::Side::below, mpm::threshold(stress_tolerance)), end));
   }
   const auto last = measure_stress(paper.result, snaps[2]);
-  claims.push_back({"particles move down by up to 0.59 m (within " + percent(settlement_tolerance) + ")",
-                    "largest settlement at t = 20 s: " + metres(last.largest_settlement) + " (top row, Y = " +
-                        number(paper.result.reference_height, "%g") + " m; exact small strain " +
-                        metres(-paper.settlement.exact_final) + ", finite strain static " + metres(-paper.settlement.static_log_strain) + ")",
-                    std::abs(last.largest_settlement - 0.589) <= settlement_tolerance * 0.589, false});
+  const mpm::Measured largest{last.largest_settlement, last.largest_settlement_band, mpm::Ending::done};
+  claims.push_back(judged_claim("particles move down by up to 0.59 m (within " + percent(settlement_tolerance) + ")",
+                                "largest settlement at t = 20 s: " + metres(largest.value) + " ± " + metres(largest.band) + " (top row, Y = " +
+                                    number(paper.result.reference_height, "%g") + " m; exact small strain " +
+                                    metres(-paper.settlement.exact_final) + ", finite strain static " +
+                                    metres(-paper.settlement.static_log_strain) + ")",
+                                mpm::judge_within(largest, 0.589 * (1.0 - settlement_tolerance), 0.589 * (1.0 + settlement_tolerance))));
   return claims;
 }
 
@@ -130,10 +147,11 @@ inline std::vector<DomainClaim> fig13_claims(const SoilLookup& get, const std::v
 /// Fig. 13's bound: the paper's run (LME gamma = 3, NPC) settles within the tolerance of the exact solution at 20 s.
 inline Claim fig13_settlement_claim(const SoilLookup& get) {
   const auto& paper = get(run_name("lme3", "npc", 2.0));
-  const double error = paper.settlement.final_error, exact = paper.settlement.exact_final;
-  return {"LME gamma = 3, NPC: settlement at t = 20 s within " + percent(settlement_tolerance) + " of the exact one",
-          metres(paper.settlement.final_displacement) + " against " + metres(exact) + ": error " + percent(std::abs(error / exact)),
-          !paper.result.failed && std::abs(error) <= settlement_tolerance * std::abs(exact), true};
+  const mpm::Measured error = final_error_measured(paper);
+  return judged_claim("LME gamma = 3, NPC: settlement at t = 20 s within " + percent(settlement_tolerance) + " of the exact one",
+                      metres(paper.settlement.final_displacement) + " against " + metres(paper.settlement.exact_final) + ": " +
+                          final_error_text(error),
+                      mpm::judge(error, mpm::Side::below, mpm::threshold(settlement_tolerance)), true);
 }
 
 /// One run of the comparison by error and cost (CPU time).
@@ -215,18 +233,18 @@ inline Claim best_of_paper_claim(const std::vector<CostEntry>& entries, const Er
 inline std::vector<Claim> baseline_claims(const SoilLookup& get, const std::vector<std::string>& methods,
                                           const std::vector<std::string>& stress_updates) {
   std::vector<Claim> claims;
-  std::string stability;
-  bool stable = true;
+  // a claim per run: it completes 20 s at the block's CFL 0.1, which lies below its linearised step's limit (shown: the
+  // premise; a CFL at or above the limit is no test of the claim and is reported as not holding)
   for (const auto& method : stress_updates) {
     const auto& o = get(run_name(method, "fe", 2.0));
     const double limit = mpm::scene_cfl_limit(o.result.scene), scale = std::abs(o.settlement.static_small_strain);
-    stable = stable && !o.result.failed && o.result.scene.control.cfl < limit;
-    stability += method_label(method) + ": limit " + number(limit, "%.3f") + ", " +
-                 (o.result.failed ? "stopped (" + o.result.failure + ")" : "RMS " + percent(o.settlement.rms_error / scale)) + "; ";
+    claims.push_back({method_label(method) + " (forward Euler) completes 20 s at the block's CFL 0.1, below the limit of its linearised step "
+                          "(mpm stability's analysis on a small uniform block with 2 x 2 particles per cell)",
+                      "limit " + number(limit, "%.3f") + "; " +
+                          (o.result.failed ? "stopped (" + o.result.failure + ")" : "completed; RMS of u over 0-20 s " + percent(o.settlement.rms_error / scale) +
+                                                                                         " of the static settlement"),
+                      !o.result.failed && o.result.scene.control.cfl < limit, false});
   }
-  claims.push_back({"USL and MUSL (forward Euler) complete 20 s at the block's CFL 0.1, below the limit of their linearised step "
-                    "(mpm stability's analysis on a small uniform block with 2 x 2 particles per cell)",
-                    stability + "RMS of u over 0-20 s relative to the static settlement", stable, false});
   std::vector<CostEntry> entries;
   for (const std::string integrator : {"npc", "fe"})
     for (const auto& method : methods) entries.push_back({method + " " + integrator, &get(run_name(method, integrator, 2.0))});
@@ -306,11 +324,13 @@ inline std::vector<Claim> poisson_claims(const SoilOutcome& rollers, const SoilO
                         " over " + std::to_string(ratio.particles) + " particles",
                     ratio.largest_deviation <= ratio_tolerance, true});
   const auto& s = rollers.settlement;
-  claims.push_back({"nu = 0.3: settlement at t = 20 s within " + percent(settlement_tolerance) +
-                        " of the exact column with M = E(1-nu)/((1+nu)(1-2nu))",
-                    metres(s.final_displacement) + " against " + metres(s.exact_final) + " (" + percent(std::abs(s.final_error / s.exact_final)) +
-                        "); mean after the ramp " + metres(s.mean_settlement) + ", finite-strain static " + metres(s.static_log_strain),
-                    !rollers.result.failed && std::abs(s.final_error) <= settlement_tolerance * std::abs(s.exact_final), false});
+  const mpm::Measured error = final_error_measured(rollers);
+  claims.push_back(judged_claim("nu = 0.3: settlement at t = 20 s within " + percent(settlement_tolerance) +
+                                    " of the exact column with M = E(1-nu)/((1+nu)(1-2nu))",
+                                metres(s.final_displacement) + " against " + metres(s.exact_final) + " (" + final_error_text(error) +
+                                    "); mean after the ramp " + metres(s.mean_settlement) + ", finite-strain static " +
+                                    metres(s.static_log_strain),
+                                mpm::judge(error, mpm::Side::below, mpm::threshold(settlement_tolerance))));
   const auto walled = measure_stress_ratio(margins.result, margins.result.snapshots.back());
   claims.push_back({"nu = 0.3 with rigid margin rows behind the walls: LME still gives sigma_xx / sigma_yy = "
                     "nu/(1-nu) within " + number(ratio_tolerance, "%g"),
@@ -332,11 +352,12 @@ inline std::vector<Claim> boundary_claims(const SoilLookup& get) {
       stress = "sigma_yy RMS " + percent(m.rms_relative) + " of rho g H, bottom row " + kilopascals(m.bottom_row_stress) + " (exact " +
                kilopascals(m.bottom_row_exact) + ")";
     }
-    claims.push_back({method_label(method) + " with rigid margin rows behind the walls and below the base: settlement at t = 20 s within " +
-                          percent(settlement_tolerance) + " of the exact one",
-                      metres(s.final_displacement) + " against " + metres(s.exact_final) + " (" + percent(std::abs(s.final_error / s.exact_final)) +
-                          "); without the rows " + metres(plain.settlement.final_displacement) + "; " + stress,
-                      !walled.result.failed && std::abs(s.final_error) <= settlement_tolerance * std::abs(s.exact_final), false});
+    const mpm::Measured error = final_error_measured(walled);
+    claims.push_back(judged_claim(method_label(method) + " with rigid margin rows behind the walls and below the base: settlement at t = 20 s within " +
+                                      percent(settlement_tolerance) + " of the exact one",
+                                  metres(s.final_displacement) + " against " + metres(s.exact_final) + " (" + final_error_text(error) +
+                                      "); without the rows " + metres(plain.settlement.final_displacement) + "; " + stress,
+                                  mpm::judge(error, mpm::Side::below, mpm::threshold(settlement_tolerance))));
   }
   const auto& free_sides = get("lme3_npc_h2_free_sides");
   const auto& rollers = get("lme3_npc_h2");
