@@ -232,3 +232,29 @@ TEST_CASE("Eq. (16), Eq. (20), Eq. (23), Eq. (33): each scene's variant words be
   CHECK(std::holds_alternative<mpm::NewmarkMoveWithVelocityPred>(npc.position_velocity));
   CHECK(std::holds_alternative<mpm::NewmarkAverageVelocity>(npc.particle_velocity));
 }
+
+TEST_CASE("Eq. (32) against a PIC/FLIP blend: on the smooth first mode NPC damps as forward Euler with flip fraction 1 - 4 (1 - gamma) CFL^2 cos^2(kh/2); 1/2 only at CFL 1/2") {
+  // paper/10_integrator_analysis.md, "Eq. (32) against a PIC/FLIP blend": per step Eq. (32) keeps 1 - (1 - gamma) Omega^2
+  // of a mode's energy, Omega = CFL sin(kh), and the blend 1 - (1 - alpha) sin^2(kh/2) (linear shapes, 1 ppc); equal for
+  // alpha = 1 - 4 (1 - gamma) CFL^2 cos^2(kh/2). The first mode of the bar, kh = pi / 2n, over one period.
+  const verification::BarScene bar(mpm::testing::source_path("scenes/vibrating_bar.toml"));
+  const int n = 32;
+  const double c2 = std::pow(std::cos(M_PI / (4.0 * n)), 2);
+  // the decay exponent over the period, -ln(E(T)/E(0)): the per-step losses add up in it
+  auto loss = [&](const std::string& integrator, double cfl, std::vector<std::string> settings) {
+    const auto result = verification::run_bar(bar, {"linear", integrator, n, 1, cfl, 1e-6, std::move(settings)}, nullptr);
+    REQUIRE_FALSE(result.failed);
+    return -std::log(result.energy_ratio);
+  };
+  for (const double cfl : {0.25, 0.5}) {
+    const double alpha = 1.0 - 4.0 * 0.5 * cfl * cfl * c2;
+    const double npc = loss("npc", cfl, {}), blend = loss("fe", cfl, {"solver.flip_fraction=" + std::to_string(alpha)});
+    INFO("CFL ", cfl, ": NPC's decay exponent ", npc, ", FE with flip fraction ", alpha, ": ", blend);
+    CHECK(npc > 0.01);
+    CHECK(std::abs(blend - npc) <= 0.02 * npc);
+  }
+  // at CFL 1/4 the 50 % blend is no match: it loses (1 - 0.5) / (1 - alpha) = 4 times as much to leading order
+  const double npc = loss("npc", 0.25, {}), half = loss("fe", 0.25, {"solver.flip_fraction=0.5"});
+  INFO("CFL 0.25: NPC's decay exponent ", npc, ", the 50 % blend's ", half);
+  CHECK(std::abs(half / npc - 4.0 / c2) <= 0.02 * 4.0);
+}
