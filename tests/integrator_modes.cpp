@@ -233,7 +233,7 @@ TEST_CASE("Eq. (16), Eq. (20), Eq. (23), Eq. (33): each scene's variant words be
   CHECK(std::holds_alternative<mpm::NewmarkAverageVelocity>(npc.particle_velocity));
 }
 
-TEST_CASE("Eq. (32) against a PIC/FLIP blend: on the smooth first mode NPC damps as forward Euler with flip fraction 1 - 4 (1 - gamma) CFL^2 cos^2(kh/2); 1/2 only at CFL 1/2") {
+TEST_CASE("Eq. (32) against a PIC/FLIP blend: on the smooth first mode NPC damps as forward Euler with flip fraction 1 - 4 (1 - gamma) CFL^2 cos^2(kh/2), 1/2 only at CFL 1/2") {
   // paper/10_integrator_analysis.md, "Eq. (32) against a PIC/FLIP blend": per step Eq. (32) keeps 1 - (1 - gamma) Omega^2
   // of a mode's energy, Omega = CFL sin(kh), and the blend 1 - (1 - alpha) sin^2(kh/2) (linear shapes, 1 ppc); equal for
   // alpha = 1 - 4 (1 - gamma) CFL^2 cos^2(kh/2). The first mode of the bar, kh = pi / 2n, over one period.
