@@ -39,6 +39,7 @@ inline LmeOptions lme_options(const io::Scene& scene) {
   options.newton_tolerance = scene.lme_newton_tol;
   options.max_iterations = scene.lme_max_iterations;
   options.beta_rule = scene.lme_beta;
+  options.neighbours = scene.lme_neighbours;
   return options;
 }
 

@@ -14,7 +14,8 @@ namespace verification::dyka {
 /// Every run: mass conservation and whether it reached its end time, a sample per run (those that hold counted, not named).
 inline Section all_runs_section(const Runs& runs) {
   const std::vector<std::pair<std::string, std::string>> studies{
-      {"sweep and large CFLs", "dyka_"}, {"baselines", "dyka_base_"}, {"gammas", "dyka_gamma_"}, {"choices", "dyka_choice_"}, {"energy", "dyka_energy_"}};
+      {"sweep and large CFLs", "dyka_"}, {"baselines", "dyka_base_"}, {"gammas", "dyka_gamma_"}, {"choices", "dyka_choice_"}, {"energy", "dyka_energy_"},
+      {"γ on three meshes", "dyka_gammamesh_"}, {"step refinement", "dyka_dt_"}, {"amplitude sweep", "dyka_amp_"}};
   auto study_of = [&](const std::string& name) {
     std::string found = studies.front().first;
     for (const auto& [study, prefix] : studies)

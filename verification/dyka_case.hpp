@@ -55,6 +55,13 @@ struct DykaResult {
   double flat_rms = 0.0;
   /// v and sigma along the bar at the steps nearest to profile_fractions of the end time (dyka_profiles.hpp)
   std::vector<Profile> profiles;
+  /// The all-particle space-time norm: the RMS of v_p - v(X_p, t) over every particle and every sample (every step),
+  /// with v the exact solution at the particle's reference position; and the same on the even and on the odd samples
+  /// alone (its band, mpm::band_of_halves), m/s. Point A's RMS (`rms`) scores one particle of the same field.
+  double space_time = 0.0, space_time_even = 0.0, space_time_odd = 0.0;
+  /// Every particle's v and sigma_xx at the run's last step (its end time: the run lands on it)
+  std::vector<double> final_velocity, final_stress;
+  double v0 = 0.0;             ///< the initial velocity of the loaded quarter, m/s (the scene's, -5 unless set)
   double mass_error = 0.0;     ///< largest relative |sum m_I - sum m_p| of the run
   double newton_mean = 0.0, neighbours_mean = 0.0;
   int newton_max = 0;
@@ -64,18 +71,35 @@ struct DykaResult {
   std::string failure;  ///< the solver's diagnosis when it failed
 };
 
-/// Records the velocity of particle A at every step.
+/// Records the velocity of particle A at every step, the squared errors of every particle against `bar` (the
+/// space-time norm, even and odd samples apart) and every particle's v and sigma at the last sample.
 struct VelocityRecorder : mpm::Monitor<1> {
-  explicit VelocityRecorder(int observed) : particle(observed) {}
+  VelocityRecorder(int observed, const mpm::exact::ElasticBar& exact_bar) : particle(observed), bar(exact_bar) {}
   void sample(long, double t, const mpm::Particles<1>& particles, const mpm::Balances<1>& balances) override {
+    const int parity = int(time.size() % 2);
     time.push_back(t);
     velocity.push_back(particles.velocity[particle][0]);
     energy.push_back(balances.total());
     profiles.sample(t, particles);
+    for (int p = 0; p < particles.size(); ++p) {
+      const double error = particles.velocity[p][0] - bar.velocity(particles.reference_position[p][0], t);
+      squares[parity] += error * error;
+    }
+    terms[parity] += particles.size();
+    final_velocity.assign(particles.size(), 0.0), final_stress.assign(particles.size(), 0.0);
+    for (int p = 0; p < particles.size(); ++p) final_velocity[p] = particles.velocity[p][0], final_stress[p] = particles.stress[p](0, 0);
+  }
+  /// sqrt(sum / count) of the even (0), odd (1) or all (2) samples' squared errors
+  double space_time(int which) const {
+    const double sum = which == 2 ? squares[0] + squares[1] : squares[which];
+    const double count = which == 2 ? terms[0] + terms[1] : terms[which];
+    return count > 0.0 ? std::sqrt(sum / count) : 0.0;
   }
   ProfileCapture profiles;
   int particle;
-  std::vector<double> time, velocity, energy;
+  const mpm::exact::ElasticBar& bar;
+  std::vector<double> time, velocity, energy, final_velocity, final_stress;
+  double squares[2] = {0.0, 0.0}, terms[2] = {0.0, 0.0};
 };
 
 /// The scene settings that select a shape function on the Dyka bar. Every shape runs on the grid
@@ -134,7 +158,16 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   scene.control.threads = threads;
   const mpm::Setup<1> setup = mpm::build_setup<1>(scene);
   result.cells = scene.cells[0];
-  VelocityRecorder recorder(setup.observed.at(0));
+  // The exact solution of the discrete initial data: v0 on the union of the domains
+  // [X_p - l_p, X_p + l_p] of the particles that start with it (L/4 when the cells divide by 4).
+  const double length = scene.length[0], v0 = scene.initial_velocities.at(0).velocity[0];
+  double loaded = 0.0;
+  for (int p = 0; p < setup.particles.size(); ++p)
+    if (setup.particles.velocity[p][0] == v0)
+      loaded = std::max(loaded, setup.particles.reference_position[p][0] + setup.particles.half_length[p][0]);
+  const mpm::exact::ElasticBar bar(length, scene.young_modulus, scene.density, {{0.0, loaded, v0, 0.0}});
+  result.v0 = v0;
+  VelocityRecorder recorder(setup.observed.at(0), bar);
   for (double fraction : profile_fractions) recorder.profiles.targets.push_back(fraction * scene.control.end_time);
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
@@ -152,14 +185,6 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
   result.newton_mean = summary.shape.newton_iterations_mean();
   result.newton_max = summary.shape.newton_iterations_max();
   result.neighbours_mean = summary.shape.neighbours_mean();
-  // The exact solution of the discrete initial data: v0 on the union of the domains
-  // [X_p - l_p, X_p + l_p] of the particles that start with it (L/4 when the cells divide by 4).
-  const double length = scene.length[0], v0 = scene.initial_velocities.at(0).velocity[0];
-  double loaded = 0.0;
-  for (int p = 0; p < setup.particles.size(); ++p)
-    if (setup.particles.velocity[p][0] == v0)
-      loaded = std::max(loaded, setup.particles.reference_position[p][0] + setup.particles.half_length[p][0]);
-  const mpm::exact::ElasticBar bar(length, scene.young_modulus, scene.density, {{0.0, loaded, v0, 0.0}});
   const double reference_position = setup.particles.reference_position[setup.observed[0]][0];
   result.profiles = recorder.profiles.profiles;
   for (Profile& profile : result.profiles)
@@ -167,6 +192,8 @@ inline DykaResult run_dyka(const std::string& scene_path, const std::string& nam
       profile.exact_velocity.push_back(bar.velocity(x, profile.time)), profile.exact_stress.push_back(bar.stress(x, profile.time));
   result.time = recorder.time;
   result.velocity = recorder.velocity;
+  result.space_time = recorder.space_time(2), result.space_time_even = recorder.space_time(0), result.space_time_odd = recorder.space_time(1);
+  result.final_velocity = recorder.final_velocity, result.final_stress = recorder.final_stress;
   for (size_t n = 0; n < result.time.size(); ++n) {
     result.exact.push_back(bar.velocity(reference_position, result.time[n]));
     result.largest_speed = std::max(result.largest_speed, std::abs(result.velocity[n]));

@@ -176,6 +176,55 @@ inline std::vector<EnergyCase> energy_cases() {
   return cases;
 }
 
+/// The referee's experiments (dyka_experiments.hpp). LME's gamma of Fig. 8 on a mesh without crossing, one in the
+/// transition band and the crossing mesh of the sweep, with both integrators:
+const std::vector<int> gamma_meshes{160, 640, 2560};
+inline std::string gamma_mesh_name(const std::string& integrator, double gamma, int cells) {
+  return "dyka_gammamesh_" + integrator + "_" + text(gamma) + "_" + std::to_string(cells);
+}
+/// The temporal order alone: the step refined at fixed h (CFL halved from 0.4 to 0.025), against the run at
+/// temporal_reference_cfl, 4 times finer than the finest, on two meshes without crossing.
+const std::vector<int> temporal_cells{40, 160};
+const std::vector<double> temporal_cfls{0.4, 0.2, 0.1, 0.05, 0.025};
+constexpr double temporal_reference_cfl = 0.00625;
+inline std::vector<double> with_reference(std::vector<double> cfls) {
+  cfls.push_back(temporal_reference_cfl);
+  return cfls;
+}
+inline std::string temporal_name(const std::string& shape, const std::string& integrator, int cells, double cfl) {
+  return "dyka_dt_" + shape + "_" + integrator + "_" + std::to_string(cells) + "_cfl" + text(cfl);
+}
+/// Grid crossing isolated: the loaded quarter's initial speed swept on one mesh so that the free end's largest
+/// displacement U = |v0| (L/4) / c is the fraction U/h listed (the scene's 5 m/s gives 0.158 there); the particle next
+/// to the free end reaches a cell face at U/h = 1/2.
+constexpr int amplitude_cells = 640;
+const std::vector<double> amplitude_ratios{0.01, 0.1, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0};
+inline double amplitude_speed(double ratio) { return ratio * (0.1333 / amplitude_cells) / largest_displacement * speed_v0; }
+inline std::string amplitude_name(const std::string& shape, const std::string& integrator, double ratio) {
+  return "dyka_amp_" + shape + "_" + integrator + "_" + text(ratio);
+}
+inline std::vector<CaseSpec> experiment_cases() {
+  std::vector<CaseSpec> cases;
+  for (int cells : gamma_meshes)
+    for (const auto& integrator : integrators)
+      for (double gamma : gammas)
+        cases.push_back({gamma_mesh_name(integrator, gamma, cells),
+                         with(mesh_settings("lme", cells), {integrator_setting(integrator), "solver.lme_gamma=" + text(gamma, "%.2f")})});
+  for (int cells : temporal_cells)
+    for (const auto& shape : shapes)
+      for (const auto& integrator : integrators)
+        for (double cfl : with_reference(temporal_cfls))
+          cases.push_back({temporal_name(shape, integrator, cells, cfl),
+                           with(mesh_settings(shape, cells), {integrator_setting(integrator), "solver.cfl=" + text(cfl)})});
+  for (const auto& shape : shapes)
+    for (const auto& integrator : integrators)
+      for (double ratio : amplitude_ratios)
+        cases.push_back({amplitude_name(shape, integrator, ratio),
+                         with(mesh_settings(shape, amplitude_cells),
+                              {integrator_setting(integrator), "initial_velocity[0].velocity=[" + text(-amplitude_speed(ratio), "%.17g") + "]"})});
+  return cases;
+}
+
 /// Every run that depends on no other: the sweep, the large CFLs, the Newmark average, the gammas, the baselines,
 /// the choices and the energy runs (the authors' beta on authors_cells as it stands).
 inline std::vector<CaseSpec> independent_cases_of_both() {
@@ -209,6 +258,7 @@ inline std::vector<CaseSpec> independent_cases_of_both() {
   for (const auto& c : energy_cases())
     cases.push_back({c.name(), with(shape_settings(c.shape), {integrator_setting(c.integrator), "solver.cfl=" + text(c.cfl),
                                                               "solver.end_time=1.0551e-3", "output.snapshots=[]"})});
+  for (auto& spec : experiment_cases()) cases.push_back(std::move(spec));
   return cases;
 }
 
@@ -229,7 +279,8 @@ inline bool choice_reference(const std::string& name) {
 inline bool in_part(const std::string& name, Part part) {
   auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
   if (starts("dyka_gamma_")) return part == Part::figures || choice_reference(name);
-  const bool beyond = starts("dyka_base_") || starts("dyka_choice_") || starts("dyka_energy_") ||
+  const bool beyond = starts("dyka_base_") || starts("dyka_choice_") || starts("dyka_energy_") || starts("dyka_gammamesh_") ||
+                      starts("dyka_dt_") || starts("dyka_amp_") ||
                       name.find("_npcavg_") != std::string::npos;
   return part == Part::studies || !beyond;
 }
@@ -245,10 +296,13 @@ inline std::vector<CaseSpec> independent_cases(Part part) {
 /// Cost weight of a case for the order of the queue (longest first, so that the cores finish together).
 inline double case_weight(const CaseSpec& spec) {
   int cells = 40;
-  for (const auto& o : spec.overrides)
+  double cfl = 0.5;
+  for (const auto& o : spec.overrides) {
     if (o.rfind("grid.cells=[", 0) == 0) cells = std::stoi(o.substr(12));
+    if (o.rfind("solver.cfl=", 0) == 0) cfl = std::stod(o.substr(11));
+  }
   const double shape = spec.name.find("_lme") != std::string::npos ? 6.0 : spec.name.find("_linear_") != std::string::npos ? 1.0 : 2.0;
-  return double(cells) * cells * shape;
+  return double(cells) * cells * shape * 0.5 / cfl;
 }
 
 }  // namespace verification::dyka
@@ -264,7 +318,7 @@ TEST_CASE("Dyka suite's parts: Fig. 8's gammas only in make figures, the studies
   CHECK(in_part(gamma_name("npc", 0.8), Part::studies));
   for (const auto& c : choice_cases) CHECK(in_part(c.reference_name(), Part::studies));
   for (const char* beyond : {"dyka_base_bspline3_fe_40", "dyka_choice_courant_sum_linear_fe_40", "dyka_energy_lme_npc_cfl0.1",
-                             "dyka_linear_npcavg_40"}) {
+                             "dyka_linear_npcavg_40", "dyka_gammamesh_npc_0.8_640", "dyka_dt_lme_fe_160_cfl0.05", "dyka_amp_ugimp_npc_1.5"}) {
     CHECK(!in_part(beyond, Part::figures));
     CHECK(in_part(beyond, Part::studies));
   }

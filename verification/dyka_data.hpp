@@ -35,7 +35,9 @@ inline void sweep_row(std::ofstream& out, const DykaResult& run, const std::stri
       << run.cpu_seconds << "," << run.overshoot << "," << run.undershoot << "," << run.ringing << "," << rms_band_over_v0(run) << ","
       << ending(run) << "," << (run.failed ? std::nan("") : mpm::band_of_halves(run.ringing, run.even.ringing, run.odd.ringing)) << ","
       << (run.failed ? std::nan("") : mpm::band_of_halves(run.overshoot, run.even.overshoot, run.odd.overshoot)) << ","
-      << (run.failed ? std::nan("") : mpm::band_of_halves(run.undershoot, run.even.undershoot, run.odd.undershoot)) << "\n";
+      << (run.failed ? std::nan("") : mpm::band_of_halves(run.undershoot, run.even.undershoot, run.odd.undershoot)) << ","
+      << (run.failed ? std::nan("") : run.space_time / speed_v0) << ","
+      << (run.failed ? std::nan("") : mpm::band_of_halves(run.space_time, run.space_time_even, run.space_time_odd) / speed_v0) << "\n";
 }
 
 /// dyka_profiles.csv: the profiles' scores (dyka_profiles.hpp) of every run of the sweep at CFL 0.5, one row per run,
@@ -64,7 +66,7 @@ inline void write_profiles(const Runs& runs) {
 inline void write_sweep(const Runs& runs) {
   const std::string columns = "shape,integrator,cells,h,crossing_ratio,band,rms,rms_over_v0,largest_speed_over_v0,wall_seconds,steps,status,"
                               "rms_own_time_over_v0,newton_mean,newton_max,neighbours_mean,cpu_seconds,overshoot,undershoot,ringing,"
-                              "rms_band_over_v0,ending,ringing_band,overshoot_band,undershoot_band";
+                              "rms_band_over_v0,ending,ringing_band,overshoot_band,undershoot_band,space_time_over_v0,space_time_band_over_v0";
   std::ofstream sweep = csv(runs, "dyka_sweep.csv", columns), all = csv(runs, "dyka_cfl.csv", "cfl," + columns);
   std::ofstream authors = csv(runs, "dyka_sweep_authors.csv", columns);
   for (const auto& shape : shapes)

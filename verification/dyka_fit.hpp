@@ -37,14 +37,15 @@ inline OrderFit fit_order(const std::vector<int>& cells, const std::vector<doubl
 }
 
 /// "0.32 ± 0.031 (10-160 cells)": the standard error to 2 significant digits (a small one shows, not 0.00); or "no fit (2 meshes)".
-inline std::string order_text(const OrderFit& fit) {
+/// `unit` names what was counted ("steps" for a fit over the steps taken).
+inline std::string order_text(const OrderFit& fit, const char* unit = "cells") {
   char text[96];
   if (fit.points == 0)
     std::snprintf(text, sizeof text, "no fit (no finished run)");
   else if (!fit.fitted())
     std::snprintf(text, sizeof text, "no fit (%d mesh%s)", fit.points, fit.points == 1 ? "" : "es");
   else
-    std::snprintf(text, sizeof text, "%.2f ± %.2g (%d-%d cells)", fit.order, fit.standard_error, fit.first_cells, fit.last_cells);
+    std::snprintf(text, sizeof text, "%.2f ± %.2g (%d-%d %s)", fit.order, fit.standard_error, fit.first_cells, fit.last_cells, unit);
   return text;
 }
 

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The Dyka bar beyond the paper, in `make studies`: the fair comparison of the integrators (dyka_fair), the two beta
 # rules on every mesh, the choices, the energy over 10 periods, today's baselines with their error-cost fronts
-# (dyka_work_precision) and the stability map (dyka_stability): dyka_suite --part studies, then
+# (dyka_work_precision), the experiments that decide the claims (all particles, gamma on three meshes, the step refined
+# at fixed h, the initial speed swept: verification/dyka_experiments.hpp) and the stability map (dyka_stability):
+# dyka_suite --part studies, then
 # verification/dyka_stability.sh. Called by make_studies.sh with MPM_BIN, MPM_ROOT and MPM_RESULTS set (its
 # results/studies/); exits 1 when a hard check fails.
 set -uo pipefail
@@ -16,6 +18,7 @@ g() { gnuplot -e "dir='$plots'; data='$data'; $1" "$plots/$2" || status=1; }
 g "out='$figures/dyka_fair'" dyka_fair.gp
 g "out='$figures/dyka_fig7_fair'; fair=1" dyka_fig7.gp
 g "out='$figures/dyka_work_precision'" dyka_work_precision.gp
+for experiment in dyka_space_time dyka_gamma_meshes dyka_temporal dyka_amplitude; do g "out='$figures/$experiment'" "$experiment.gp"; done
 below=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f2) above=$(grep '^linear_fe,' "$data/dyka_stability.csv" | cut -d, -f3)
 g "out='$figures/dyka_stability'; below='$below'; above='$above'" dyka_stability.gp
 

@@ -20,6 +20,7 @@
 #include "verification/dyka_profile_claims.hpp"
 #include "verification/dyka_baselines.hpp"
 #include "verification/dyka_data.hpp"
+#include "verification/dyka_experiments.hpp"
 #include "verification/dyka_fair.hpp"
 #include "verification/dyka_rules.hpp"
 
@@ -53,7 +54,7 @@ std::vector<Section> figures_part(Runs& runs) {
 }
 
 /// make studies: the sweep again as the reference, the fair comparison, the choices, the energy, the baselines and the
-/// timing of their fronts.
+/// timing of their fronts; the experiments that decide the claims (dyka_experiments.hpp).
 std::vector<Section> studies_part(Runs& runs) {
   run_all(runs, independent_cases(Part::studies), true);
   calibrate_blends(runs);
@@ -64,8 +65,9 @@ std::vector<Section> studies_part(Runs& runs) {
   write_sweep(runs), write_fair(runs), write_choices(runs), write_energy(runs), write_orders(runs);
   const auto entries = fronts(runs);
   write_fronts(entries, runs.folder + "/dyka_baselines.csv");
-  return {all_runs_section(runs), fair_section(runs),   rules_section(runs),
-          newton_section(runs),   energy_section(runs), baselines_section(runs, entries)};
+  return {all_runs_section(runs),       fair_section(runs),      rules_section(runs),         newton_section(runs),
+          energy_section(runs),         baselines_section(runs, entries), space_time_section(runs), gamma_meshes_section(runs),
+          temporal_section(runs),       amplitude_section(runs)};
 }
 
 }  // namespace

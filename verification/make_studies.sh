@@ -20,6 +20,8 @@
 #                published values (verification/hydrostatic_column.py, verification/data/other_codes.csv)
 #   authors_code the authors' code (NL-PartSol) on the Dyka bar, nine cases, against this project
 #                (tests/authors_table.sh, verification/authors_code.py; not a study file: fixed cases)
+#   authors_soil the authors' code on the soil block, four cases, against this project under their settings and with
+#                each setting undone (verification/authors_soil.py)
 # A hard check or a comparison that fails (a case that does not finish, a result outside its tolerance) makes this
 # script (and `make studies`) fail; so does a number quoted in paper/ or README.md from these runs that differs
 # (check_book_numbers.py --target studies). Each part runs its cases on every core, so the parts run one after the
@@ -62,6 +64,10 @@ authors_code() {
       python3 "$root/verification/authors_code.py" "$out/data/authors_table.csv" "$out/report/60_authors_code.md"; } \
     >"$out/report/authors_code.log" 2>&1
 }
+authors_soil() {
+  python3 "$root/verification/authors_soil.py" "$bin/mpm" "$root/scenes/soil_block.toml" "$root/verification/data" \
+    "$out/data/authors_soil.csv" "$out/report/61_authors_soil.md" >"$out/report/authors_soil.log" 2>&1
+}
 done_line() { echo "studies: $1 done ($(( $(date +%s) - start )) s)"; }
 
 budget_part dyka suite dyka_studies "$out/report/dyka.log" ||
@@ -87,6 +93,9 @@ done_line "CB-Geo's hydrostatic column"
 budget_part authors_code authors_code ||
   { echo "studies: the authors' code beside this project failed, see $out/report/authors_code.log"; status=1; }
 done_line "the authors' code on the Dyka bar"
+budget_part authors_soil authors_soil ||
+  { echo "studies: the authors' code beside this project on the soil block failed, see $out/report/authors_soil.log"; status=1; }
+done_line "the authors' code on the soil block"
 
 elapsed=$(( $(date +%s) - start ))
 made_section studies "$root" "$root/results/studies_budget.csv" "$elapsed" >"$out/report/00_made.md"

@@ -4,17 +4,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "verification/onset.hpp"
 #include "verification/smooth_claims.hpp"
 
 namespace verification::smooth {
 
-/// Where a method leaves its no-crossing error: the first U/h of the sweep at which its velocity error exceeds twice its
-/// value at the smallest U/h (NaN: none does up to the largest), or the U/h at which a run stopped first (`stopped`: the
-/// onset is then not measured, and a comparison of it is stopped, the one rule's own outcome).
-struct Onset {
-  double ratio = std::nan("");
-  bool stopped = false;
-};
+/// The method's onset (verification/onset.hpp) on the crossing sweep at `ppc` particles per cell.
 inline Onset onset(const Runs& runs, const Method& method, int ppc) {
   Case c{Group::crossing, false, method, ppc, 0.5, crossing_ratios().front(), crossing_cells};
   const double base = runs.at(c).velocity_error;
@@ -28,29 +23,7 @@ inline Onset onset(const Runs& runs, const Method& method, int ppc) {
 }
 inline std::string onset_text(double value) { return std::isfinite(value) ? number(value, "%g") : "> " + number(crossing_ratios().back(), "%g"); }
 /// The onset as text, "stopped at U/h 0.5" where a run stopped before the error doubled.
-inline std::string onset_text(const Onset& onset) {
-  return onset.stopped ? "stopped at " + number(onset.ratio, "%g") : onset_text(onset.ratio);
-}
-/// "a leaves its no-crossing error later than b" on the sweep's grid of U/h (NaN: no onset up to the largest, the
-/// latest): stopped when either onset is not measured, undecided when both fall on the same U/h (the sweep does not
-/// resolve them), otherwise holds or fails.
-inline mpm::Outcome later(const Onset& a, const Onset& b) {
-  if (a.stopped || b.stopped) return mpm::Outcome::stopped;
-  const bool a_none = !std::isfinite(a.ratio), b_none = !std::isfinite(b.ratio);
-  if (a_none == b_none && (a_none || a.ratio == b.ratio)) return mpm::Outcome::undecided;
-  return a_none || (!b_none && a.ratio > b.ratio) ? mpm::Outcome::holds : mpm::Outcome::fails;
-}
-
-TEST_CASE("crossing onset: later by the one rule, a stop its own outcome, a tie on the sweep's grid undecided") {
-  const double none = std::nan("");
-  CHECK(later({1.5, false}, {0.5, false}) == mpm::Outcome::holds);
-  CHECK(later({0.5, false}, {1.5, false}) == mpm::Outcome::fails);
-  CHECK(later({none, false}, {1.5, false}) == mpm::Outcome::holds);
-  CHECK(later({1.5, false}, {none, false}) == mpm::Outcome::fails);
-  CHECK(later({1.5, false}, {1.5, false}) == mpm::Outcome::undecided);
-  CHECK(later({none, false}, {none, false}) == mpm::Outcome::undecided);
-  CHECK(later({1.5, false}, {0.5, true}) == mpm::Outcome::stopped);
-}
+inline std::string onset_text(const Onset& onset) { return onset_text(onset, crossing_ratios().back()); }
 
 /// The onsets: uGIMP and LME against linear, today's baselines against the paper's latest; writes smooth_crossing_onset.csv
 /// and the onset table (Markdown) into `table`.

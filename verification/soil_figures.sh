@@ -2,7 +2,7 @@
 # The soil block under ramped gravity (paper section 3.2): Figs. 11-13 (soil_suite --part figures), with the data in
 # $MPM_RESULTS/data/soil_*.csv and the report fragment $MPM_RESULTS/report/30_soil.md; `soil_figures.sh studies`: the
 # block beyond the paper (soil_suite --part studies: the baselines' fronts, the refinement, crossing, nu = 0.3, the
-# stability sweep, the boundaries, free sides), its fragment 35_soil.md.
+# stability sweep, the boundaries, free sides, LME gamma on the 2 m grid), its fragment 35_soil.md.
 # Called by make_figures.sh (make_studies.sh with "studies"), which sets MPM_BIN (executables), MPM_ROOT (the
 # repository) and MPM_RESULTS (results/, results/studies/). Exits 1 when a hard check of the suite fails or a figure
 # cannot be drawn.
@@ -19,11 +19,12 @@ status=0
 "$MPM_BIN/soil_suite" "$data" "$report" "$MPM_ROOT/scenes" --part "$part" || status=1
 
 draw() {  # draw NAME SCRIPT: verification/plots/SCRIPT.gp -> figures/NAME.png and .pdf
-  gnuplot -e "data='$data'; out='$figures/$1'" "$plots/$2.gp" || { echo "soil: gnuplot failed on $2.gp"; status=1; }
+  gnuplot -e "dir='$plots'; data='$data'; out='$figures/$1'" "$plots/$2.gp" || { echo "soil: gnuplot failed on $2.gp"; status=1; }
 }
 if [[ $part == studies ]]; then
   draw soil_refinement soil_refinement
   draw soil_poisson soil_poisson
+  draw soil_gamma soil_gamma
 else
   draw soil_fig11_geometry soil_geometry
   draw soil_fig12_stress soil_stress

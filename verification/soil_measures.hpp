@@ -54,11 +54,16 @@ struct SettlementMeasures {
   /// difference of two means below their floors is not resolved
   double mean_floor = std::numeric_limits<double>::quiet_NaN();
   double swing = std::numeric_limits<double>::quiet_NaN();        ///< max - min of u over that window
+  double swing_floor = std::numeric_limits<double>::quiet_NaN();  ///< the range of the swing over the same windows as mean_floor
   double exact_swing = std::numeric_limits<double>::quiet_NaN();  ///< the same for u_exact
   /// after the ramp (constant gravity) the mechanical energy E = kinetic + strain + gravity potential is
   /// conserved: (max - min of E over t >= T/2) / (mean kinetic + strain energy there)
   double energy_drift = std::numeric_limits<double>::quiet_NaN();
   double energy_drift_band = 0.0;  ///< its band: the larger move of the drift taken on the even or the odd samples alone
+  /// the damping after the ramp: the mechanical energy's trend, minus the least-squares slope of E(t) over t >= T/2 times
+  /// the time since, / the mean kinetic + strain energy there (> 0: energy lost; the oscillation about the trend is what
+  /// energy_drift also sees), with its band from the even and the odd samples alone
+  double energy_loss = std::numeric_limits<double>::quiet_NaN(), energy_loss_band = 0.0;
   double static_small_strain = 0.0;  ///< static u(Y), paper/07_exact_column.md
   double static_log_strain = 0.0;    ///< static u(Y) at finite (logarithmic) strain
 };
@@ -114,6 +119,24 @@ inline SettlementMeasures measure_settlement(const SoilResult& result) {
     }
     return count > 1 ? (highest - lowest) / (strain / count) : std::numeric_limits<double>::quiet_NaN();
   };
+  // the trend on every sample after the ramp (step 1), or on every other one from `first`
+  auto loss = [&result](size_t first, size_t step) {
+    double st = 0.0, se = 0.0, stt = 0.0, ste = 0.0, strain = 0.0, begin = INFINITY, end = -INFINITY;
+    int count = 0;
+    size_t after = 0;
+    for (size_t n = 0; n < result.time.size(); ++n) {
+      if (result.time[n] < 0.5 * result.scene.ramp_period) continue;
+      if (after++ % step != first) continue;
+      const double t = result.time[n], energy = result.kinetic_plus_strain[n] + result.gravity_potential[n];
+      st += t, se += energy, stt += t * t, ste += t * energy, strain += result.kinetic_plus_strain[n], ++count;
+      begin = std::min(begin, t), end = std::max(end, t);
+    }
+    if (count < 3) return std::numeric_limits<double>::quiet_NaN();
+    const double slope = (count * ste - st * se) / (count * stt - st * st);
+    return -slope * (end - begin) / (strain / count);
+  };
+  m.energy_loss = loss(0, 1);
+  m.energy_loss_band = mpm::band_of_halves(m.energy_loss, loss(0, 2), loss(1, 2));
   m.energy_drift = drift(0, 1);
   m.energy_drift_band = mpm::band_of_halves(m.energy_drift, drift(0, 2), drift(1, 2));
   const double end = result.scene.control.end_time, period = first_period(result.scene);
@@ -121,12 +144,14 @@ inline SettlementMeasures measure_settlement(const SoilResult& result) {
     const Window last = window(result, m.exact, end - 4.0 * period, end);
     m.mean_settlement = last.mean, m.swing = last.swing, m.exact_swing = last.exact_swing;
     // the estimator's floor: how far the mean moves when the window's end moves back over one period
-    double lowest = last.mean, highest = last.mean;
+    double lowest = last.mean, highest = last.mean, least_swing = last.swing, most_swing = last.swing;
     for (int k = 1; k <= 8; ++k) {
-      const double shifted = window(result, m.exact, end - (4.0 + k / 8.0) * period, end - k / 8.0 * period).mean;
-      lowest = std::min(lowest, shifted), highest = std::max(highest, shifted);
+      const Window shifted = window(result, m.exact, end - (4.0 + k / 8.0) * period, end - k / 8.0 * period);
+      lowest = std::min(lowest, shifted.mean), highest = std::max(highest, shifted.mean);
+      least_swing = std::min(least_swing, shifted.swing), most_swing = std::max(most_swing, shifted.swing);
     }
     m.mean_floor = highest - lowest;
+    m.swing_floor = most_swing - least_swing;
   }
   return m;
 }

@@ -48,10 +48,9 @@ inline std::string method_label(const std::string& method) {
   }
   if (method == "linear") return "linear (Q4)";
   if (method == "ugimp") return "uGIMP";
-  if (method == "lme0.8") return "LME gamma = 0.8";
   if (method == "bspline2") return "quadratic B-spline";
   if (method == "bspline3") return "cubic B-spline";
-  return "LME gamma = 3";
+  return "LME gamma = " + method.substr(3);  // "lme0.8", "lme3"
 }
 
 inline std::string run_name(const std::string& method, const std::string& integrator, double h) {

@@ -18,6 +18,7 @@
 #include "verification/claims.hpp"
 #include "verification/soil_data.hpp"
 #include "verification/soil_domain.hpp"
+#include "verification/soil_gamma.hpp"
 #include "verification/soil_plane.hpp"
 #include "verification/soil_report.hpp"
 
@@ -64,9 +65,8 @@ std::vector<std::string> method_overrides(const std::string& method) {
     return join(method_overrides(method.substr(0, update)), {"solver.stress_update=\"" + method.substr(update + 1) + "\""});
   if (method == "linear") return {"solver.shape=\"linear\""};
   if (method == "ugimp") return {"solver.shape=\"ugimp\""};
-  if (method == "lme0.8") return {"solver.shape=\"lme\"", "solver.lme_gamma=0.8"};
   if (method == "bspline2" || method == "bspline3") return {"solver.shape=\"" + method + "\""};
-  return {"solver.shape=\"lme\"", "solver.lme_gamma=3.0"};
+  return {"solver.shape=\"lme\"", "solver.lme_gamma=" + method.substr(3)};  // "lme0.8", "lme3"
 }
 
 /// Cells of size h over the 10 m block, 2 x 2 particles per cell; the observer is the top-row particle
@@ -117,6 +117,11 @@ std::vector<CaseSpec> study_cases() {
   // snapshots over the last period of the column at nu = 0.3 (T1 = 1.19 s), averaged by the equilibrium check (soil_plane.hpp)
   cases.push_back({"lme3_npc_h2_free_sides_nu0.3", "soil_block_free_sides.toml",
                    {"material.poisson_ratio=0.3", "output.snapshots=[0,18.8,18.95,19.1,19.25,19.4,19.55,19.7,19.85,20]"}, true});
+  for (const auto& method : verification::soil_gamma_methods())  // LME's gamma on the 2 m grid (0.8 and 3 run above)
+    if (method != "lme0.8" && method != "lme3")
+      for (const auto& integrator : {"npc", "fe"})
+        cases.push_back({run_name(method, integrator, 2.0), "soil_block.toml",
+                         join(method_overrides(method), {std::string("solver.integrator=\"") + integrator + "\""})});
   for (const auto& method : {"lme0.8", "lme3"})
     cases.push_back({run_name(method, "npc", 2.0) + "_wall_margins", "soil_block.toml", join(method_overrides(method), wall_margins)});
   for (double nu : {0.0, 0.3})
@@ -150,7 +155,7 @@ void write_introduction(std::ostream& report, Part part, const Outcome& paper, s
             "continuous in time; the solver's gravity at the end of each step shifts the load by dt/2 = 3.5 ms (u changes "
             "in the fifth digit when it is evaluated at the start instead).\n\n"
          << "Choices where the paper is silent: nu = 0 and lateral rollers (paper/09_choices.md); particles at the quarter points "
-            "(the top row at Y = 9.5 m, where the authors' LME and Q4 runs used the Gauss point 9.577 m); the observed particle "
+            "(the top row at Y = 9.5 m; the authors' post-processing script reads its top particle at the Gauss point 9.577 m); the observed particle "
             "is the top-row particle at (4.5, 9.5) m (4.5 and 5.5 are equally near W/2; we take the first); no grid margins, "
             "so the walls and base are the edges of the grid, where LME interpolates and uGIMP's particle domains are clipped "
             "to the grid (the domain's part inside the grid, `mpm/shape/ugimp.hpp`).\n\n"
@@ -496,6 +501,7 @@ int main(int argc, char** argv) {
     write_baseline_section(report, get, claims);
     write_refinement_sections(report, get, claims);
     write_other_sections(report, claims);
+    verification::write_soil_gamma_section(report, get, folder);
   }
   report << "### Soil block: hard checks of the runs\n\n";
   verification::write_domain_claims(report, claims.completes);

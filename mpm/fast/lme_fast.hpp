@@ -335,7 +335,7 @@ class LmeShape {
   /// \throws std::invalid_argument for options out of range or a support radius too short (lme_radius_squared).
   explicit LmeShape(const Grid<Dim>& grid, const LmeOptions& options = LmeOptions()) : grid_(grid), options_(options) {
     radius_squared_ = lme_radius_squared<Dim>(options);  // (R/h)^2
-    capacity_ = lattice_points_in_ball_bound<Dim>(std::sqrt(radius_squared_));
+    capacity_ = lme_support_capacity<Dim>(options, radius_squared_);
     diameter_ = 2.0 * std::sqrt(radius_squared_);
     inverse_spacing_ = 1.0 / grid.spacing();
   }
@@ -373,7 +373,7 @@ class LmeShape {
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
     Vector<Dim>* offsets = gradients;  // the offsets (x - x_I)/h live where the gradients will go
-    const int count = lme_neighbours(grid_, radius_squared_, capacity_, particle, x, nodes, offsets);
+    const int count = lme_support(options_, grid_, radius_squared_, capacity_, particle, x, nodes, offsets);
     const double beta = lme_beta_in_cell_units(options_, grid_, x, count, offsets);
     const Vector<Dim> moved = (x - evaluated_at_[particle]) * inverse_spacing_;  // cells, since the last evaluation
     const Vector<Dim> start = predicted_multiplier(particle, moved);

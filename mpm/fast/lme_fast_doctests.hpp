@@ -381,7 +381,7 @@ TEST_CASE("Eq. (39): grad N_I = N_I (grad f_I - sum_J N_J grad f_J), with the to
   }
 }
 
-TEST_CASE("The fast LME form agrees with the reference on random particle paths: 1D and 2D, gamma 0.8, 1.5, 3, every beta rule") {
+TEST_CASE("The fast LME form agrees with the reference on random particle paths: 1D and 2D, gamma 0.8, 1.5, 3, every beta rule, both neighbour sets") {
   // Both converged to |r|/h <= 1e-13 at every point, the fast form warm-started along each path, the reference
   // from lambda = 0: N and grad N h agree to 1e-9 (the largest difference measured over these paths: 1.6e-12).
   LmeOptions options;
@@ -389,12 +389,14 @@ TEST_CASE("The fast LME form agrees with the reference on random particle paths:
   const Grid<1> line(Vector<1>(-1.0), 0.25, {16});
   const Grid<2> plane(Vector<2>(0.0, 0.0), 0.5, {6, 4});
   std::mt19937 random(32);
+  for (const auto neighbours : {LmeOptions::Neighbours::support_radius, LmeOptions::Neighbours::authors_patch})
   for (const auto rule : {LmeOptions::BetaRule::grid_spacing, LmeOptions::BetaRule::mean_neighbour_distance,
                           LmeOptions::BetaRule::authors})
     for (double gamma : {0.8, 1.5, 3.0}) {
       options.beta_rule = rule;
+      options.neighbours = neighbours;
       options.gamma = gamma;
-      INFO("gamma = ", gamma, ", beta rule ", static_cast<int>(rule));
+      INFO("gamma = ", gamma, ", beta rule ", static_cast<int>(rule), ", neighbours ", static_cast<int>(neighbours));
       const double difference = std::max(testing::largest_lme_form_difference(line, options, random),
                                          testing::largest_lme_form_difference(plane, options, random));
       CHECK(difference <= 1e-9);

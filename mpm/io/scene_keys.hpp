@@ -484,6 +484,8 @@ inline std::vector<SceneKey> solver_keys() {
         "most LME Newton iterations before the run fails", whole(1, 1000)),
     key("solver.lme_beta", &Scene::lme_beta, "\"grid_spacing\"", "-",
         "grid_spacing | mean_neighbour_distance | authors (NL-PartSol's)"),
+    key("solver.lme_neighbours", &Scene::lme_neighbours, "\"support_radius\"", "-",
+        "support_radius (the nodes within R) | authors_patch (NL-PartSol's 4x4 node patch)"),
     key("solver.newmark_gamma", &Scene::newmark_gamma, "0.5", "-",
         "Newmark gamma of the predictor-corrector, in [0, 1]", within(0.0, 1.0)),
     key("solver.fe_position_velocity", &Scene::fe_position_velocity, "\"updated\"", "-",

@@ -49,6 +49,8 @@ template <> inline constexpr std::array choice_words<BodyForceTime>{"step_end", 
 template <> inline constexpr std::array choice_words<CourantSpeed>{"max", "sum"};
 template <>
 inline constexpr std::array choice_words<LmeOptions::BetaRule>{"grid_spacing", "mean_neighbour_distance", "authors"};
+template <>
+inline constexpr std::array choice_words<LmeOptions::Neighbours>{"support_radius", "authors_patch"};
 template <> inline constexpr std::array choice_words<EulerPositionVelocity>{"updated", "start"};
 template <> inline constexpr std::array choice_words<NewmarkPositionVelocity>{"projected", "corrected", "predicted"};
 template <> inline constexpr std::array choice_words<NewmarkParticleVelocity>{"eq32", "average"};
@@ -128,6 +130,7 @@ struct Scene {
   double lme_gamma = 0.0, lme_tol = 0.0, lme_newton_tol = 0.0;
   int lme_max_iterations = 0;
   LmeOptions::BetaRule lme_beta{};
+  LmeOptions::Neighbours lme_neighbours{};
   double newmark_gamma = 0.0;
   EulerPositionVelocity fe_position_velocity{};
   NewmarkPositionVelocity npc_position_velocity{};
@@ -197,6 +200,7 @@ TEST_CASE("Scene settings: choice names follow their enums, and errors after the
   CHECK(name_of(NewmarkPositionVelocity::predicted) == "predicted");
   CHECK(name_of(LmeOptions::BetaRule::mean_neighbour_distance) == "mean_neighbour_distance");
   CHECK(name_of(LmeOptions::BetaRule::authors) == "authors");
+  CHECK(name_of(LmeOptions::Neighbours::authors_patch) == "authors_patch");
   CHECK(name_of(BodyShape::Kind::file) == "file");
   CHECK(FixedSettings{WallFace::ymax, {}}.axis() == 1);
   CHECK(FixedSettings{WallFace::ymax, {}}.upper());

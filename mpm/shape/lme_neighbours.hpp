@@ -12,6 +12,7 @@
 
 #include "mpm/core/errors.hpp"
 #include "mpm/grid/grid.hpp"
+#include "mpm/shape/lme_options.hpp"
 
 namespace mpm {
 
@@ -77,6 +78,62 @@ inline int lme_neighbours(const Grid<Dim>& grid, double radius_squared, int capa
     while (axis < Dim && ++k[axis] > upper[axis]) k[axis] = lower[axis], ++axis;
     if (axis == Dim) return count;
   }
+}
+
+/// The authors' neighbours (NL-PartSol 1d5da04, src/ShapeFun/LME.c, LME_Tributary_Nodes, line 536): the nodes of the
+/// cell that holds x and of every cell that shares a node with it, the \f$ 4^{Dim} \f$ node patch around x's cell
+/// (fewer at the grid's edges), whatever R. Their code then drops the nodes beyond
+/// \f$ \sqrt{-\ln 10^{-5} / \beta} \f$ of the step before; past the first step that drops none of the patch (2.5-2.9 h
+/// on the soil block), which this rule keeps whole. Writes each node's number and offset (x - x_I)/h, returns how many.
+/// \throws ShapeFailure if there are more than `capacity` (at least \f$ 4^{Dim} \f$ is needed).
+template <int Dim>
+inline int lme_patch_neighbours(const Grid<Dim>& grid, int capacity, int particle, const Vector<Dim>& x, int* nodes,
+                                Vector<Dim>* offsets) {
+  const Vector<Dim> xi = (x - grid.origin()) / grid.spacing();
+  const auto cell = grid.cell_of(x);
+  typename Grid<Dim>::MultiIndex lower{}, upper{}, k{};
+  for (int axis = 0; axis < Dim; ++axis)
+    lower[axis] = std::max(0, cell[axis] - 1), upper[axis] = std::min(grid.cells(axis), cell[axis] + 2);
+  k = lower;
+  int count = 0;
+  while (true) {
+    if (count == capacity) throw ShapeFailure(particle, "LME: more neighbours than capacity() (internal error)");
+    for (int axis = 0; axis < Dim; ++axis) offsets[count][axis] = xi[axis] - k[axis];
+    nodes[count++] = grid.node_index(k);
+    int axis = 0;
+    while (axis < Dim && ++k[axis] > upper[axis]) k[axis] = lower[axis], ++axis;
+    if (axis == Dim) return count;
+  }
+}
+
+/// The neighbours under the options' rule (LmeOptions::neighbours): within R, or the authors' patch.
+template <int Dim>
+inline int lme_support(const LmeOptions& options, const Grid<Dim>& grid, double radius_squared, int capacity, int particle,
+                       const Vector<Dim>& x, int* nodes, Vector<Dim>* offsets) {
+  if (options.neighbours == LmeOptions::Neighbours::authors_patch)
+    return lme_patch_neighbours(grid, capacity, particle, x, nodes, offsets);
+  return lme_neighbours(grid, radius_squared, capacity, particle, x, nodes, offsets);
+}
+/// An upper bound of the neighbours of any point under the options' rule: the lattice points of a ball of radius R,
+/// or the 4^Dim nodes of the authors' patch.
+template <int Dim>
+inline int lme_support_capacity(const LmeOptions& options, double radius_squared) {
+  if (options.neighbours == LmeOptions::Neighbours::authors_patch) return Dim == 1 ? 4 : 16;
+  return lattice_points_in_ball_bound<Dim>(std::sqrt(radius_squared));
+}
+
+TEST_CASE("LME neighbours, the authors' patch: the 4 x 4 nodes around the cell, 3 x 3 in a corner cell, by hand") {
+  const Grid<2> plane(Vector<2>(0.0, 0.0), 1.0, {5, 5});
+  int nodes[16];
+  Vector<2> offsets[16];
+  REQUIRE(lme_patch_neighbours(plane, 16, 0, Vector<2>(2.25, 2.75), nodes, offsets) == 16);
+  CHECK(offsets[0][0] == 1.25);   // node (1, 1): the first, x - 1
+  CHECK(offsets[0][1] == 1.75);
+  CHECK(offsets[15][0] == -1.75);  // node (4, 4)
+  CHECK(nodes[15] == plane.node_index({4, 4}));
+  CHECK(lme_patch_neighbours(plane, 16, 0, Vector<2>(0.5, 0.5), nodes, offsets) == 9);  // nodes 0-2 on each axis
+  CHECK(lme_patch_neighbours(plane, 16, 0, Vector<2>(4.5, 2.5), nodes, offsets) == 12);  // 3 x 4 at the side
+  CHECK_THROWS_AS(lme_patch_neighbours(plane, 15, 3, Vector<2>(2.5, 2.5), nodes, offsets), ShapeFailure);
 }
 
 TEST_CASE("LME neighbours: every node within R and no other, the lattice bound is reached and never exceeded") {

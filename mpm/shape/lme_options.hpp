@@ -32,6 +32,10 @@ struct LmeOptions {
   /// under every rule (with hbar in R the radius would feed on itself: hbar ~ 2R/3 in 2D makes R grow unless
   /// the patch is capped).
   enum class BetaRule { grid_spacing, mean_neighbour_distance, authors } beta_rule = BetaRule::grid_spacing;
+  /// support_radius: the nodes within R (A\&O06, the paper). authors_patch: the authors' 4^Dim node patch around the
+  /// point's cell whatever R (lme_patch_neighbours; paper/09_choices.md, "The authors' neighbours"); R then only
+  /// sets the hull condition of lme_radius_squared.
+  enum class Neighbours { support_radius, authors_patch } neighbours = Neighbours::support_radius;
 };
 
 /// \f$ (R/h)^2 = -\ln(\mathrm{tol}) / \gamma \f$, the support radius where the prior

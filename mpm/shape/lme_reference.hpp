@@ -166,7 +166,7 @@ class LmeReferenceShape {
   /// \throws std::invalid_argument for options out of range or a support radius too short (lme_radius_squared).
   explicit LmeReferenceShape(const Grid<Dim>& grid, const LmeOptions& options = LmeOptions())
       : grid_(grid), options_(options), radius_squared_(lme_radius_squared<Dim>(options)),
-        capacity_(lattice_points_in_ball_bound<Dim>(std::sqrt(radius_squared_))) {}
+        capacity_(lme_support_capacity<Dim>(options, radius_squared_)) {}
 
   /// An upper bound of the neighbours of any point: the most lattice points a ball of radius R can hold.
   int capacity() const { return capacity_; }
@@ -182,7 +182,7 @@ class LmeReferenceShape {
   int evaluate(int particle, const Vector<Dim>& x, int* nodes, double* values, Vector<Dim>* gradients) {
     if (!grid_.contains(x)) throw ShapeFailure(particle, "particle left the grid");
     std::vector<Vector<Dim>> offsets(capacity_);  // (x - x_I)/h
-    const int count = lme_neighbours(grid_, radius_squared_, capacity_, particle, x, nodes, offsets.data());
+    const int count = lme_support(options_, grid_, radius_squared_, capacity_, particle, x, nodes, offsets.data());
     const double beta = lme_beta_in_cell_units(options_, grid_, x, count, offsets.data());
     const LmeNewtonSolve<Dim> solve =
         solve_lme_newton(count, offsets.data(), beta, options_.newton_tolerance, options_.max_iterations, values);
