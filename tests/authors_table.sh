@@ -31,7 +31,7 @@ cases=(
   "linear fe linear_fe_40 40 strip 0" "linear fe linear_fe_160 160 strip 0" "linear fe linear_fe_640 640 strip 0"
   "ugimp npc ugimp_pce_40 40 strip 0" "ugimp npc ugimp_pce_160 160 strip 0" "ugimp npc ugimp_pce_640 640 strip 0"
   "lme npc lme_pce_40 40 strip 0" "lme npc lme_pce_160 160 strip 0" "lme npc lme_pce_640 640 strip 0"
-  "ugimp npc ugimp_pce_640_margin4_rows1 640 margin4_rows1 4")
+  "ugimp npc ugimp_pce_640_margin4_rows1 640 margin4_rows1 4" "ugimp npc ugimp_pce_640_margin0_rows1 640 margin0_rows1 0")
 run() {  # run OUT SHAPE INTEGRATOR CELLS MARGIN: the shipped Dyka scene without snapshot landings
   local beta=grid_spacing
   [[ $2 == lme ]] && beta=authors
@@ -95,15 +95,17 @@ print('%.2g' % max(abs(g($theirs_even, $ours_even) - w), abs(g($theirs_odd, $our
   near "$theirs" "$row" 5e-6 || fail "$stem: their RMS/v0 $theirs, other_codes.csv says $row"
 done
 # the book's claims on every row computed: within 1 % of RMS/v0 but uGIMP at 640 cells on their strip (their grid has
-# no node beyond the free end: above 100 %, and within 1 % again on their extended grid); LME within 1e-3 v0 point
-# by point
+# no node beyond the free end: above 100 %) and on their strip with a row above and below but no cell beyond the free
+# end (between 1 and 10 %), and within 1 % again on their grid extended both ways; LME within 1e-3 v0 point by point
 python3 - "$table" <<'PY' || failures=$((failures + 1))
 import csv, sys
 bad = 0
 for r in csv.DictReader(open(sys.argv[1])):
     outlier = (r["shape"], r["cells"], r["their_grid"]) == ("ugimp", "640", "strip")
+    rows_only = (r["shape"], r["cells"], r["their_grid"]) == ("ugimp", "640", "margin0_rows1")
     gap, dv = float(r["rms_gap_percent"]), float(r["max_dv_over_v0"])
-    if (gap > 100.0) != outlier or (not outlier and gap >= 1.0) or (r["shape"] == "lme" and dv >= 1e-3):
+    expected = gap > 100.0 if outlier else 1.0 <= abs(gap) < 10.0 if rows_only else abs(gap) < 1.0
+    if not expected or (r["shape"] == "lme" and dv >= 1e-3):
         print("FAIL: %s %s %s cells, their grid %s: RMS gap %s %%, max |dv|/v0 %s" % (
             r["shape"], r["integrator"], r["cells"], r["their_grid"], gap, dv))
         bad += 1

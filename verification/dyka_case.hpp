@@ -41,6 +41,9 @@ struct DykaResult {
   /// (the wave has passed A and the next has not come): signed along the exact jump into the plateau, so
   /// `overshoot` is the largest step beyond the exact level and `undershoot` the largest shortfall (both >= 0).
   double overshoot = 0.0, undershoot = 0.0;
+  /// The mean shortfall: the mean of the signed deviation, below the exact level along the jump, over the same samples
+  /// (/ v0): a pulse that lost amplitude falls short on average, ringing about the exact level averages out.
+  double mean_shortfall = 0.0;
   /// Ringing: the total variation of v_A over the exact one's on the same samples (mpm::total_variation_ratio), the
   /// whole history, sampled every step; 1 when v_A follows the exact jumps and settles, above 1 by twice each
   /// overshoot and oscillation, lowered by the amplitude a damped jump loses. 0 for a stopped run (not scored).
@@ -48,7 +51,7 @@ struct DykaResult {
   /// The scores of the even rows alone and of the odd rows alone: the band of each score's own sampling
   /// (mpm::band_of_halves); two runs whose scores differ by less than their bands together are not told apart.
   struct Scores {
-    double rms = 0.0, ringing = 0.0, overshoot = 0.0, undershoot = 0.0;
+    double rms = 0.0, ringing = 0.0, overshoot = 0.0, undershoot = 0.0, mean_shortfall = 0.0;
   } even, odd;
   /// What a flat line at the exact history's mean scores (mpm::flat_line_score): a finished run whose RMS is no
   /// smaller has failed (mpm::Ending::failed), it approximates nothing.
@@ -119,6 +122,8 @@ inline std::vector<std::string> shape_settings(const std::string& shape) {
 /// is the sign of the exact jump into it (for the first, of its own value).
 inline void plateau_deviations(DykaResult& result, double speed) {
   const std::vector<double>& exact = result.exact;
+  double shortfall = 0.0;
+  int samples = 0;
   for (size_t first = 0; first < exact.size();) {
     size_t last = first;
     while (last + 1 < exact.size() && exact[last + 1] == exact[first]) ++last;
@@ -132,9 +137,11 @@ inline void plateau_deviations(DykaResult& result, double speed) {
         const double deviation = direction * (result.velocity[n] - exact[n]) / speed;
         result.overshoot = std::max(result.overshoot, deviation);
         result.undershoot = std::max(result.undershoot, -deviation);
+        shortfall -= deviation, ++samples;
       }
     first = last + 1;
   }
+  result.mean_shortfall = samples > 0 ? shortfall / samples : 0.0;
 }
 
 /// The scores of RMS, ringing and the plateau deviations on the rows n with n % 2 == parity alone.
@@ -146,7 +153,7 @@ inline DykaResult::Scores half_scores(const DykaResult& whole, int parity, doubl
   if (half.time.size() < 2) return {};
   plateau_deviations(half, speed);
   return {mpm::rms_error(half.velocity, half.exact), mpm::total_variation_ratio(half.velocity, half.exact), half.overshoot,
-          half.undershoot};
+          half.undershoot, half.mean_shortfall};
 }
 
 inline DykaResult run_dyka(const std::string& scene_path, const std::string& name, const std::vector<std::string>& overrides,

@@ -28,15 +28,28 @@ inline mpm::Measured space_time_measured(const DykaResult& run) {
     m.band = mpm::band_of_halves(run.space_time, run.space_time_even, run.space_time_odd) / std::abs(run.v0);
   return m;
 }
+/// The plateau mean shortfall (DykaResult::mean_shortfall, / v0), the damping, with the band of its sampling.
+inline mpm::Measured shortfall_measured(const DykaResult& run) {
+  mpm::Measured m = rms_measured(run);
+  if (!run.failed)
+    m.value = run.mean_shortfall, m.band = mpm::band_of_halves(run.mean_shortfall, run.even.mean_shortfall, run.odd.mean_shortfall);
+  return m;
+}
 /// "0.0843 ± 0.0012", or the run's stop.
 inline std::string measured_text(const mpm::Measured& m, const DykaResult& run) {
   return run.failed ? stopped_text(run) : text(m.value, "%.4g") + " ± " + text(m.band, "%.2g");
 }
-/// A sample "a on `side` of b" by the one rule on the two measures themselves (not their ratio: a deficit may be 0).
+/// A sample "a on `side` of b" by the one rule on the two measures themselves (not their ratio: a shortfall may be 0).
+/// A ringing or a shortfall of a failed run (no better than a flat line) describes no approximation: with a failed run
+/// on either side the sample is stopped (paper/08 rule 4, as add_single).
 inline void add_compared(DomainClaim& claim, const std::string& where, const DykaResult& a, const mpm::Measured& ma,
                          const DykaResult& b, const mpm::Measured& mb, mpm::Side side) {
-  const mpm::Outcome outcome = mpm::judge(ma, side, mb);
-  if (outcome == mpm::Outcome::stopped)
+  const bool failed = ma.ending == mpm::Ending::failed || mb.ending == mpm::Ending::failed;
+  const mpm::Outcome outcome = failed ? mpm::Outcome::stopped : mpm::judge(ma, side, mb);
+  if (outcome == mpm::Outcome::stopped && failed && !a.failed && !b.failed)
+    claim.add(where + ": " + (ma.ending == mpm::Ending::failed ? "it" : "the other") + " failed (RMS no smaller than a flat line's)",
+              std::nan(""), outcome);
+  else if (outcome == mpm::Outcome::stopped)
     claim.add(where + ": " + not_compared_text(a, "it", b, "the other"), std::nan(""), outcome);
   else
     claim.add(where + ": " + measured_text(ma, a) + " against " + measured_text(mb, b), ma.value, outcome);
@@ -45,15 +58,17 @@ inline void add_compared(DomainClaim& claim, const std::string& where, const Dyk
 /// dyka_gamma_meshes.csv and the claims of Fig. 8 on the three meshes.
 inline Section gamma_meshes_section(const Runs& runs) {
   std::ofstream out = csv(runs, "dyka_gamma_meshes.csv", "cells,integrator,gamma,rms_over_v0,rms_band_over_v0,space_time_over_v0,"
-                                                          "ringing,ringing_band,deficit,deficit_band,ending");
+                                                          "ringing,ringing_band,shortfall,shortfall_band,ending");
   DomainClaim best{"Fig. 8 on more meshes: γ = 3 is LME's most accurate γ",
                    "RMS at γ = 3 below the smallest RMS of the other γ (0.8-5) beyond their bands, per mesh and integrator", {}, false};
   DomainClaim flat{"Above γ = 2 the choice of γ moves the RMS by less than 1 %",
                    "100 (largest - smallest) / smallest RMS over γ = 2, 3, 4, 5 < 1 % beyond its band", {}, false};
   DomainClaim rings{"Small γ adds ringing: the ringing at γ <= 1.5 exceeds γ = 3's",
-                    "ringing (total variation of v_A over the exact one's) at γ above its value at γ = 3 beyond their bands", {}, false};
-  DomainClaim damps{"Small γ damps: the plateau deficit at γ <= 1.5 exceeds γ = 3's",
-                    "plateau deficit / v0 at γ above its value at γ = 3 beyond their bands", {}, false};
+                    "ringing (total variation of v_A over the exact one's) at γ above its value at γ = 3 beyond their bands; a failed "
+                    "run's: stopped", {}, false};
+  DomainClaim damps{"Small γ damps: the plateau mean shortfall at γ <= 1.5 exceeds γ = 3's",
+                    "the mean of v_A's shortfall below the exact level on the plateaus' middle halves, / v0 (the amplitude lost; "
+                    "ringing averages out), above its value at γ = 3 beyond their bands; a failed run's: stopped", {}, false};
   for (int cells : gamma_meshes)
     for (const auto& integrator : integrators) {
       const std::string mesh = std::to_string(cells) + " cells (" + band_of(cells) + "), " + integrator;
@@ -63,7 +78,7 @@ inline Section gamma_meshes_section(const Runs& runs) {
       std::vector<const DykaResult*> upper;
       for (double gamma : gammas) {
         const DykaResult& run = runs.at(gamma_mesh_name(integrator, gamma, cells));
-        const mpm::Measured rms = rms_measured(run), ringing = ringing_measured(run), deficit = deficit_measured(run);
+        const mpm::Measured rms = rms_measured(run), ringing = ringing_measured(run), deficit = shortfall_measured(run);
         out << cells << "," << integrator << "," << gamma << "," << rms.value << "," << rms.band << "," << run.space_time / speed_v0 << ","
             << ringing.value << "," << ringing.band << "," << deficit.value << "," << deficit.band << "," << ending(run) << "\n";
         if (gamma != 3.0) others.push_back(rms), other_gammas.push_back(gamma);
@@ -71,7 +86,7 @@ inline Section gamma_meshes_section(const Runs& runs) {
         if (gamma > 1.5) continue;
         const std::string where = mesh + ", γ " + text(gamma) + " against 3";
         add_compared(rings, where, run, ringing, three, ringing_measured(three), mpm::Side::above);
-        add_compared(damps, where, run, deficit, three, deficit_measured(three), mpm::Side::above);
+        add_compared(damps, where, run, deficit, three, shortfall_measured(three), mpm::Side::above);
       }
       const BestOfGroups b = judge_best({rms_measured(three)}, others);
       if (b.outcome == mpm::Outcome::stopped)
@@ -86,8 +101,9 @@ inline Section gamma_meshes_section(const Runs& runs) {
   return {"LME's γ on three meshes (`dyka_gamma_meshes`)",
           "Fig. 8's γ = 0.8-5 on " + std::to_string(gamma_meshes[0]) + ", " + std::to_string(gamma_meshes[1]) + " and " +
               std::to_string(gamma_meshes[2]) + " cells (the bands without crossing, transition, crossing of paper/08), both integrators, "
-              "CFL 0.5: accuracy (RMS of v_A), ringing (total variation over the exact one's) and damping (the plateau deficit), each with "
-              "the band of its even and odd samples (data/dyka_gamma_meshes.csv).",
+              "CFL 0.5: accuracy (RMS of v_A), ringing (total variation over the exact one's) and damping (the plateau mean shortfall: "
+              "the amplitude lost, where ringing about the exact level averages out), each with the band of its even and odd samples "
+              "(data/dyka_gamma_meshes.csv). A run no better than a flat line (ending failed) is compared on its RMS only.",
           {best, flat, rings, damps}};
 }
 
@@ -100,10 +116,11 @@ inline double end_difference(const DykaResult& run, const DykaResult& reference,
   return mpm::rms_error(a, b) / scale;
 }
 
-/// x = (1 - gamma) (2c/h)^2 dt T, gamma = 1/2: Eq. (32) leaves the grid's highest mode e^-x of its energy over the
-/// Dyka run (paper/10_integrator_analysis.md, "Spectral radius and damping"), dt = CFL h / c.
+/// x = (1 - gamma) (c/h)^2 dt T, gamma = 1/2: Eq. (32) leaves the highest mode that linear shapes at 1 ppc carry
+/// (omega_max = c/h, paper/10_integrator_analysis.md, "The highest mode") e^-x of its energy over the Dyka run ("Spectral
+/// radius and damping"), dt = CFL h / c.
 inline double damped_exponent(int cells, double cfl) {
-  const double c = std::sqrt(200.0e9 / 7833.0), h = 0.1333 / cells, omega = 2.0 * c / h;
+  const double c = std::sqrt(200.0e9 / 7833.0), h = 0.1333 / cells, omega = c / h;
   return 0.5 * omega * omega * (cfl * h / c) * 2.0e-4;
 }
 
@@ -165,11 +182,12 @@ inline Section temporal_section(const Runs& runs) {
               "(GSL least squares on the logs against the steps taken, ± the slope's standard error; data/dyka_temporal.csv, "
               "data/dyka_temporal_orders.csv). The mesh is fixed, so the space error is the same in every run of a row: what is left "
               "is the integrator's own. Eq. (32) removes the fraction (1 - γ) Ω² of a mode's energy per step (paper/10, Ω = ω dt): over "
-              "the run the grid's highest mode (ω = 2c/h) keeps e^-x of it, x = (1 - γ) (2c/h)² dt T, which at the finest CFL is " +
+              "the run the highest mode linear shapes carry at 1 ppc (ω = c/h, paper/10) keeps e^-x of it, x = (1 - γ) (c/h)² dt T, which at the finest CFL is " +
               text(damped_exponent(temporal_cells[0], temporal_cfls.back()), "%.2g") + " on " + std::to_string(temporal_cells[0]) + " cells and " +
               text(damped_exponent(temporal_cells[1], temporal_cfls.back()), "%.2g") + " on " + std::to_string(temporal_cells[1]) + " (γ = 1/2): every "
               "refinement of the range still lets through modes that a coarser step damps away, and the jump of the Dyka data puts energy "
-              "in all of them, so the range is short of Eq. (32)'s asymptotic order; the local order of the finest pair shows the climb.\n\n" + table,
+              "in all of them, so the range is short of Eq. (32)'s asymptotic order; the local order of the finest pair (against a "
+              "reference " + text(temporal_cfls.back() / temporal_reference_cfl, "%g") + " times finer still) shows where it stands.\n\n" + table,
           {fe, npc}};
 }
 
@@ -188,15 +206,17 @@ inline Onset amplitude_onset(const Runs& runs, const std::string& shape, const s
 /// dyka_amplitude.csv and the claims of grid crossing isolated on the Dyka bar.
 inline Section amplitude_section(const Runs& runs) {
   std::ofstream out = csv(runs, "dyka_amplitude.csv", "shape,integrator,amplitude_over_h,v0,rms_over_v0,rms_band_over_v0,space_time_over_v0,"
-                                                       "ringing,deficit,ending,end_time");
+                                                       "ringing,shortfall,ending,end_time");
   DomainClaim later_than{"Dyka bar, grid crossing isolated: uGIMP and LME leave their no-crossing error later than linear shape functions",
                          "onset U/h (the first U/h with RMS/|v0| over twice its value at U/h = " + text(amplitude_ratios.front()) +
                              ") later than linear's with the same integrator; the same U/h: undecided; a run stopped first: stopped", {}, false};
-  DomainClaim floor{"Before the first cell face the error does not depend on the amplitude (what is left of finite strain)",
-                    "RMS/|v0| at U/h = 0.25 over its value at U/h = " + text(amplitude_ratios.front()) + " within [0.95, 1.05] beyond its band", {}, false};
-  DomainClaim finishes{"Dyka bar: uGIMP and LME approximate the solution where linear shape functions stop",
-                       "at each U/h where linear stopped (same integrator), the run reaches its end time no worse than a flat line (holds) "
-                       "or fails, or stops (fails: here the ending is what is counted)", {}, false};
+  DomainClaim floor{"Before the particle next to the free end reaches a cell face the error changes by less than 1 % with the amplitude",
+                    "RMS/|v0| at U/h = 0.25 over its value at U/h = " + text(amplitude_ratios.front()) + " within [0.99, 1.01] beyond "
+                    "its band (uGIMP's domain edges start on the nodes: they cross node lines from the first motion)", {}, false};
+  DomainClaim finishes{"Dyka bar: uGIMP and LME run on where linear shape functions stop",
+                       "at each U/h where linear stopped (same integrator), the run reaches its end time (holds) or stops (fails): the "
+                       "ending is what this claim counts, as in \"Every run reaches its end time\"; a run that reaches it no better than "
+                       "a flat line is named so", {}, false};
   std::string table = "| shape | integrator | RMS/\\|v0\\| at U/h = " + text(amplitude_ratios.front()) + " | onset U/h |\n|---|---|---|---|\n";
   std::map<std::string, Onset> onsets;
   for (const auto& shape : shapes)
@@ -206,7 +226,7 @@ inline Section amplitude_section(const Runs& runs) {
         const mpm::Measured m = rms_over_own_v0(run);
         out << shape << "," << integrator << "," << ratio << "," << run.v0 << "," << m.value << "," << m.band << ","
             << (run.failed ? std::nan("") : run.space_time / std::abs(run.v0)) << "," << (run.failed ? std::nan("") : run.ringing) << ","
-            << (run.failed ? std::nan("") : run.undershoot) << "," << ending(run) << "," << (run.time.empty() ? 0.0 : run.time.back()) << "\n";
+            << (run.failed ? std::nan("") : run.mean_shortfall) << "," << ending(run) << "," << (run.time.empty() ? 0.0 : run.time.back()) << "\n";
       }
       const Onset o = onsets[shape + integrator] = amplitude_onset(runs, shape, integrator);
       const DykaResult &small = runs.at(amplitude_name(shape, integrator, amplitude_ratios.front())), &quarter = runs.at(amplitude_name(shape, integrator, 0.25));
@@ -216,7 +236,7 @@ inline Section amplitude_section(const Runs& runs) {
       if (r.ending == mpm::Ending::stopped)
         floor.add(where + ": " + not_compared_text(quarter, "U/h 0.25", small, "U/h 0.01"), std::nan(""), mpm::Outcome::stopped);
       else
-        floor.add(where + ": " + text(r.value, "%.4f") + " ± " + text(r.band, "%.2g"), r.value, mpm::judge_within(r, 0.95, 1.05));
+        floor.add(where + ": " + text(r.value, "%.4f") + " ± " + text(r.band, "%.2g"), r.value, mpm::judge_within(r, 0.99, 1.01));
     }
   for (const auto& shape : {"ugimp", "lme"})
     for (const auto& integrator : integrators) {
@@ -229,7 +249,7 @@ inline Section amplitude_section(const Runs& runs) {
         const std::string e = ending(run);
         finishes.add(std::string(shape) + " " + integrator + ", U/h " + text(ratio) + ": " + (run.failed ? stopped_text(run) : e == "failed" ?
                          "failed (RMS/|v0| " + text(rms_over_own_v0(run).value, "%.3f") + ", no smaller than a flat line's)" :
-                         "RMS/|v0| " + text(rms_over_own_v0(run).value, "%.4f")), run.failed ? std::nan("") : rms_over_own_v0(run).value, e == "done");
+                         "RMS/|v0| " + text(rms_over_own_v0(run).value, "%.4f")), run.failed ? std::nan("") : rms_over_own_v0(run).value, !run.failed);
       }
     }
   return {"Grid crossing isolated on the Dyka bar: the initial speed swept at " + std::to_string(amplitude_cells) + " cells (`dyka_amplitude`)",

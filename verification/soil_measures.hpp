@@ -60,10 +60,6 @@ struct SettlementMeasures {
   /// conserved: (max - min of E over t >= T/2) / (mean kinetic + strain energy there)
   double energy_drift = std::numeric_limits<double>::quiet_NaN();
   double energy_drift_band = 0.0;  ///< its band: the larger move of the drift taken on the even or the odd samples alone
-  /// the damping after the ramp: the mechanical energy's trend, minus the least-squares slope of E(t) over t >= T/2 times
-  /// the time since, / the mean kinetic + strain energy there (> 0: energy lost; the oscillation about the trend is what
-  /// energy_drift also sees), with its band from the even and the odd samples alone
-  double energy_loss = std::numeric_limits<double>::quiet_NaN(), energy_loss_band = 0.0;
   double static_small_strain = 0.0;  ///< static u(Y), paper/07_exact_column.md
   double static_log_strain = 0.0;    ///< static u(Y) at finite (logarithmic) strain
 };
@@ -119,24 +115,6 @@ inline SettlementMeasures measure_settlement(const SoilResult& result) {
     }
     return count > 1 ? (highest - lowest) / (strain / count) : std::numeric_limits<double>::quiet_NaN();
   };
-  // the trend on every sample after the ramp (step 1), or on every other one from `first`
-  auto loss = [&result](size_t first, size_t step) {
-    double st = 0.0, se = 0.0, stt = 0.0, ste = 0.0, strain = 0.0, begin = INFINITY, end = -INFINITY;
-    int count = 0;
-    size_t after = 0;
-    for (size_t n = 0; n < result.time.size(); ++n) {
-      if (result.time[n] < 0.5 * result.scene.ramp_period) continue;
-      if (after++ % step != first) continue;
-      const double t = result.time[n], energy = result.kinetic_plus_strain[n] + result.gravity_potential[n];
-      st += t, se += energy, stt += t * t, ste += t * energy, strain += result.kinetic_plus_strain[n], ++count;
-      begin = std::min(begin, t), end = std::max(end, t);
-    }
-    if (count < 3) return std::numeric_limits<double>::quiet_NaN();
-    const double slope = (count * ste - st * se) / (count * stt - st * st);
-    return -slope * (end - begin) / (strain / count);
-  };
-  m.energy_loss = loss(0, 1);
-  m.energy_loss_band = mpm::band_of_halves(m.energy_loss, loss(0, 2), loss(1, 2));
   m.energy_drift = drift(0, 1);
   m.energy_drift_band = mpm::band_of_halves(m.energy_drift, drift(0, 2), drift(1, 2));
   const double end = result.scene.control.end_time, period = first_period(result.scene);

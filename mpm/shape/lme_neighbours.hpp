@@ -134,6 +134,15 @@ TEST_CASE("LME neighbours, the authors' patch: the 4 x 4 nodes around the cell, 
   CHECK(lme_patch_neighbours(plane, 16, 0, Vector<2>(0.5, 0.5), nodes, offsets) == 9);  // nodes 0-2 on each axis
   CHECK(lme_patch_neighbours(plane, 16, 0, Vector<2>(4.5, 2.5), nodes, offsets) == 12);  // 3 x 4 at the side
   CHECK_THROWS_AS(lme_patch_neighbours(plane, 15, 3, Vector<2>(2.5, 2.5), nodes, offsets), ShapeFailure);
+  // the options' rule: at a cell centre with gamma 3 and tol 1e-5, R = 1.96 h holds 12 nodes (not the patch's corners
+  // at 2.12 h), the authors' patch all 16
+  LmeOptions options;
+  options.support_tolerance = 1e-5;
+  const double radius_squared = lme_radius_squared<2>(options);
+  CHECK(lme_support(options, plane, radius_squared, 16, 0, Vector<2>(2.5, 2.5), nodes, offsets) == 12);
+  options.neighbours = LmeOptions::Neighbours::authors_patch;
+  CHECK(lme_support_capacity<2>(options, radius_squared) == 16);
+  CHECK(lme_support(options, plane, radius_squared, 16, 0, Vector<2>(2.5, 2.5), nodes, offsets) == 16);
 }
 
 TEST_CASE("LME neighbours: every node within R and no other, the lattice bound is reached and never exceeded") {
