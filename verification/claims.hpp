@@ -67,6 +67,11 @@ struct Sample {
   bool undecided = false;  ///< within the measurement's resolution (a timing spread, 2 s.e. of an order): neither
 };
 
+/// The sample's outcome by the one rule, as a word: "holds", "fails", "undecided" or "stopped".
+inline const char* outcome_word(const Sample& sample) {
+  return sample.stopped ? "stopped" : sample.undecided ? "undecided" : sample.holds ? "holds" : "fails";
+}
+
 /// A claim evaluated on every place of its study, so that the report says where it holds and where it fails,
 /// never "holds" over a chosen subset. A stopped run is its own outcome (add_stopped): listed as not compared and
 /// left out of "holds on k of n" -- except in a hard claim, where it fails.

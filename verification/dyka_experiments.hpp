@@ -311,7 +311,7 @@ inline Section space_time_section(const Runs& runs) {
   for (const auto* pair : {orders, spoils, better})
     for (std::size_t k = 0; k < pair[0].samples.size(); ++k) {
       const Sample &a = pair[0].samples[k], &b = pair[1].samples[k];
-      auto outcome = [](const Sample& s) { return s.stopped ? "stopped" : s.undecided ? "undecided" : s.holds ? "holds" : "fails"; };
+      const auto outcome = outcome_word;
       if (std::string(outcome(a)) != outcome(b))
         changed += (changed.empty() ? "" : "; ") + pair[1].statement.substr(0, pair[1].statement.find(" (all")) + ", " +
                    a.where.substr(0, a.where.find(':')) + ": " + outcome(a) + " at point A, " + outcome(b) + " on all particles";

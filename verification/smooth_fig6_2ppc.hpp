@@ -75,7 +75,9 @@ struct DykaTable {
     return cells;
   }
 };
-inline DykaTable read_dyka_runs(const std::string& folder) {
+/// `all_particles`: each run scored by the all-particle space-time norm (columns space_time_over_v0 and its band) instead
+/// of point A's RMS (the ending stays the RMS's).
+inline DykaTable read_dyka_runs(const std::string& folder, bool all_particles = false) {
   DykaTable table;
   for (int ppc : {1, 2})
     for (const auto& row : read_csv(folder + (ppc == 1 ? "/dyka_sweep.csv" : "/dyka_2ppc.csv"))) {
@@ -83,10 +85,12 @@ inline DykaTable read_dyka_runs(const std::string& folder) {
       if (row.count("ppc") && std::stoi(row.at("ppc")) != ppc) continue;
       DykaRun run;
       run.method = {row.at("shape"), row.at("integrator")}, run.ppc = ppc, run.cells = std::stoi(row.at("cells"));
-      if (row.at("status") == "ok") run.rms = std::stod(row.at("rms_over_v0"));
+      const std::string score = all_particles ? "space_time_over_v0" : "rms_over_v0";
+      const std::string band = all_particles ? "space_time_band_over_v0" : "rms_band_over_v0";
+      if (row.at("status") == "ok") run.rms = std::stod(row.at(score));
       if (row.count("cpu_seconds")) run.cpu = std::stod(row.at("cpu_seconds"));
       if (row.count("failure")) run.failure = row.at("failure");
-      if (row.count("rms_band_over_v0") && !run.stopped()) run.band = std::stod(row.at("rms_band_over_v0"));
+      if (row.count(band) && !run.stopped()) run.band = std::stod(row.at(band));
       run.failed = row.count("ending") && row.at("ending") == "failed";
       table.runs.push_back(run);
     }

@@ -49,7 +49,8 @@ inline void write_manufactured_orders(const std::string& folder, const Runs& run
 /// dyka_2ppc.csv: the Dyka bar at 2 ppc, every method and mesh of its study.
 inline void write_dyka_runs(const std::string& folder, const std::vector<Axes>& all, const Runs& runs) {
   std::ofstream out(folder + "/dyka_2ppc.csv");
-  out << "shape,integrator,cells,crossing_ratio,rms_over_v0,largest_speed_over_v0,wall_seconds,status,rms_own_time_over_v0,failure,cpu_seconds,rms_band_over_v0,ending\n";
+  out << "shape,integrator,cells,crossing_ratio,rms_over_v0,largest_speed_over_v0,wall_seconds,status,rms_own_time_over_v0,failure,cpu_seconds,rms_band_over_v0,ending,"
+         "space_time_over_v0,space_time_band_over_v0\n";
   for (const Case& c : expand(all)) {
     if (c.group != Group::dyka) continue;
     const auto k = runs.index(c);
@@ -62,7 +63,9 @@ inline void write_dyka_runs(const std::string& folder, const std::vector<Axes>& 
         << r.largest_speed / dyka_speed << r.wall_seconds << (r.failed ? "failed" : "ok") << (r.failed ? std::nan("") : r.rms_own_time / dyka_speed)
         << failure << runs.results[k].cpu_seconds
         << (r.failed ? std::nan("") : mpm::band_of_halves(r.rms, r.even.rms, r.odd.rms) / dyka_speed)
-        << (r.failed ? "stopped" : mpm::score_ending(r.rms, r.flat_rms) == mpm::Ending::failed ? "failed" : "done");
+        << (r.failed ? "stopped" : mpm::score_ending(r.rms, r.flat_rms) == mpm::Ending::failed ? "failed" : "done")
+        << (r.failed ? std::nan("") : r.space_time / dyka_speed)
+        << (r.failed ? std::nan("") : mpm::band_of_halves(r.space_time, r.space_time_even, r.space_time_odd) / dyka_speed);
     out << row.text.str() << "\n";
   }
 }
