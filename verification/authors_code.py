@@ -58,7 +58,7 @@ def main():
         out.write("| The two codes agree within 1 %% of RMS/v0 | abs(gap) < 1 %% beyond its band (the gap on the even "
                   "and on the odd rows alone), by the one rule | %s | %s | %s | **%s** |\n\n" % (
                       "; ".join("%s (%s ± %.2g %%)" % (name(r), r["rms_gap_percent"], band(r)) for r in within) or "-",
-                      "; ".join("%s (%s %%)" % (name(r), r["rms_gap_percent"]) for r in beyond) or "-",
+                      "; ".join("%s (%s ± %.2g %%)" % (name(r), r["rms_gap_percent"], band(r)) for r in beyond) or "-",
                       "; ".join("%s (%s %%, undecided)" % (name(r), r["rms_gap_percent"]) for r in undecided) or "-",
                       verdict_rule.verdict_text([outcome(r) for r in rows])))
         if beyond:
