@@ -16,7 +16,8 @@ status=0
   --set 'solver.integrator="fe"' >"$run_fe.log" 2>&1 || status=1
 cp "$run/energy.csv" "$data/disks_energy.csv" || status=1
 cp "$run_fe/energy.csv" "$data/disks_energy_fe.csv" || status=1
-gnuplot -e "dir='$plots'; data='$data'; out='$figures/disks_energy'" "$plots/disks_energy.gp" || status=1
+source "$MPM_ROOT/verification/figure.sh"
+draw_figure disks_energy.gp "out='$figures/disks_energy'" || status=1
 # sum |m v| over the particles at t = 0: twice rho pi r^2 |v| per unit thickness is its continuum value; the
 # particles' own is the initial kinetic energy's 2 E_0 / |v| (all particles move at |v| = 0.1 sqrt 2 m/s).
 # The end energy's band (the one rule, verification/verdict_rule.py): its change over the last step, what it moves by

@@ -9,7 +9,8 @@ scene=$MPM_ROOT/scenes/dyka_bar.toml
 status=0
 "$MPM_BIN/dyka_suite" "$data" "$MPM_RESULTS/report/20_dyka.md" "$scene" --part figures || status=1
 
-g() { gnuplot -e "dir='$plots'; data='$data'; $1" "$plots/$2" || status=1; }
+source "$MPM_ROOT/verification/figure.sh"
+g() { draw_figure "$2" "$1" || status=1; }
 g "out='$figures/dyka_fig6'; orders='$data/dyka_orders.csv'" dyka_fig6.gp
 series() {  # series NAME CAPTION INSET SETTINGS FILES... -- TITLES... (SETTINGS: more gnuplot, e.g. colour_of, dashes)
   local name=$1 caption=$2 inset=$3 settings=$4; shift 4

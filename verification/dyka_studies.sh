@@ -14,7 +14,8 @@ status=0
 bash "$MPM_ROOT/verification/dyka_stability.sh" "$MPM_BIN/mpm" "$scene" "$data" || status=1
 echo "studies: dyka: stability map done"
 
-g() { gnuplot -e "dir='$plots'; data='$data'; $1" "$plots/$2" || status=1; }
+source "$MPM_ROOT/verification/figure.sh"
+g() { draw_figure "$2" "$1" || status=1; }
 g "out='$figures/dyka_fair'" dyka_fair.gp
 g "out='$figures/dyka_fig7_fair'; fair=1" dyka_fig7.gp
 g "out='$figures/dyka_work_precision'" dyka_work_precision.gp

@@ -26,8 +26,9 @@ for kind in "${kinds[@]}"; do
   awk -v w="$worst" 'BEGIN{exit !(w<=1e-9)}' || status=1
 done
 
-gnuplot -e "dir='$plots'; data='$data'; out='$figures/shapes_fig4'" "$plots/shapes_fig4.gp" || status=1
-gnuplot -e "dir='$plots'; data='$data'; out='$figures/shapes_fig4_1d'" "$plots/shapes_fig4_1d.gp" || status=1
+source "$MPM_ROOT/verification/figure.sh"
+draw_figure shapes_fig4.gp "out='$figures/shapes_fig4'" || status=1
+draw_figure shapes_fig4_1d.gp "out='$figures/shapes_fig4_1d'" || status=1
 
 # How far each LME is from the linear hat along the line (1D), and its support.
 distance() { paste -d, "$data/shape1d_$1_centre.csv" "$data/shape1d_linear_centre.csv" | awk -F, 'NR>1 {d=$2-$5; if(d<0)d=-d; if(d>w)w=d} END{printf "%.4f", w}'; }

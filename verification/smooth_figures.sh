@@ -9,7 +9,8 @@
 set -uo pipefail
 data=$MPM_RESULTS/data figures=$MPM_RESULTS/figures plots=$MPM_ROOT/verification/plots
 status=0
-g() { gnuplot -e "dir='$plots'; data='$data'; $1" "$plots/$2" || { echo "smooth: gnuplot failed on $2"; status=1; }; }
+source "$MPM_ROOT/verification/figure.sh"
+g() { draw_figure "$2" "$1" || { echo "smooth: figure $2 failed"; status=1; }; }
 
 if [[ ${1:-} == fig6 ]]; then
   "$MPM_BIN/smooth_suite" --fig6-2ppc "$data" "$MPM_RESULTS/report/22_dyka_2ppc.md" || status=1

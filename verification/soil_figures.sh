@@ -18,8 +18,9 @@ report=$MPM_RESULTS/report/$([[ $part == studies ]] && echo 35_soil.md || echo 3
 status=0
 "$MPM_BIN/soil_suite" "$data" "$report" "$MPM_ROOT/scenes" --part "$part" || status=1
 
+source "$MPM_ROOT/verification/figure.sh"
 draw() {  # draw NAME SCRIPT: verification/plots/SCRIPT.gp -> figures/NAME.png and .pdf
-  gnuplot -e "dir='$plots'; data='$data'; out='$figures/$1'" "$plots/$2.gp" || { echo "soil: gnuplot failed on $2.gp"; status=1; }
+  draw_figure "$2.gp" "out='$figures/$1'" || { echo "soil: figure $2.gp failed"; status=1; }
 }
 if [[ $part == studies ]]; then
   draw soil_refinement soil_refinement
