@@ -219,8 +219,8 @@ inline std::string compare_plot_script(const std::string& picture, const std::ve
   gp << gnuplot_page(picture, scores.size());
   for (size_t c = 0; c < scores.size(); ++c)
     gp << "set ylabel " << gnuplot_quoted(scores[c].quantity + " (" + io::quantity_unit(scores[c].quantity) + ")")
-       << "\nplot $data" << c << " using 1:2 with lines lw 1.5 title " << gnuplot_quoted(scores[c].column) << ", $data"
-       << c << " using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'exact'\n";
+       << "\nplot $data" << c << " using 1:3 with lines @exact_style title 'exact', $data" << c << " using 1:2 with lines "
+       << gnuplot_curve_style(0, 1) << " title " << gnuplot_quoted(scores[c].column) << "\n";
   return gp.str() + "unset multiplot\nunset output\n";
 }
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "mpm/io/output_file.hpp"
+#include "mpm_generated/palette_gp.hpp"
 
 namespace mpm::cli {
 
@@ -34,16 +35,25 @@ inline bool has_control_character(const std::string& text) {
                      [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
-/// The settings every picture starts with: CSV data, a grid, the key outside, t on the x axis.
-inline const char* gnuplot_preamble =
-    "set datafile separator ','\nset grid lc rgb '#dddddd'\n"
-    "set key outside right top\nset lmargin 14\nset xlabel 't (s)'\n";
+/// The settings every picture starts with: the figures' one visual identity (verification/plots/palette.gp, built
+/// in as gnuplot_palette: colours, dashes, the exact solution's style, the ramp), CSV data, a grid, the key outside,
+/// t on the x axis.
+inline const std::string gnuplot_preamble =
+    std::string(gnuplot_palette) +
+    "\nset datafile separator ','\nset grid lc rgb c_grid\nset key outside right top\nset lmargin 14\n"
+    "set xlabel 't (s)'\n";
+
+/// The style of curve `k` (from 0) of `count` drawn by `mpm plot` or `mpm compare --plot`: the palette's ramp, the
+/// same colour for the same observer in every panel.
+inline std::string gnuplot_curve_style(std::size_t k, std::size_t count) {
+  return "lw 1.5 lc rgb ramp(" + std::to_string(k + 1) + ", " + std::to_string(count) + ")";
+}
 
 /// The lines starting a PNG `picture` of `panels` panels stacked, 260 pixels high each; a relative path is
 /// written ./PATH, so that it never starts with '|' (gnuplot would run it as a command).
 inline std::string gnuplot_page(const std::string& picture, std::size_t panels) {
   std::ostringstream page;
-  page << "set terminal pngcairo noenhanced size 1000," << 260 * panels << " font ',10'\nset output "
+  page << "set terminal pngcairo noenhanced size 1000," << 260 * panels << " font ',11'\nset output "
        << gnuplot_quoted(picture.rfind('/', 0) == 0 ? picture : "./" + picture) << "\nset multiplot layout " << panels
        << ",1\n";
   return page.str();
@@ -127,7 +137,7 @@ TEST_CASE(
   CHECK(has_control_character(std::string("a\0b", 3)));
   CHECK(!has_control_character("sigma_xx (Pa) \xc3\xa9"));  // UTF-8 is no control character
   CHECK(gnuplot_page("|touch F.png", 1).find("set output './|touch F.png'\n") != std::string::npos);
-  CHECK(gnuplot_page("/tmp/a.png", 2).find("size 1000,520 font ',10'\nset output '/tmp/a.png'") != std::string::npos);
+  CHECK(gnuplot_page("/tmp/a.png", 2).find("size 1000,520 font ',11'\nset output '/tmp/a.png'") != std::string::npos);
   namespace fs = std::filesystem;
   const std::string path =
       (fs::temp_directory_path() / ("mpm_gnuplot_test_" + std::to_string(::getpid()) + ".png")).string();

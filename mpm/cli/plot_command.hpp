@@ -50,23 +50,33 @@ inline bool draws_energy(const std::vector<std::string>& energy) {
                      [](auto& name) { return energy_column(name, false) || energy_column(name, true); });
 }
 
+/// "A.v_x" -> "A"; "kinetic" -> "kinetic".
+inline std::string curve_of(const std::string& column) { return column.substr(0, column.find('.')); }
+
 /// A gnuplot `plot` of the columns of `file` (its table `names`) that `pick` takes, by number and titled by name,
-/// each with the column of exact.csv (its table `exact`) of the same name beside it; `range` takes their values.
+/// each after the column of exact.csv (its table `exact`) of the same name, drawn under it in the exact solution's
+/// style; `range` takes their values. Each curve's colour is its observer's (or energy's) place on the palette's
+/// ramp, the same in every panel.
 template <class Pick>
 std::string plot_columns(const std::string& file, const PlotTable& names, Pick pick, ValueRange& range,
                          const PlotTable& exact = {}) {
+  std::vector<std::string> curves;  // the observers (A, B...) or energies, in order of first appearance
+  for (size_t k = 1; k < names.names.size(); ++k)
+    if (std::count(curves.begin(), curves.end(), curve_of(names.names[k])) == 0)
+      curves.push_back(curve_of(names.names[k]));
   std::string line;
   for (size_t k = 1; k < names.names.size(); ++k) {
     if (!pick(names.names[k])) continue;
     range.add(names, k);
-    line += (line.empty() ? "plot '" : ", '") + file + "' using 1:" + std::to_string(k + 1) +
-            " with lines lw 1.5 title " + gnuplot_quoted(names.names[k]);
     for (size_t j = 0; j < exact.names.size(); ++j)
       if (exact.names[j] == names.names[k]) {
         range.add(exact, j);
-        line += ", 'exact.csv' using 1:" + std::to_string(j + 1) + " with lines dt 2 lw 2 lc rgb 'black' title " +
-                gnuplot_quoted(exact.names[j] + " exact");
+        line += (line.empty() ? "plot " : ", ") + std::string("'exact.csv' using 1:") + std::to_string(j + 1) +
+                " with lines @exact_style title " + gnuplot_quoted(exact.names[j] + " exact");
       }
+    const auto place = std::find(curves.begin(), curves.end(), curve_of(names.names[k])) - curves.begin();
+    line += (line.empty() ? "plot '" : ", '") + file + "' using 1:" + std::to_string(k + 1) + " with lines " +
+            gnuplot_curve_style(place, curves.size()) + " title " + gnuplot_quoted(names.names[k]);
   }
   return line + "\n";
 }
@@ -178,14 +188,17 @@ TEST_CASE("mpm plot: the script draws each observer's column beside the exact on
   const std::string script = plot_script({{"t", "A.x", "A.v_x", "A.sigma_xx", "A.u_x"}}, {{"t", "A.v_x", "A.sigma_xx"}},
                                          {{"t", "kinetic", "strain", "total", "momentum_x"}});
   CHECK(script.find("set multiplot layout 4,1") != std::string::npos);
-  CHECK(script.find("'observers.csv' using 1:3 with lines lw 1.5 title 'A.v_x', 'exact.csv' using 1:2 ") !=
-        std::string::npos);
-  CHECK(script.find("'observers.csv' using 1:4 with lines lw 1.5 title 'A.sigma_xx', 'exact.csv' using 1:3 ") !=
-        std::string::npos);
-  CHECK(script.find("'observers.csv' using 1:2 with lines lw 1.5 title 'A.x'\n") != std::string::npos);  // no exact x
+  CHECK(script.find("plot 'exact.csv' using 1:2 with lines @exact_style title 'A.v_x exact', 'observers.csv' using "
+                    "1:3 with lines lw 1.5 lc rgb ramp(1, 1) title 'A.v_x'\n") != std::string::npos);
+  CHECK(script.find("plot 'exact.csv' using 1:3 with lines @exact_style title 'A.sigma_xx exact', 'observers.csv' "
+                    "using 1:4 with lines lw 1.5 lc rgb ramp(1, 1) title 'A.sigma_xx'\n") != std::string::npos);
+  CHECK(script.find("plot 'observers.csv' using 1:2 with lines lw 1.5 lc rgb ramp(1, 1) title 'A.x'\n") !=
+        std::string::npos);  // no exact x
+  CHECK(script.find(gnuplot_palette) < script.find("set terminal"));  // the figures' identity first
   CHECK(script.find("set ylabel 'stress sigma_xx (Pa, tension > 0)'\n") != std::string::npos);
-  CHECK(script.find("'energy.csv' using 1:4 with lines lw 1.5 title 'total'") != std::string::npos);
-  CHECK(script.find("'energy.csv' using 1:5 with lines lw 1.5 title 'momentum_x'") != std::string::npos);
+  CHECK(script.find("'energy.csv' using 1:4 with lines lw 1.5 lc rgb ramp(3, 4) title 'total'") != std::string::npos);
+  CHECK(script.find("'energy.csv' using 1:5 with lines lw 1.5 lc rgb ramp(4, 4) title 'momentum_x'") !=
+        std::string::npos);
   CHECK(script.find("set ylabel 'displacement u_x since t = 0 (m)'\n") != std::string::npos);
   CHECK(script.find("set ylabel 'momentum (kg/(m s): per unit cross-section area)'\n") != std::string::npos);
   CHECK(plot_script({{"t"}}, {}, {{"t", "kinetic"}}).find("observers.png") == std::string::npos);

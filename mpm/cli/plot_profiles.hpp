@@ -102,7 +102,7 @@ inline std::string grid_arrows(const GridLines& grid, std::size_t axes) {
       const double at = (grid.lower[axis] * (cells - line) + grid.upper[axis] * line) / cells;
       gp << "set arrow from " << (axis == 0 ? "first " : "graph 0, first ") << at << (axis == 0 ? ", graph 0" : "")
          << " to " << (axis == 0 ? "first " : "graph 1, first ") << at << (axis == 0 ? ", graph 1" : "")
-         << " nohead back lc rgb '#c8c8c8'\n";
+         << " nohead back lc rgb c_context\n";
     }
   }
   return gp.str();
@@ -136,13 +136,13 @@ inline std::string profile_1d(const SnapshotFiles& snapshot, const PlotTable& pa
     ValueRange range;
     range.add(particles, particles.column(field));
     std::string plot = "plot '" + snapshot.csv + "' using " + x + ":" + column_number(particles, field, snapshot.csv) +
-                       " with points pt 7 ps 0.8 lc rgb '#1f77b4' title 'particles'";
+                       " with points pt 7 ps 0.8 lc rgb c_particle title 'particles'";
     if (exact.column(field) >= 0) {
       range.add(exact, exact.column(field));
-      plot += ", '" + snapshot.exact + "' using (column(" + column_number(exact, "X", snapshot.exact) +
-              ") + column(" + column_number(exact, "u_x", snapshot.exact) + ")):" +
-              column_number(exact, field, snapshot.exact) +
-              " smooth unique with lines dt 2 lw 2 lc rgb 'black' title 'exact at X + u'";
+      plot = "plot '" + snapshot.exact + "' using (column(" + column_number(exact, "X", snapshot.exact) +
+             ") + column(" + column_number(exact, "u_x", snapshot.exact) + ")):" +
+             column_number(exact, field, snapshot.exact) + " smooth unique with lines @exact_style title 'exact at X + u', " +
+             plot.substr(5);
     }
     gp += "set ylabel " + gnuplot_quoted(quantity_label(field)) + "\n" + axis_range("y", range.low, range.high) +
           plot + "\n";
@@ -194,7 +194,7 @@ inline std::string profile_script(const std::string& folder, const std::vector<S
     std::vector<std::string> fields{"v_x", "sigma_xx"};
     if (!two && !field.empty() && field != "v_x" && field != "sigma_xx") fields.push_back(field);
     gp += std::string("set terminal pngcairo noenhanced size ") + (two ? "1000,480" : "1000,") +
-          (two ? "" : std::to_string(260 * fields.size())) + " font ',10'\nset output '" + picture +
+          (two ? "" : std::to_string(260 * fields.size())) + " font ',11'\nset output '" + picture +
           "'\nset lmargin " + (two ? "-1" : "14") + "\nset rmargin " + (two ? "-1" : "at screen 0.8") +
           "\nset format x\nset format y\nset multiplot layout " + (two ? "1,2" : std::to_string(fields.size()) + ",1") +
           " title " +
@@ -222,10 +222,11 @@ TEST_CASE("mpm plot: profiles of a snapshot against the exact one, over the grid
   const std::string gp = profile_1d({2, "snapshot_0002.csv", "exact_0002.csv", 1e-4}, particles, exact,
                                     {"v_x", "sigma_xx", "density"});
   CHECK(gp.find("set ylabel 'velocity v_x (m/s)'\n") != std::string::npos);
-  CHECK(gp.find("plot 'snapshot_0002.csv' using 2:3 with points") != std::string::npos);
+  CHECK(gp.find("plot 'exact_0002.csv' using (column(2) + column(3)):4 smooth unique with lines @exact_style title "
+                "'exact at X + u', 'snapshot_0002.csv' using 2:3 with points") != std::string::npos);  // exact under
   CHECK(gp.find("'exact_0002.csv' using (column(2) + column(3)):5 smooth unique") != std::string::npos);
   CHECK(gp.find("set ylabel 'density (kg/m^3)'\nset autoscale y\nset format y\nplot 'snapshot_0002.csv' using 2:5 "
-                "with points pt 7 ps 0.8 lc rgb '#1f77b4' title 'particles'\n") != std::string::npos);  // no exact
+                "with points pt 7 ps 0.8 lc rgb c_particle title 'particles'\n") != std::string::npos);  // no exact
   CHECK(profile_title({2, "", "", 1e-4}, grid) == "snapshot 0002, t = 0.0001 s (no exact solution)");
   const PlotTable plane{{"id", "x", "y", "sigma_yy"}, {0, 0, 0, -1}, {1, 1, 1, 0}};
   const std::string colour = profile_2d({0, "snapshot_0000.csv", "", 0.0}, plane, {}, "sigma_yy");

@@ -38,6 +38,8 @@ set dashtype 6 (8, 3, 2, 3, 2, 3)
 # A method: its shape's colour, its integrator's dash and marker (a string for a plot command).
 method_lw = 1.5
 method_style(s, i) = sprintf("lw %g dt %d pt %d lc rgb '%s'", method_lw, dash(i), marker(i), colour(s))
+# The same without the marker, for `with lines` (gnuplot warns at a pt there).
+method_line(s, i) = sprintf("lw %g dt %d lc rgb '%s'", method_lw, dash(i), colour(s))
 method_name(s, i) = shape_name(s).' + '.integrator_name(i)
 
 # References.
