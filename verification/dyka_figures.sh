@@ -12,20 +12,13 @@ status=0
 source "$MPM_ROOT/verification/figure.sh"
 g() { draw_figure "$2" "$1" || status=1; }
 g "out='$figures/dyka_fig6'; orders='$data/dyka_orders.csv'" dyka_fig6.gp
-series() {  # series NAME CAPTION INSET SETTINGS FILES... -- TITLES... (SETTINGS: more gnuplot, e.g. colour_of, dashes)
-  local name=$1 caption=$2 inset=$3 settings=$4; shift 4
-  local files="" titles=""
-  while [[ $1 != -- ]]; do files="$files $data/$1.csv"; shift; done; shift
-  titles="$*"
-  g "out='$figures/$name'; caption='$caption'; files='${files# }'; titles='$titles'; inset=$inset; $settings" dyka_series.gp
+series() {  # series NAME INTEGRATOR CAPTION: v_A(t) of the four shapes at 40 cells (dyka_series.gp), differences below
+  g "out='$figures/$1'; shapes='linear ugimp lme lme_authors'; integrator='$2'; caption='$3'" dyka_series.gp
 }
 g "out='$figures/dyka_fig7'" dyka_fig7.gp
-# Figs. 9 and 10: LME also under the authors' beta, dashed in LME's colour.
-authors="colour_of='1 2 3 3'; dashes='1 1 1 2'"
-series dyka_fig9 "Fig. 9: shape functions, forward Euler (40 cells, CFL 0.5)" 0 "$authors" \
-  dyka_linear_fe_40 dyka_ugimp_fe_40 dyka_lme_fe_40 dyka_lme_authors_fe_40 -- linear uGIMP LME '"LME, authors’ β"'
-series dyka_fig10 "Fig. 10: shape functions, predictor-corrector (40 cells, CFL 0.5)" 0 "$authors" \
-  dyka_linear_npc_40 dyka_ugimp_npc_40 dyka_lme_npc_40 dyka_lme_authors_npc_40 -- linear uGIMP LME '"LME, authors’ β"'
+# Figs. 9 and 10: linear, uGIMP, LME and LME under the authors' beta, each in its shape's colour (palette.gp).
+series dyka_fig9 fe "Fig. 9: shape functions, forward Euler (40 cells, CFL 0.5): linear and uGIMP lie on one another, the two LMEs apart (bottom: each minus linear)"
+series dyka_fig10 npc "Fig. 10: shape functions, predictor-corrector (40 cells, CFL 0.5): all four lie on one another, as do their errors (bottom: each minus linear)"
 g "out='$figures/dyka_fig8'" dyka_fig8.gp
 ls "$figures"/dyka_fig* >/dev/null 2>&1 || status=1
 exit $status

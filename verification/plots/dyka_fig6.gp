@@ -1,29 +1,79 @@
-# Fig. 6: RMS of v_A against the number of cells, one panel per shape function, FE and NPC,
-# the background shaded by the grid-crossing ratio of paper/08_test_cases.md (light: negligible; middle:
-# transition; dark: crossing), the fitted order of each band ± its standard error printed on the panel ('no fit':
-# a band with fewer than 3 finished runs). A run the solver stopped is a cross at the top of its panel, labelled.
-# LME's panel also holds its runs under the authors' beta (dashed).
-# gnuplot -e "data='...'; out='...'; orders='.../dyka_orders.csv'" dyka_fig6.gp
+# Fig. 6: RMS of v_A / |v_0| against the number of cells (CFL 0.5), one panel per shape function, forward Euler (FE)
+# and the predictor-corrector (NPC) in the method style of palette.gp (the shape's colour, the integrator's dash and
+# marker; FE's markers drawn larger, under NPC's, so that both show where they meet). The background is shaded by
+# the grid-crossing band of paper/08_test_cases.md (c_band1: negligible, c_band2: transition, c_band3: crossing);
+# the fitted order of each band ± its standard error is printed on the panel ('no fit': a band with fewer than 3
+# finished runs). Only runs that ended `done` are drawn as values; a run the solver stopped (×) or one no better than
+# a flat line (failed, ○) is drawn on the strip above the data (common.gp), FE left of NPC, and named on the strip.
+# LME's panel also holds its runs under the authors' β (lme_authors colour, open markers).
+# Reads dyka_sweep.csv and dyka_sweep_authors.csv (column 1 shape, 2 integrator, 3 cells, 8 rms_over_v0, 22 ending:
+# done, failed or stopped) and dyka_orders.csv (shape, integrator, band, order, ..., standard_error).
+# gnuplot -e "dir='...'; data='...'; out='...'; orders='.../dyka_orders.csv'" dyka_fig6.gp
 load dir."/common.gp"
-w = 12; h = 4.2
-sweep = data.'/dyka_sweep.csv'
+w = 12.5; h = 5.2
+sweep = data.'/dyka_sweep.csv'; authors = data.'/dyka_sweep_authors.csv'
 band1 = 0.1 / (3.298e-5 / (0.5 * 0.1333)); band2 = 1.0 / (3.298e-5 / (0.5 * 0.1333))
-top = 0.85
+xlo = 7; xhi = 3600
+# The y range holds every finished run's RMS (both files); the bottom leaves room for the fitted orders.
+stats sweep using (strcol(22) eq 'done' ? $8 : NaN) nooutput
+lo = STATS_min; hi = STATS_max
+stats authors using (strcol(22) eq 'done' ? $8 : NaN) nooutput
+lo = (STATS_min < lo ? STATS_min : lo) / 1.9; hi = (STATS_max > hi ? STATS_max : hi) * 1.25
+ystrip = strip_y_log(lo, hi)
+# Labelled y tics within the data range only (none on the strip).
+yticks = ''
+do for [t in '0.02 0.03 0.05 0.07 0.1 0.15 0.2 0.3 0.5 0.7 1'] { if (t + 0 >= lo && t + 0 <= hi) { yticks = yticks.(yticks eq '' ? '' : ', ').t } }
+
+# A run of `shape` and `integrator` that ended so (done, stopped, failed).
+is(shape, integrator, ending) = strcol(1) eq shape && strcol(2) eq integrator && strcol(22) eq ending
+# FE's markers larger than NPC's, so that a point where they meet shows both.
+size(integrator) = integrator eq 'fe' ? 1.5 : 1.0
+# On the strip FE lies left of NPC (the same mesh), so that two runs of one mesh stay apart.
+shift(integrator) = integrator eq 'fe' ? 0.86 : 1.16
+style(shape, integrator) = shape eq 'lme_authors' ? \
+  sprintf("lw %g dt %d pt %d lc rgb '%s'", method_lw, dash(integrator), open(marker(integrator)), colour(shape)) : \
+  method_style(shape, integrator)
+done_curve(file, shape, i) = sprintf("'%s' using (is('%s','%s','done') ? $3 : NaN):8 with linespoints %s ps %g title '%s'", \
+  file, shape, i, style(shape, i), size(i), method_name(shape, i))
+ended(file, shape, i, ending, style) = sprintf("'%s' using (is('%s','%s','%s') ? $3 * shift('%s') : NaN):(ystrip) with points %s notitle", \
+  file, shape, i, ending, i, style)
+curves(file, shape) = done_curve(file, shape, 'fe').', '.done_curve(file, shape, 'npc').', '. \
+  ended(file, shape, 'fe', 'stopped', stopped_style).', '.ended(file, shape, 'npc', 'stopped', stopped_style).', '. \
+  ended(file, shape, 'fe', 'failed', failed_style).', '.ended(file, shape, 'npc', 'failed', failed_style)
+
+# The runs of `shape` that ended so, as "FE 2560, NPC 2560" (empty if none).
+ended_text(file, shape, ending) = system(sprintf("awk -F, '$1 == \"%s\" && $22 == \"%s\" {s = s (s == \"\" ? \"\" : \", \") toupper($2) \" \" $3} END {print s}' %s", shape, ending, file))
+strip_name(shape) = (ended_text(sweep, shape, 'stopped') eq '' ? '' : '× stopped: '.ended_text(sweep, shape, 'stopped').'  '). \
+  (ended_text(sweep, shape, 'failed') eq '' ? '' : '○ failed: '.ended_text(sweep, shape, 'failed'))
+# The fitted order of a band, "0.32±0.031" or "no fit".
 order_of(shape, integrator, band) = system(sprintf("awk -F, '$1==\"%s\" && $2==\"%s\" && $3==\"%s\" {if ($4 != \"nan\" && $4 != \"-nan\") printf \"%%.2f±%%.2g\", $4, $8; else printf \"no fit\"}' %s", shape, integrator, band, orders))
-stopped_of(shape) = system(sprintf("awk -F, '$1==\"%s\" && $12==\"failed\" {s = s (s == \"\" ? \"\" : \", \") toupper($2) \" \" $3} END {print s}' %s", shape, sweep))
-panel(shape, title) = sprintf("set title '%s'; set object 1 rect from 7,0.04 to band1,1.2 behind fc rgb '#f4f4f4' fs solid noborder; set object 2 rect from band1,0.04 to band2,1.2 behind fc rgb '#dcdcdc' fs solid noborder; set object 3 rect from band2,0.04 to 3600,1.2 behind fc rgb '#b8b8b8' fs solid noborder; set label 1 sprintf('FE  %%s | %%s | %%s', order_of('%s','fe','negligible'), order_of('%s','fe','transition'), order_of('%s','fe','crossing')) at graph 0.03, graph 0.12 tc rgb '#d62728' font ',8'; set label 2 sprintf('NPC %%s | %%s | %%s', order_of('%s','npc','negligible'), order_of('%s','npc','transition'), order_of('%s','npc','crossing')) at graph 0.03, graph 0.05 tc rgb '#1f77b4' font ',8'; set label 3 (stopped_of('%s') eq '' ? '' : 'stopped: '.stopped_of('%s')) at graph 0.97, first top*0.8 right font ',8'; plot sweep using (strcol(1) eq '%s' && strcol(2) eq 'fe' && strcol(12) eq 'ok' ? $3 : NaN):8 with linespoints pt 7 lc rgb '#d62728' title 'FE', sweep using (strcol(1) eq '%s' && strcol(2) eq 'npc' && strcol(12) eq 'ok' ? $3 : NaN):8 with linespoints pt 5 lc rgb '#1f77b4' title 'NPC', sweep using (strcol(1) eq '%s' && strcol(12) eq 'failed' ? $3 : NaN):(top) with points pt 2 ps 2 lw 2 lc rgb 'black' notitle", title, shape, shape, shape, shape, shape, shape, shape, shape, shape, shape, shape)
-# The LME panel: the same runs under the authors' beta (dyka_sweep_authors.csv), dashed, open points.
-authors = data.'/dyka_sweep_authors.csv'
-authors_of(integrator) = sprintf("authors using (strcol(2) eq '%s' && strcol(12) eq 'ok' ? $3 : NaN):8", integrator)
-authors_curves = ", ".authors_of('fe')." with linespoints pt 6 dt 2 lc rgb '#d62728' title 'FE, authors'' β', "
-authors_curves = authors_curves.authors_of('npc')." with linespoints pt 4 dt 2 lc rgb '#1f77b4' "
-authors_curves = authors_curves."title 'NPC, authors'' β', "
-authors_curves = authors_curves."authors using (strcol(12) eq 'failed' ? $3 : NaN):(top) with points pt 2 ps 2 lw 2 "
-authors_curves = authors_curves."lc rgb 'black' notitle"
-# make figures runs the authors' β to 640 cells (every mesh in make studies): the panel's title says where the dashed
+orders_text(shape, i) = sprintf('%s: %s | %s | %s', integrator_name(i), order_of(shape, i, 'negligible'), \
+  order_of(shape, i, 'transition'), order_of(shape, i, 'crossing'))
+
+# The grid-crossing bands, up to the strip; the fitted orders at the bottom left.
+bands = sprintf("set object 1 rect from %g,%g to %g,%g behind fc rgb '%s' fs solid noborder; ", xlo, lo, band1, hi, c_band1). \
+  sprintf("set object 2 rect from %g,%g to %g,%g behind fc rgb '%s' fs solid noborder; ", band1, lo, band2, hi, c_band2). \
+  sprintf("set object 3 rect from %g,%g to %g,%g behind fc rgb '%s' fs solid noborder; ", band2, lo, xhi, hi, c_band3)
+panel(shape, title, more) = "set title \"".title."\"; ".strip_log(lo, hi, strip_name(shape)).bands. \
+  "set label 1 '".orders_text(shape, 'fe')."' at graph 0.03, graph 0.115 front; ". \
+  "set label 2 '".orders_text(shape, 'npc')."' at graph 0.03, graph 0.05 front; ". \
+  "plot ".curves(sweep, shape).more
+
+# make figures runs the authors' β to 640 cells (every mesh in make studies): the panel's title says where its
 # curves end (authors_last, the largest mesh in dyka_sweep_authors.csv).
 stats authors using 3 nooutput
 authors_last = int(STATS_max)
-lme_panel = panel('lme',sprintf('LME, γ = 3 (dashed: the authors’ β, run to %d cells)', authors_last)).authors_curves
-draw = "set multiplot layout 1,3 title 'Fig. 6: RMS of v_A (Eq. 43) / |v_0| against the number of cells (CFL 0.5); fitted orders ± s.e. per band: negligible | transition | crossing; ×: run stopped by the solver'; set logscale xy; set xrange [7:3600]; set yrange [0.04:1.2]; set xlabel 'cells'; set ylabel 'RMS / |v_0|'; set key top center; ".panel('linear','linear (Q4)')."; ".panel('ugimp','uGIMP')."; ".lme_panel."; unset multiplot"
+lme_title = sprintf("LME: γ = 3 and the authors’ β (to %d cells)\\nNPC under both β coincide from 40 cells", authors_last)
+lme_more = ", ".curves(authors, 'lme_authors')
+
+fig_title = "Fig. 6: RMS of v_A (Eq. 43) / |v_0| against the number of cells (CFL 0.5); shading: grid-crossing band "
+fig_title = fig_title."(light: negligible, middle: transition, dark: crossing)\nPrinted: fitted order ± s.e. per band "
+fig_title = fig_title."(negligible | transition | crossing). Strip above the data: × stopped by the solver, ○ failed "
+fig_title = fig_title."(RMS no smaller than a flat line's), FE left of NPC\nFE and NPC meet near 320 cells: FE's markers "
+fig_title = fig_title."are drawn larger, under NPC's"
+draw = "set multiplot layout 1,3 title fig_title margins 0.055, 0.99, 0.24, 0.8 spacing 0.05, 0.1; ". \
+  sprintf("set logscale xy; set xrange [%g:%g]; set ytics (%s); ", xlo, xhi, yticks). \
+  "set xlabel 'cells'; set ylabel 'RMS / |v_0|'; set key at graph 0.5, screen 0.1 center top maxrows 2 Left reverse samplen 3 width 1; ". \
+  panel('linear', 'linear (Q4)', '')."; set ylabel ''; ".panel('ugimp', 'uGIMP', '')."; ". \
+  panel('lme', lme_title, lme_more)."; unset multiplot"
 load dir."/output.gp"

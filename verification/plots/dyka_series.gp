@@ -1,24 +1,40 @@
-# v_A(t) of several runs against the exact solution (Figs. 7, 9, 10 and the stability pair).
-# gnuplot -e "dir='...'; out='...'; caption='...'; files='a.csv b.csv'; titles='A B'; inset=1" dyka_series.gp
-# Optional: colour_of='1 2 3 3' (each curve's colour, by its place in `colours`; default: its own place) and
-# dashes='1 1 1 2' (each curve's dash type; default: solid), so that a run under another rule is dashed in its colour.
-# Each curve carries its own marker every few samples, at intervals that differ from curve to curve, so that curves
-# lying on one another (Fig. 10's four, at 40 cells) stay visible and named.
+# Figs. 9 and 10: v_A(t) of several shape functions under one integrator against the exact solution, each curve in the
+# method style of palette.gp (the shape's colour; the integrator's dash and marker, markers every few samples at
+# intervals that differ from curve to curve). Curves that lie on one another in the top panel are told apart below it:
+# the middle panel draws each run's error v_A − v_exact, the bottom panel each run minus the first shape's run
+# (v_A − v_A of the first shape, its largest |difference| |Δ| in the key), where the shapes part.
+# Reads dyka_<shape>_<integrator>_<cells>.csv (t, v_A, v_exact; the runs share their sampling to 0.01 %).
+# gnuplot -e "dir='...'; data='...'; out='...'; caption='...'; shapes='linear ugimp lme lme_authors'; integrator='fe'" dyka_series.gp
+# Optional: cells (default 40).
 load dir."/common.gp"
-w = 9; h = 5
-colours = "#d62728 #1f77b4 #2ca02c #9467bd #ff7f0e #8c564b #17becf"
-if (!exists("colour_of")) colour_of = ""
-if (!exists("dashes")) dashes = ""
-colour_k(k) = colour_of eq "" ? word(colours, k) : word(colours, int(word(colour_of, k)))
-dash_k(k) = dashes eq "" ? "1" : word(dashes, k)
-markers = "6 4 8 12 2 10 14"
-intervals = "47 53 59 61 67 71 73"
-curves = "plot word(files,1) using ($1*1e6):3 with lines ".exact_style." title 'exact'"
-do for [k=1:words(files)] {
-  curves = curves.sprintf(", '%s' using ($1*1e6):2 with linespoints lw 1.5 dt %s pt %s pi %s ps 0.9 lc rgb '%s' title '%s'", \
-                          word(files,k), dash_k(k), word(markers,k), word(intervals,k), colour_k(k), word(titles,k))
+w = 10; h = 9
+if (!exists("cells")) cells = 40
+file(s) = sprintf("%s/dyka_%s_%s_%d.csv", data, s, integrator, cells)
+first = word(shapes, 1)
+every(k) = word("47 53 59 61 67 71 73", k)
+# The method style of run k (inside `plot for [k = ...]`, as gnuplot options evaluated per curve).
+style_k = "lw method_lw dt dash(integrator) pt marker(integrator) pi int(every(k)) ps 0.9 lc rgb colour(word(shapes, k))"
+# Run k minus the first shape's run, sample by sample; its largest |difference| (over the whole run) for the key.
+pair(k) = sprintf("< paste -d, %s %s", file(word(shapes, k)), file(first))
+largest = ""
+do for [k = 2:words(shapes)] {
+  stats pair(k) using (abs($2 - $5)) nooutput
+  largest = largest.sprintf(" %.2g", STATS_max)
 }
-main = "set title caption; set xlabel 't (µs)'; set ylabel 'v_A (m/s)'; set xrange [0:200]; set yrange [-8:9]; set key top right; ".curves
-zoom = "set origin 0.58,0.1; set size 0.38,0.36; unset title; unset xlabel; unset ylabel; set xrange [40:66]; set yrange [-1:7]; set key off; set object 1 rect from graph 0,0 to graph 1,1 behind fc rgb 'white' fs solid; ".curves."; unset object 1"
-draw = inset ? "set multiplot; ".main."; ".zoom."; unset multiplot" : main
+zero = sprintf("0 with lines lw 1 lc rgb '%s' notitle", c_context)
+
+# Panels' places (screen fractions): one column, the three panels on one another.
+place(bottom, top) = sprintf("set lmargin at screen 0.09; set rmargin at screen 0.77; set bmargin at screen %g; set tmargin at screen %g; ", bottom, top)
+common = "set xrange [0:200]; set key at screen 0.78, graph 1 left top Left reverse samplen 3; "
+runs = "plot '".file(first)."' using ($1*1e6):3 with lines ".exact_style." title 'exact'"
+runs = runs.sprintf(", for [k = 1:%d] file(word(shapes, k)) using ($1*1e6):2 with linespoints ".style_k." title shape_name(word(shapes, k))", words(shapes))
+errors = sprintf("plot for [k = 1:%d] file(word(shapes, k)) using ($1*1e6):($2 - $3) with linespoints ".style_k." title shape_name(word(shapes, k)), %s", \
+  words(shapes), zero)
+apart = sprintf("plot for [k = 2:%d] pair(k) using ($1*1e6):($2 - $5) with linespoints ".style_k." title sprintf('%%s: |Δ| ≤ %%s', shape_name(word(shapes, k)), word(largest, k - 1)), %s", \
+  words(shapes), zero)
+
+top = place(0.55, 0.935).common."set xlabel ''; set format x ''; set ylabel 'v_A (m/s)'; set yrange [-8:9]; ".runs
+middle = place(0.32, 0.535).common."unset title; set ylabel 'v_A − v_{exact} (m/s)'; set autoscale y; ".errors
+bottom = place(0.08, 0.305).common."set xlabel 't (µs)'; set format x '%g'; set ylabel 'v_A − v_A(".shape_name(first).") (m/s)'; ".apart
+draw = "set multiplot title caption; ".top."; ".middle."; ".bottom."; unset multiplot"
 load dir."/output.gp"
