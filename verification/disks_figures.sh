@@ -45,9 +45,10 @@ band() { awk -v a="$1" -v e="$2" 'BEGIN { printf "%.2g", a / e }'; }
   echo
   echo "\`scenes/colliding_disks.toml\`: two disks of radius 0.2 m (E = 1000 Pa, nu = 0.3, rho = 1000 kg/m^3, 20 x 20 cells,"
   echo "2 x 2 particles per cell, linear shape functions, predictor-corrector, CFL 0.4) meet at +-(0.1, 0.1) m/s and"
-  echo "bounce off; \`figures/disks_energy\` draws their energies and momentum to t = 3.5 s, and the total energy of the"
-  echo "same scene with forward Euler beside it (\`data/disks_energy_fe.csv\`, dashed; the two totals coincide until the"
-  echo "disks meet, where the strain energy starts to rise)."
+  echo "bounce off; \`figures/disks_energy\` draws their kinetic, strain and total energy and the size of their total"
+  echo "momentum to t = 3.5 s, each beside the same scene with forward Euler (\`data/disks_energy_fe.csv\`; linear + NPC"
+  echo "dashed with squares, linear + FE solid with circles): the two coincide until the disks meet, where the strain"
+  echo "energy starts to rise."
   echo
   echo "![disks_energy](figures/disks_energy.png)"
   echo

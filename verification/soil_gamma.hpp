@@ -95,7 +95,7 @@ inline void write_soil_gamma_section(std::ostream& report, const SoilLookup& get
          << number(get(run_name("lme3", "npc", 2.0)).settlement.exact_swing * 1e3, "%.2g")
          << " mm), its excess the ringing, its shortfall the damping; each with its band (data/soil_gamma.csv, which also has "
             "the RMS of u_y over 0-20 s against the small-strain column). In the accuracy panel the two integrators' curves "
-            "lie within a few per cent of each other. γ under this project's rule β = γ/h² (the paper's, A&O06); under the "
+            "lie within a few per cent of each other; the panel below it draws FE - NPC with the sum of their bands. γ under this project's rule β = γ/h² (the paper's, A&O06); under the "
             "authors' β their γ = 3 is β h² = 1.34 at a cell centre in 2D (paper/09, \"The authors' beta\"), between this "
             "sweep's 1 and 1.5. The swing's band is the range of the swing over windows moved back by up to T1; where the "
             "extremes fall on the same samples in every window it is 0.\n\n";

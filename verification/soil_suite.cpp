@@ -336,14 +336,17 @@ void write_paper_sections(std::ostream& report, const verification::SoilLookup& 
             "particles, the fixed degrees of freedom (v_y = 0 on the base, v_x = 0 on the walls) and the observed particle.\n\n";
   report << "### Fig. 12: sigma_yy at t = 0, 5 and 20 s (LME gamma = 3, NPC, CFL 0.1)\n\n"
          << "![Fig. 12](figures/soil_fig12_stress.png)\n\n"
-         << "Left: sigma_yy on the particles at their current positions, one colour scale. Right: the particles' sigma_yy "
+         << "Left: sigma_yy on the particles at their current positions, one colour scale. Middle: the particles' sigma_yy "
             "against their current height, with the exact sigma_yy(Y, t) drawn at the exact current height Y + u(Y, t) "
-            "(and, at 20 s, the finite-strain static column).\n\n";
+            "(and, at 20 s, the finite-strain static column, which lies under it). Right: the particles' sigma_yy minus "
+            "the exact one at their reference height Y, and at 20 s the finite-strain static column minus the "
+            "small-strain one on its own top axis (under 1 kPa: the two columns coincide at the middle panel's scale).\n\n";
   verification::write_claims(report, c.fig12);
   report << "### Fig. 13: vertical displacement of the top particle (4.5, 9.5) m\n\n"
          << "![Fig. 13](figures/soil_fig13_settlement.png)\n\n"
          << "The paper's four shape functions; top: the predictor-corrector, bottom: forward Euler; left: 0-20 s, right: the "
-            "dashed box on the left (t = 10-20 s) enlarged, with the static settlement of the finite-strain column (dashed). "
+            "dashed box on the left (t = 10-20 s) enlarged, with the static settlement of the finite-strain column (grey, "
+            "dotted). "
             "Today's baselines on the same grid (the B-splines, USL, MUSL) are make studies'.\n\n";
   write_fig13_table(report, Part::figures, get);
   verification::write_domain_claims(report, c.fig13_domain);

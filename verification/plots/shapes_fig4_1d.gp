@@ -1,10 +1,31 @@
-# Fig. 4, 1D: N and dN/dx of the node at x = 0 (h = 1) for each shape function.
+# Fig. 4, 1D: N (left) and dN/dx (right) of the node at x = 0 (h = 1) for linear, uGIMP and LME gamma 0.8, 1.8, 4
+# (shape1d_NAME_centre.csv: x, N, dN_dx); below each, the difference from the linear hat (the files pasted side by
+# side), where uGIMP and LME gamma = 4, which lie within a line width of it above, show. Linear and uGIMP in their
+# shapes' colours, the LME gammas as a ramp (4 darkest, 0.8 lightest).
+# gnuplot -e "dir='verification/plots'; data='DATA_DIR'; out='.../shapes_fig4_1d'" shapes_fig4_1d.gp
 load dir."/common.gp"
-w = 11; h = 4.2
+w = 12; h = 7.5
 names = "linear ugimp lme_0.8 lme_1.8 lme_4"
-titles = "'linear' 'uGIMP, l_p = h/4' 'LME γ = 0.8' 'LME γ = 1.8' 'LME γ = 4'"
-colours = "black #2ca02c #440154 #277f8e #a0da39"
-curves(column) = ""
-plot_of(column) = "plot ".sprintf("'%s/shape1d_%s_centre.csv' using 1:%d with lines lw 1.5 lc rgb '%s' title '%s'", data, word(names,1), column, word(colours,1), word(titles,1)).sprintf(", '%s/shape1d_%s_centre.csv' using 1:%d with lines lw 1.5 lc rgb '%s' title '%s'", data, word(names,2), column, word(colours,2), word(titles,2)).sprintf(", '%s/shape1d_%s_centre.csv' using 1:%d with lines lw 1.5 lc rgb '%s' title '%s'", data, word(names,3), column, word(colours,3), word(titles,3)).sprintf(", '%s/shape1d_%s_centre.csv' using 1:%d with lines lw 1.5 lc rgb '%s' title '%s'", data, word(names,4), column, word(colours,4), word(titles,4)).sprintf(", '%s/shape1d_%s_centre.csv' using 1:%d with lines lw 1.5 lc rgb '%s' title '%s'", data, word(names,5), column, word(colours,5), word(titles,5))
-draw = "set multiplot layout 1,2 title 'Fig. 4 (1D): the shape function of the node at x = 0, h = 1'; set xlabel 'x / h'; set xrange [-5:5]; set key top right font ',8'; set ylabel 'N'; set yrange [-0.05:1.1]; ".plot_of(2)."; set ylabel 'dN/dx'; set yrange [-1.15:1.15]; ".plot_of(3)."; unset multiplot"
+titles = "'linear (Q4)' 'uGIMP, l_p = h/4' 'LME γ = 0.8' 'LME γ = 1.8' 'LME γ = 4'"
+file(k) = sprintf("%s/shape1d_%s_centre.csv", data, word(names, k))
+against_linear(k) = sprintf("< paste -d, %s %s", file(k), file(1))     # x, N, dN/dx, then the linear hat's
+# the LME gammas: the first three steps of a four-step ramp, gamma = 4 (nearest the linear hat and uGIMP) darkest, so
+# that no LME curve is the green of uGIMP's
+shade(k) = k == 1 ? colour('linear') : k == 2 ? colour('ugimp') : ramp(6 - k, 4)
+style(k) = sprintf("with lines lw %g lc rgb '%s'", k == 1 ? 2 : 1.5, shade(k))
+one(k, column) = sprintf("'%s' using 1:%d %s title '%s'", file(k), column, style(k), word(titles, k))
+curves(column) = "plot ".one(1, column).", ".one(2, column).", ".one(3, column).", ".one(4, column).", ".one(5, column)
+minus_linear(k, column) = sprintf(", '%s' using 1:($%d - $%d) %s", against_linear(k), column, column + 3, style(k))
+differences(column) = "plot ".sprintf("'%s' using 1:(0) %s", file(1), style(1)).minus_linear(2, column) \
+  .minus_linear(3, column).minus_linear(4, column).minus_linear(5, column)
+margins(x, bottom, top) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set bmargin at screen %g; " \
+  ."set tmargin at screen %g; ", x + 0.07, x + 0.48, bottom, top)
+upper(x) = margins(x, 0.45, 0.87)."unset xlabel; "
+lower(x) = margins(x, 0.08, 0.37)."set xlabel 'x / h'; unset key; "
+draw = "set multiplot title 'Fig. 4 (1D): the shape function N of the node at x = 0 and its derivative (h = 1, β = γ/h^2); " \
+  ."below, each minus the linear hat’s'; set xrange [-5:5]; set grid; set key top right; " \
+  .upper(0)."set title 'N'; set ylabel 'N'; set yrange [-0.05:1.1]; ".curves(2)."; " \
+  .upper(0.5)."set title '∂N/∂x'; set ylabel '∂N/∂x'; set yrange [-1.15:1.15]; ".curves(3)."; " \
+  .lower(0)."set title ''; set ylabel 'N − N_{linear}'; set yrange [-0.55:0.55]; ".differences(2)."; " \
+  .lower(0.5)."set ylabel '∂N/∂x − ∂N_{linear}/∂x'; set yrange [-1.1:1.1]; ".differences(3)."; unset multiplot"
 load dir."/output.gp"

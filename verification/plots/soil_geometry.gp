@@ -1,33 +1,49 @@
 # Fig. 11: the soil block, its grid, particles and boundary conditions, drawn from the scene itself
-# (soil_suite writes them from the solver's set-up).
-# gnuplot -e "data='DATA_DIR'; out='.../soil_fig11_geometry'" soil_geometry.gp   (writes out.png and out.pdf)
-set datafile separator ","
+# (soil_suite writes them from the solver's set-up): the block (soil_geometry_box.csv), the grid lines
+# (soil_geometry_grid.csv), the particles (soil_geometry_particles.csv), the rollers (soil_geometry_fixed.csv: a node
+# and its fixed component, 1 = v_y on the base, 0 = v_x on the walls), the observed particle of Fig. 13
+# (soil_geometry_observer.csv) and the ramped gravity of Eq. (44).
+# gnuplot -e "dir='verification/plots'; data='DATA_DIR'; out='.../soil_fig11_geometry'" soil_geometry.gp
+load dir."/common.gp"
+w = 6.6; h = 6.8
 box = data."/soil_geometry_box.csv"
-stats box using 1 nooutput name "xmin"
-stats box using 2 nooutput name "ymin"
-stats box using 3 nooutput name "xmax"
-stats box using 4 nooutput name "ymax"
-xmid = 0.5 * (xmin_max + xmax_max)
-width = xmax_max - xmin_max
+grid = data."/soil_geometry_grid.csv"
+particles = data."/soil_geometry_particles.csv"
+fixed = data."/soil_geometry_fixed.csv"
+observer = data."/soil_geometry_observer.csv"
+stats box using 1 nooutput name "box_xmin"
+stats box using 2 nooutput name "box_ymin"
+stats box using 3 nooutput name "box_xmax"
+stats box using 4 nooutput name "box_ymax"
+stats particles using 1 nooutput name "particle"
+stats grid using ($1 == $3 ? 1 : 0) nooutput name "vertical"
+xmin = box_xmin_max; ymin = box_ymin_max; xmax = box_xmax_max; ymax = box_ymax_max
+xmid = 0.5 * (xmin + xmax)
+width = xmax - xmin
+cells = int(vertical_sum) - 1              # vertical grid lines, less one
 gap = 0.035 * width                       # offset of the support symbols from their node
-set size ratio -1
-set xrange [xmin_max - 0.25 * width : xmax_max + 0.25 * width]
-set yrange [ymin_max - 0.18 * width : ymax_max + 0.08 * width]
-set xlabel "x (m)"
-set ylabel "y (m)"
-set key outside bottom center horizontal maxcols 3
-set object 1 rect from xmin_max, ymin_max to xmax_max, ymax_max fc rgb "#f2e6d0" fs solid 1.0 noborder behind
-set arrow 1 from xmax_max + 0.15 * width, ymax_max - 0.15 * width to xmax_max + 0.15 * width, ymax_max - 0.4 * width lw 2.5 lc rgb "#1f4e9a" filled
-set label 1 "g(t)" at xmax_max + 0.15 * width, ymax_max - 0.1 * width center tc rgb "#1f4e9a"
-set label 3 "Eq. (44)" at xmax_max + 0.15 * width, ymax_max - 0.45 * width center tc rgb "#1f4e9a"
-set label 2 sprintf("W = %g m", width) at xmid, ymin_max - 0.12 * width center
-set title "Soil block (scenes/soil_block.toml): grid, particles, supports" noenhanced
-do for [format in "png pdf"] {
-  if (format eq "png") { set terminal pngcairo size 760,820 font ",11" } else { set terminal pdfcairo size 5in,5.4in font ",9" }
-  set output out.".".format
-  plot data."/soil_geometry_grid.csv" using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb "#9a9a9a" lw 1 title "grid", \
-       data."/soil_geometry_particles.csv" using 1:2 with points pt 7 ps 0.6 lc rgb "#5a3d1e" title "particles", \
-       data."/soil_geometry_fixed.csv" using 1:($3 == 1 ? $2 - gap : NaN) with points pt 9 ps 1.3 lc rgb "#c0392b" title "v_y = 0 (roller)", \
-       data."/soil_geometry_fixed.csv" using ($3 == 0 ? ($1 < xmid ? $1 - gap : $1 + gap) : NaN):2 with points pt 13 ps 1.1 lc rgb "#1f7a3a" title "v_x = 0 (roller)", \
-       data."/soil_geometry_observer.csv" using 1:2 with points pt 3 ps 2.2 lw 2 lc rgb "#1f4e9a" title "observed particle (Fig. 13)"
-}
+g_x = xmax + 0.15 * width                 # where the gravity arrow stands
+scene = sprintf("set size ratio -1; set xrange [%g:%g]; set yrange [%g:%g]; ", \
+  xmin - 0.25 * width, xmax + 0.25 * width, ymin - 0.18 * width, ymax + 0.08 * width)
+scene = scene."set xlabel 'x (m)'; set ylabel 'y (m)'; set key outside bottom center horizontal maxcols 3; "
+scene = scene.sprintf("set object 1 rect from %g, %g to %g, %g fc rgb c_soil fs solid 1.0 noborder behind; ", \
+  xmin, ymin, xmax, ymax)
+scene = scene.sprintf("set arrow 1 from %g, %g to %g, %g lw 2.5 lc rgb c_load filled; ", \
+  g_x, ymax - 0.15 * width, g_x, ymax - 0.4 * width)
+scene = scene.sprintf("set label 1 'g(t)' at %g, %g center tc rgb c_load; ", g_x, ymax - 0.1 * width)
+scene = scene.sprintf("set label 3 'Eq. (44)' at %g, %g center tc rgb c_load; ", g_x, ymax - 0.45 * width)
+scene = scene.sprintf("set label 2 'W = %g m' at %g, %g center; ", width, xmid, ymin - 0.12 * width)
+title = sprintf("Fig. 11: soil block (scenes/soil_block.toml), %g m × %g m, %d × %d cells of %g m,\\n", \
+  width, ymax - ymin, cells, cells, width / cells)
+per_side = int(0.5 + sqrt(particle_records / cells**2))   # particles per cell along each side
+title = title.sprintf("%d particles (%d × %d per cell), rollers on the base and the walls, gravity ramped by Eq. (44)", \
+  particle_records, per_side, per_side)
+curves = "plot grid using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb c_mesh lw 1 title 'grid', "
+curves = curves."particles using 1:2 with points pt 7 ps 0.6 lc rgb c_particle title 'particles', "
+curves = curves."fixed using 1:($3 == 1 ? $2 - gap : NaN) with points pt 9 ps 1.3 lc rgb c_roller_y "
+curves = curves."title 'v_y = 0 (roller)', "
+curves = curves."fixed using ($3 == 0 ? ($1 < xmid ? $1 - gap : $1 + gap) : NaN):2 with points pt 13 ps 1.1 "
+curves = curves."lc rgb c_roller_x title 'v_x = 0 (roller)', "
+curves = curves."observer using 1:2 with points pt 3 ps 2.2 lw 2 lc rgb c_load title 'observed particle (Fig. 13)'"
+draw = scene."set title \"".title."\" noenhanced; ".curves
+load dir."/output.gp"
