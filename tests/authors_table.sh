@@ -12,14 +12,31 @@
 #                                                verification/data/authors_table.csv (fails when our side moves);
 #                                                their RMS/v0 also against other_codes.csv
 #   authors_table.sh MPM --write FILE            writes the table to FILE
+#   ... --histories DIR                          also keeps, for each case, particle A's velocity of our run on the
+#                                                grid that matches theirs (the run of max |dv|/v0) as DIR/ours_STEM.csv
+#                                                (t, A.v_x, and the exact solution at A's reference position, exact_v_x,
+#                                                from the run's exact.csv) and (ours interpolated linearly at their
+#                                                times - theirs) / v0 as DIR/difference_STEM.csv (t, dv_over_v0), STEM
+#                                                as in verification/data/nl_partsol_dyka_STEM.csv (make studies'
+#                                                figure authors_code); the table and its checks are the same
 # AUTHORS_TABLE_MAX_CELLS=N leaves out the cases of more than N cells (the sanitized build of `make sanitize`, where
 # a 640-cell run takes minutes, sets 160: CMakeLists.txt).
 set -u
 mpm=$1
+shift
 max_cells=${AUTHORS_TABLE_MAX_CELLS:-0}
 [[ $max_cells =~ ^[0-9]+$ ]] || { echo "authors_table: AUTHORS_TABLE_MAX_CELLS=$max_cells: not a whole number" >&2; exit 2; }
-write=${3:-}
-[[ ${2:-} == --write && -n $write ]] || write=
+write= histories=
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --write) write=${2:-} ;;
+    --histories) histories=${2:-}
+      [[ -n $histories ]] || { echo "authors_table: --histories needs a folder" >&2; exit 2; } ;;
+    *) echo "authors_table: unknown argument $1 (MPM [--write FILE] [--histories DIR])" >&2; exit 2 ;;
+  esac
+  shift $(( $# > 1 ? 2 : 1 ))
+done
+[[ -z $histories ]] || mkdir -p "$histories" || exit 2
 root=$(cd "$(dirname "$0")/.." && pwd)
 data=$root/verification/data
 work=$(mktemp -d)
@@ -54,6 +71,32 @@ scores() {  # scores CSV CELLS: rms_normalised, the same on the even and on the 
 largest_difference() {  # largest_difference OURS THEIRS: max |v_ours - v_theirs| / v0, ours interpolated at theirs
   python3 -c "import sys; print('%.3g' % float(sys.argv[1]))" "$(python3 "$root/tests/largest_velocity_difference.py" "$1" "$2")"
 }
+keep_history() {  # keep_history RUN THEIRS STEM: RUN's particle A and its difference from THEIRS into $histories
+  python3 - "$1" "$2" "$histories" "$3" <<'PY'
+import bisect, csv, os, sys
+run, theirs_file, folder, stem = sys.argv[1:5]
+ours = list(csv.DictReader(open(os.path.join(run, "observers.csv"))))
+exact = list(csv.DictReader(open(os.path.join(run, "exact.csv"))))
+if [row["t"] for row in exact] != [row["t"] for row in ours]:
+    sys.exit("authors_table: %s: exact.csv and observers.csv sample different times" % run)
+with open(os.path.join(folder, "ours_%s.csv" % stem), "w", newline="") as handle:
+    out = csv.writer(handle)
+    out.writerow(["t", "A.v_x", "exact_v_x"])
+    out.writerows([row["t"], row["A.v_x"], e["A.v_x"]] for row, e in zip(ours, exact))
+# as tests/largest_velocity_difference.py: ours interpolated linearly at their times, theirs after our last left out
+t, v = [float(row["t"]) for row in ours], [float(row["A.v_x"]) for row in ours]
+with open(os.path.join(folder, "difference_%s.csv" % stem), "w", newline="") as handle:
+    out = csv.writer(handle)
+    out.writerow(["t", "dv_over_v0"])
+    for row in csv.DictReader(open(theirs_file)):
+        s = float(row["t"])
+        if s > t[-1]:
+            break
+        k = max(1, min(bisect.bisect_left(t, s), len(t) - 1))
+        w = v[k - 1] + (s - t[k - 1]) / (t[k] - t[k - 1]) * (v[k] - v[k - 1])
+        out.writerow(["%.12g" % s, "%.9g" % ((w - float(row["A.v_x"])) / 5.0)])
+PY
+}
 their_row() {  # their_row STEM: RMS/v0 of the case in other_codes.csv
   python3 - "$data/other_codes.csv" "$1" <<'PY'
 import csv, sys
@@ -85,6 +128,7 @@ for case in "${cases[@]}"; do
   IFS=, read -r theirs theirs_even theirs_odd theirs_ending < <(scores "$theirs_file" "$cells")
   matched_rms=$(score "$matched/observers.csv" "$cells")
   dv=$(largest_difference "$matched/observers.csv" "$theirs_file")
+  [[ -z $histories ]] || keep_history "$matched" "$theirs_file" "$stem" || fail "$stem: keeping the histories failed"
   gap=$(python3 -c "print('%.2f' % (100 * abs($theirs / $ours - 1)))")
   # the gap's band (the report's rule 1): the gap on the even and on the odd rows alone, its larger move from the whole
   gap_band=$(python3 -c "g = lambda t, o: 100 * abs(t / o - 1); w = g($theirs, $ours)

@@ -7,8 +7,9 @@ TABLE.csv is what `tests/authors_table.sh MPM --write TABLE.csv` wrote: for each
 uGIMP + PCE, LME + PCE at 40, 160 and 640 cells) and the extended uGIMP grid, RMS/v0 (Eq. 43 at particle A's
 reference position) of the authors' code (NL-PartSol 1d5da04, verification/data/nl_partsol_dyka_*.csv; how each was
 made: verification/data/other_codes.csv) and of this project, and the largest point-by-point difference on matching
-grids. Writes the table and the verdict, where the two codes agree within 1 % of RMS/v0 and where not, to REPORT.md;
-exits 2 on a missing or unreadable input.
+grids. Writes the table and the verdict, where the two codes agree within 1 % of RMS/v0 and where not, and the
+figure's line (figures/authors_code.png, verification/plots/authors_code.gp, drawn by make_studies.sh from
+`authors_table.sh --histories`) to REPORT.md; exits 2 on a missing or unreadable input.
 """
 import csv
 import os
@@ -61,6 +62,18 @@ def main():
                       "; ".join("%s (%s ± %.2g %%)" % (name(r), r["rms_gap_percent"], band(r)) for r in beyond) or "-",
                       "; ".join("%s (%s %%, undecided)" % (name(r), r["rms_gap_percent"]) for r in undecided) or "-",
                       verdict_rule.verdict_text([outcome(r) for r in rows])))
+        # the figure: its line, and the largest difference it shows of each method on each grid it draws (their strip,
+        # uGIMP's extended grid margin4_rows1), the table's column
+        largest = "; ".join("%s + %s: %s" % (shape, integrator, ", ".join(
+            "%s (%s cells%s)" % (r["max_dv_over_v0"], r["cells"], "" if r["their_grid"] == "strip" else ", " + r["their_grid"])
+            for r in rows if (r["shape"], r["integrator"]) == (shape, integrator)
+            and r["their_grid"] in ("strip", "margin4_rows1")))
+            for shape, integrator in dict.fromkeys((r["shape"], r["integrator"]) for r in rows))
+        out.write("![authors_code](figures/authors_code.png)\n\n"
+                  "The figure sets particle A's velocity of both codes beside the exact solution at 40 and at 640 "
+                  "cells (ours on their grid; uGIMP at 640 cells also their run on their grid extended both ways), "
+                  "and below, ours minus theirs over v0 at their sample times on the three meshes, on a symmetric log "
+                  "axis; its largest magnitude is the table's max abs dv / v0 (%s).\n\n" % largest)
         if beyond:
             out.write("Where they do not agree: uGIMP at 640 cells on their own strip, and on their strip with a row above "
                       "and below but no cell beyond the free end (`margin0_rows1`: the rows take most of the gap away, the "

@@ -13,7 +13,9 @@ two terms that explain its gap to rho g H, computed here from the scene's own rh
   - the particles' volumes are updated (J = 1 + eps_yy = 1 - |sigma| / E), so that stress is the weight over the
     compressed volume: |sigma| (1 - |sigma| / E) = rho g (H - h/2).
 
-Writes the table and the explanation to REPORT.md and the numbers to DATA.csv; exits 1 when a case did not finish,
+Writes the table and the explanation to REPORT.md, the numbers to DATA.csv and, beside it, every particle's sigma_yy
+at 0.2 s against the hydrostatic stress -rho g (H - y) at its position y then (DATA_profiles.csv: case, h, update,
+y, sigma_yy, exact; verification/plots/hydrostatic_column.gp draws both files); exits 1 when a case did not finish,
 lacks a published value, or differs from it by more than 0.01 %, 2 on a missing or unreadable input.
 """
 import csv
@@ -52,10 +54,11 @@ def published_values(path):
     return values, analytical
 
 
-def smallest_stress(folder):
-    """The smallest sigma_yy over the particles of the case's last snapshot, and that snapshot's time."""
+def snapshot(folder):
+    """(y, sigma_yy) of every particle of the case's snapshot at 0.2 s, bottom first, and the case's run.json."""
     rows = read_rows(os.path.join(folder, "snapshot_0000.csv"))
-    return min(float(row["sigma_yy"]) for row in rows), json.load(open(os.path.join(folder, "run.json")))
+    profile = sorted((float(row["y"]), float(row["x"]), float(row["sigma_yy"])) for row in rows)
+    return [(y, sigma) for y, _, sigma in profile], json.load(open(os.path.join(folder, "run.json")))
 
 
 def explained(scene, case):
@@ -64,7 +67,7 @@ def explained(scene, case):
     g = -scene["gravity"]["acceleration"][1]
     height = scene["body"][0]["max"][1] - scene["body"][0]["min"][1]
     mid = rho * g * (height - case["h"] / 2)
-    case.update(H=height, E=young, rho_g_H=rho * g * height, mid_height=mid,
+    case.update(H=height, E=young, rho_g=rho * g, rho_g_H=rho * g * height, mid_height=mid,
                 compressed=young * (1 - math.sqrt(1 - 4 * mid / young)) / 2)
 
 
@@ -75,7 +78,8 @@ def measure(study_dir):
         folder = os.path.join(study_dir, "cases", "%04d" % int(row["case"]))
         case = {"case": int(row["case"]), "status": row["status"], "why": row.get("why", "")}
         if row["status"] == "done":
-            case["ours"], run = smallest_stress(folder)
+            case["profile"], run = snapshot(folder)
+            case["ours"] = min(sigma for _, sigma in case["profile"])
             scene = run["scene"]
             case["h"] = scene["grid"]["length"][1] / scene["grid"]["cells"][1]
             case["dt"], case["update"] = scene["solver"]["dt"], scene["solver"]["stress_update"]
@@ -108,6 +112,12 @@ def compare(cases, published):
             problems.append(f"{case['update']} h = {case['h']:g} m: ours {case['ours']:.6f} Pa, CB-Geo "
                             f"{case['cbgeo']:.3f} Pa, {100 * case['difference']:+.4f} % (more than 0.01 %)")
     return problems
+
+
+def profiles_path(data_path):
+    """DATA.csv's neighbour that holds the profiles: DATA_profiles.csv."""
+    stem, extension = os.path.splitext(data_path)
+    return stem + "_profiles" + (extension or ".csv")
 
 
 def report(cases, analytical, problems, data_path):
@@ -156,7 +166,13 @@ def report(cases, analytical, problems, data_path):
                   "is that weight over the compressed volume, |sigma| (1 - |sigma| / E) = rho g (H - h/2): "
                   f"{coarse['compressed']:.3f} Pa. What is left (the last column) is the particles' sinking and the "
                   "oscillation PIC has not yet damped at 0.2 s. The gap to rho g H halves with h: it is the "
-                  "resolution of one cell, not an error of either code."]
+                  "resolution of one cell, not an error of either code.", "",
+                  "![hydrostatic_column](figures/hydrostatic_column.png)", "",
+                  "The figure shows every particle's sigma_yy at 0.2 s against its height beside -rho g (H - y) (a) "
+                  "and their difference near the base, one stress per cell (b); the base stress's gap to rho g H "
+                  "against h for both codes beside rho g h/2 and rho g h/2 less the bottom cell's compression (the "
+                  "weight over the compressed volume, the table's last but one column) (c); and ours against CB-Geo "
+                  "and against that term, relative, beside the check's 0.01 % (d)."]
     if problems:
         lines += ["", "Problems:", ""] + [f"- {problem}" for problem in problems]
     with open(data_path, "w", newline="") as handle:
@@ -167,6 +183,13 @@ def report(cases, analytical, problems, data_path):
             out.writerow([repr(case["h"]), repr(case["dt"]), case["update"], case["steps"], repr(case["ours"]),
                           repr(case["cbgeo"]), repr(case["difference"]), repr(-case["rho_g_H"]),
                           repr(-case["mid_height"]), repr(-case["compressed"])])
+    with open(profiles_path(data_path), "w", newline="") as handle:
+        out = csv.writer(handle)
+        out.writerow(["case", "h", "update", "y", "sigma_yy", "exact"])
+        for case in done:
+            for y, sigma in case["profile"]:
+                out.writerow([case["case"], repr(case["h"]), case["update"], repr(y), repr(sigma),
+                              repr(-case["rho_g"] * (case["H"] - y))])
     return "\n".join(lines) + "\n"
 
 

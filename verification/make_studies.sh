@@ -17,9 +17,11 @@
 #                2 particles per cell against the Dyka part's sweep (smooth_figures.sh)
 #   disks        the colliding disks of Sulsky, Chen and Schreyer (disks_figures.sh)
 #   hydrostatic_column   CB-Geo's hydrostatic column (studies/hydrostatic_column.toml with `mpm study`) against CB-Geo's
-#                published values (verification/hydrostatic_column.py, verification/data/other_codes.csv)
+#                published values (verification/hydrostatic_column.py, verification/data/other_codes.csv; figure
+#                hydrostatic_column)
 #   authors_code the authors' code (NL-PartSol) on the Dyka bar, nine cases, against this project
-#                (tests/authors_table.sh, verification/authors_code.py; not a study file: fixed cases)
+#                (tests/authors_table.sh, verification/authors_code.py; not a study file: fixed cases; figure
+#                authors_code from particle A's histories, data/authors_code/)
 #   authors_soil the authors' code on the soil block, four cases, against this project under their settings and with
 #                each setting undone (verification/authors_soil.py)
 # A hard check or a comparison that fails (a case that does not finish, a result outside its tolerance) makes this
@@ -40,6 +42,7 @@ start=$(date +%s)
 export MPM_BIN=$bin MPM_ROOT=$root MPM_RESULTS=$out
 source "$root/verification/budget.sh"
 source "$root/verification/assemble_report.sh"
+source "$root/verification/figure.sh"
 budget_open "$root/results/studies_budget.csv" studies
 
 status=0
@@ -59,9 +62,19 @@ study() {  # study NAME COMMAND...: runs studies/NAME.toml into $out/NAME, then 
   "$bin/mpm" study "$root/studies/$name.toml" --out "$out/$name" >"$out/report/$name.log" 2>&1 &&
     "$@" >>"$out/report/$name.log" 2>&1
 }
-authors_code() {
-  { bash "$root/tests/authors_table.sh" "$bin/mpm" --write "$out/data/authors_table.csv" &&
-      python3 "$root/verification/authors_code.py" "$out/data/authors_table.csv" "$out/report/60_authors_code.md"; } \
+hydrostatic_column() {  # the study's report section and data (hydrostatic_column.py), then its figure, drawn even
+  # when a comparison fails (the section shows it); either failing fails the part
+  local plots=$root/verification/plots data=$out/data code=0
+  python3 "$root/verification/hydrostatic_column.py" "$out/hydrostatic_column" "$root/verification/data/other_codes.csv" \
+    "$out/report/55_hydrostatic_column.md" "$data/hydrostatic_column.csv" || code=1
+  draw_figure hydrostatic_column.gp "out='$out/figures/hydrostatic_column'" || code=1
+  return $code
+}
+authors_code() {  # the table, particle A's histories (data/authors_code/), the report section, the figure
+  local plots=$root/verification/plots data=$out/data
+  { bash "$root/tests/authors_table.sh" "$bin/mpm" --write "$data/authors_table.csv" --histories "$data/authors_code" &&
+      python3 "$root/verification/authors_code.py" "$data/authors_table.csv" "$out/report/60_authors_code.md" &&
+      draw_figure authors_code.gp "out='$out/figures/authors_code'; histories='$data/authors_code'; theirs='$root/verification/data'"; } \
     >"$out/report/authors_code.log" 2>&1
 }
 authors_soil() {
@@ -85,9 +98,7 @@ done_line "smooth data"
 budget_part disks suite disks_figures "$out/report/disks.log" ||
   { echo "studies: colliding disks failed, see $out/report/disks.log"; status=1; }
 done_line "colliding disks"
-budget_part hydrostatic_column study hydrostatic_column python3 "$root/verification/hydrostatic_column.py" \
-  "$out/hydrostatic_column" "$root/verification/data/other_codes.csv" "$out/report/55_hydrostatic_column.md" \
-  "$out/data/hydrostatic_column.csv" ||
+budget_part hydrostatic_column study hydrostatic_column hydrostatic_column ||
   { echo "studies: CB-Geo's hydrostatic column failed, see $out/report/hydrostatic_column.log"; status=1; }
 done_line "CB-Geo's hydrostatic column"
 budget_part authors_code authors_code ||
