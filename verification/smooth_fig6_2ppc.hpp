@@ -104,7 +104,7 @@ inline std::string diagnosis(const DykaRun& run) {
   return text.empty() ? std::string("stopped") : text;
 }
 
-/// dyka_fig6_2ppc.csv: the runs the figure draws, both ppc (the 1-ppc sweep at CFL 0.5 only), one row each.
+/// dyka_fig6_2ppc.csv: the runs of Fig. 6 at 2 ppc beside 1 (the figure reads the same runs from dyka_sweep.csv and dyka_2ppc.csv, which also say how each ended), both ppc (the 1-ppc sweep at CFL 0.5 only), one row each.
 inline void write_fig6_runs(const std::string& folder, const DykaTable& d) {
   std::ofstream out(folder + "/dyka_fig6_2ppc.csv");
   out << "ppc,shape,integrator,cells,crossing_ratio,rms_over_v0,status\n";

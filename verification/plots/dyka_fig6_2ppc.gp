@@ -1,27 +1,93 @@
-# Fig. 6 at 2 particles per cell: RMS of v_A / |v_0| against the number of cells, one panel
-# per shape function; dashed with open points: 1 particle per cell (the Dyka suite's sweep at CFL 0.5),
-# solid with filled points: 2 particles per cell; FE red, NPC blue. Dotted verticals: where grid
-# crossing starts (crossing ratio of paper/08_test_cases.md (Grid-crossing bands) = 1) at 2 ppc
-# (1011 cells) and 1 ppc (2021 cells). Crosses above the data: the run stopped (no error drawn; 2 ppc
-# higher, FE left of NPC). Fourth panel: today's baselines at 2 ppc (160 and 1280 cells), solid FE, dashed NPC; grey:
-# LME γ = 3 + NPC at 2 ppc. Axes: the data's range (stats); legends below the panels.
-# Reads dyka_fig6_2ppc.csv (ppc, shape, integrator, cells, crossing_ratio, rms_over_v0, status), written by
-# smooth_suite --fig6-2ppc, and dyka_2ppc.csv for the baselines.
+# Fig. 6 at 2 particles per cell: RMS of v_A / |v_0| against the number of cells (CFL 0.5, 200 µs), one panel per
+# shape function of the paper (linear, uGIMP, LME gamma = 3) with FE and NPC at 1 particle per cell (the Dyka suite's
+# sweep, data/dyka_sweep.csv: filled markers) and at 2 (data/dyka_2ppc.csv: open markers), and a fourth panel with
+# today's baselines at 2 ppc (160 and 1280 cells; LME gamma = 3 + NPC for reference), their points spread to the
+# right of their mesh so that each shows. Each method in its palette style (colour: shape; dash and marker: integrator).
+# A line joins a method's runs on adjacent meshes (twice as many cells) on the same side of the start of grid crossing
+# (crossing ratio of paper/08_test_cases.md = 1, from the files' crossing_ratio column: 1011 cells at 2 ppc, 2021 at
+# 1 ppc; dotted verticals); elsewhere the runs are points. Runs that stopped (status) and runs no better than a flat
+# line (ending failed) are drawn on the strip above the data (upper row 1 ppc, lower row 2 ppc; FE left of NPC), in
+# their method's marker under a black cross (stopped) or ring (failed), each named in its panel's key. The same runs
+# as data/dyka_fig6_2ppc.csv (written by smooth_suite --fig6-2ppc), read from the files that say which failed.
 # gnuplot -e "dir='...'; data='...'; out='...'" dyka_fig6_2ppc.gp
 load dir."/common.gp"
-w = 16; h = 5.2
-file = data.'/dyka_fig6_2ppc.csv'; two = data.'/dyka_2ppc.csv'
-colour(i) = (i eq 'fe' ? '#d62728' : '#1f77b4')
-stats file using 4:(strcol(7) eq 'ok' ? $6 : NaN) nooutput
-xlow = STATS_min_x / 1.4; xhigh = STATS_max_x * 1.4; ylow = STATS_min_y / 1.3; mark = STATS_max_y * 1.8; yhigh = STATS_max_y * 4
-mine(s, i, p) = (strcol(2) eq s && strcol(3) eq i && $1 == p)
-panel(s, title, extra) = sprintf("set title '%s'; plot for [i in 'fe npc'] for [p = 1:2] file using (mine('%s', i, p) && strcol(7) eq 'ok' ? $4 : NaN):6 with linespoints lw p dt 3-p pt (p == 1 ? 6 : 7) lc rgb colour(i), for [i in 'fe npc'] for [p = 1:2] file using (mine('%s', i, p) && strcol(7) ne 'ok' ? $4 * (i eq 'fe' ? 0.92 : 1.08) : NaN):(mark * (p == 2 ? 1.6 : 1)) with points pt 2 ps 1.5 lw 2 lc rgb colour(i)%s", title, s, s, extra)
-legend = ", NaN with lines lw 2 lc rgb '#d62728' title 'FE', NaN with lines lw 2 lc rgb '#1f77b4' title 'NPC', NaN with linespoints dt 2 pt 6 lc rgb 'black' title '1 ppc', NaN with linespoints lw 2 pt 7 lc rgb 'black' title '2 ppc', NaN with lines dt 3 lc rgb '#555555' title 'crossing starts: 2 ppc (1011), 1 ppc (2021 cells)', NaN with points pt 2 lw 2 lc rgb 'black' title 'run stopped (upper: 2 ppc)'"
-S = 'bspline2 bspline3 lme0.8 lme1.5 usl musl'
-bcolour(k) = word('#ff7f0e #8c564b #e377c2 #bcbd22 #17becf #7f7f7f', k)
-bname(k) = word('B-spline2 B-spline3 LME,γ=0.8 LME,γ=1.5 linear,USL linear,MUSL', k)
-bmine(k) = (word(S, k) eq 'usl' || word(S, k) eq 'musl' ? strcol(1) eq 'linear' && strcol(2) eq word(S, k) : strcol(1) eq word(S, k))
-bpanel = "set title 'baselines, 2 ppc: solid FE, dashed NPC'; plot two using (strcol(1) eq 'lme' && strcol(2) eq 'npc' && strcol(8) eq 'ok' ? $3 : NaN):5 with linespoints lw 4 lc rgb '#cccccc' title 'LME γ = 3, NPC', for [k = 1:6] for [i in 'fe npc usl musl'] two using (bmine(k) && strcol(2) eq i && strcol(8) eq 'ok' ? $3 : NaN):5 with linespoints lw 1.5 dt 1+(i eq 'npc') pt 7 lc rgb bcolour(k), for [k = 1:6] two using (bmine(k) && strcol(8) ne 'ok' ? $3 : NaN):(mark) with points pt 2 ps 2 lw 2 lc rgb bcolour(k), for [k = 1:6] NaN with lines lw 2 lc rgb bcolour(k) title bname(k)"
-draw = "set label 99 'At 1280 cells the B-splines, LME γ = 0.8 and 1.5 with NPC and LME γ = 3 with NPC coincide (RMS 0.072-0.074: see the report).' at screen 0.55, 0.015 font ',8'; " . sprintf("set multiplot layout 1,4 title 'Fig. 6 at 1 and 2 particles per cell: RMS of v_A / |v_0| against the number of cells (CFL 0.5, 200 µs)' margins 0.05, 0.99, 0.24, 0.88 spacing 0.04, 0.1; set logscale xy; set xrange [%g:%g]; set yrange [%g:%g]; set xlabel 'cells'; set ylabel 'RMS / |v_0|'; set arrow 1 from 1011, graph 0 to 1011, graph 1 nohead dt 3 lc rgb '#555555'; set arrow 2 from 2021, graph 0 to 2021, graph 1 nohead dt 3 lc rgb '#999999'; ", xlow, xhigh, ylow, yhigh) . \
-  "set key at screen 0.03, 0.1 left top horizontal Left reverse maxrows 3 font ',8' samplen 2; " . panel('linear', 'linear (Q4)', legend) . "; set key off; " . panel('ugimp', 'uGIMP', '') . "; " . panel('lme', 'LME, γ = 3', '') . "; set ylabel ''; set key at screen 0.76, 0.1 left top horizontal Left reverse maxrows 3 font ',8' samplen 2; " . bpanel . "; unset multiplot; unset label 99"
+w = 13.3; h = 10.4
+one = data.'/dyka_sweep.csv'; two = data.'/dyka_2ppc.csv'
+# Columns of the two files: shape, integrator, cells, crossing ratio, RMS / |v0|, status, ending.
+S1 = "1 2 3 5 8 12 22"; S2 = "1 2 3 4 5 8 13"
+c(p, k) = word(p == 1 ? S1 : S2, k) + 0
+file(p) = p == 1 ? one : two
+done(p) = strcol(c(p, 6)) eq 'ok' && strcol(c(p, 7)) ne 'failed'
+off(p, what) = what eq 'stopped' ? strcol(c(p, 6)) ne 'ok' : strcol(c(p, 6)) eq 'ok' && strcol(c(p, 7)) eq 'failed'
+
+# Axes from the data: the completed runs' range; the start of crossing (cells / crossing ratio) per ppc.
+stats one using 8:(done(1) ? $8 : NaN) nooutput prefix "A"
+stats two using 5:(done(2) ? $5 : NaN) nooutput prefix "B"
+lo = (A_min_y < B_min_y ? A_min_y : B_min_y) / 1.1; hi = (A_max_y > B_max_y ? A_max_y : B_max_y) * 1.12
+stats one using ($3 / $5) nooutput prefix "O1"
+stats two using ($3 / $4) nooutput prefix "O2"
+onset(p) = p == 1 ? O1_mean : O2_mean   # cells at crossing ratio 1
+row(p) = hi * (hi / lo)**(p == 1 ? 0.1 : 0.04)   # the strip's rows: 1 ppc above, 2 ppc below
+beside(i) = i eq 'fe' || i eq 'usl' ? 1 / 1.15 : 1.15
+
+# Segments joining a method's runs: seg(k, x, y) is the previous run's x (NaN for the first) and sets y0, its y; the
+# state is reset at each file's first row. A segment is drawn only between adjacent meshes on one side of the onset.
+px = NaN; py = NaN; x0 = NaN; y0 = NaN
+seg_reset(r) = (r == 0 ? (px = NaN, py = NaN) : 0)
+seg(k, x, y) = (seg_reset(column(0)), k ? (x0 = px, y0 = py, px = x, py = y, x0) : NaN)
+joined(xp, x, o) = (xp == xp && x <= 2.01 * xp && (xp < o) == (x < o)) ? xp : NaN
+mine(s, i, p) = strcol(c(p, 1)) eq s && strcol(c(p, 2)) eq i
+
+# The baselines of the fourth panel (at 2 ppc), LME gamma = 3 + NPC last for reference.
+B = "bspline2_fe bspline2_npc bspline3_fe bspline3_npc lme0.8_fe lme0.8_npc lme1.5_fe lme1.5_npc linear_usl linear_musl lme_npc"
+s_of(m) = m[1:strstrt(m, "_") - 1]
+i_of(m) = m[strstrt(m, "_") + 1:]
+baseline(p) = p == 2 && strstrt(' '.B.' ', ' '.strcol(1).'_'.strcol(2).' ') > 0
+
+# The runs on the strip of each panel, one key entry each, built from the data.
+in_panel(k, p) = k < 4 ? strcol(c(p, 1)) eq word("linear ugimp lme", k) && strstrt(' fe npc ', ' '.strcol(c(p, 2)).' ') > 0 : baseline(p)
+add(style, what, k, s, i, p, n) = (entries = entries.sprintf(", keyentry with points %s title '%s: %s, %d cells'", style, what, k < 4 ? sprintf('%s, %d ppc', integrator_name(i), p) : method_name(s, i), n), 1)
+do for [k = 1:4] {
+  entries = ''
+  do for [p = 1:2] { do for [what in "stopped failed"] {
+    stats file(p) using (in_panel(k, p) && off(p, what) ? add(what eq 'stopped' ? stopped_style : failed_style, what eq 'stopped' ? 'stopped' : 'failed (flat line)', k, strcol(c(p, 1)), strcol(c(p, 2)), p, column(c(p, 3))) : 0) nooutput
+  } }
+  eval(sprintf("strip_entries%d = entries", k))
+}
+strip_entries(k) = value(sprintf("strip_entries%d", k))
+
+# A shape's panel: FE and NPC at 1 and 2 ppc; segments, points, the strip.
+shape_curves(s) = sprintf("for [i in 'fe npc'] for [p = 1:2] file(p) using (joined(seg(mine('%s', i, p) && done(p), column(c(p, 3)), column(c(p, 5))), column(c(p, 3)), onset(p))):(y0):(column(c(p, 3)) - x0):(column(c(p, 5)) - y0) with vectors nohead @LS notitle, ", s).\
+  sprintf("for [i in 'fe npc'] for [p = 1:2] file(p) using (mine('%s', i, p) && done(p) ? column(c(p, 3)) : NaN):(column(c(p, 5))) with points @PS notitle, ", s).\
+  sprintf("for [i in 'fe npc'] for [p = 1:2] file(p) using (mine('%s', i, p) && !done(p) ? column(c(p, 3)) * beside(i) : NaN):(row(p)) with points @PS notitle, ", s).\
+  sprintf("for [i in 'fe npc'] for [p = 1:2] file(p) using (mine('%s', i, p) && off(p, 'stopped') ? column(c(p, 3)) * beside(i) : NaN):(row(p)) with points %s notitle, ", s, stopped_style).\
+  sprintf("for [i in 'fe npc'] for [p = 1:2] file(p) using (mine('%s', i, p) && off(p, 'failed') ? column(c(p, 3)) * beside(i) : NaN):(row(p)) with points %s notitle", s, failed_style).\
+  sprintf(", for [i in 'fe npc'] for [p = 1:2] keyentry with linespoints @LS @PT title sprintf('%%s, %%d ppc', integrator_name(i), p)")
+LS = "lw method_lw dt dash(i) lc rgb colour(s)"
+PT = "ps 1.2 pt (p == 1 ? marker(i) : open(marker(i)))"
+PS = PT." lc rgb colour(s)"
+onset_label(n, p) = sprintf("set arrow %d from %g, graph 0 to %g, first %g nohead %s; set label %d '%d ppc: crossing' at first %g, graph 0.03 left rotate by 90 offset -0.6,0 front; ", n, onset(p), onset(p), hi, reference_style, n, p, onset(p))
+onsets = onset_label(1, 2).onset_label(2, 1)
+shape_panel(k, s) = sprintf("s = '%s'; set title '%s: FE and NPC at 1 ppc (filled) and 2 ppc (open)'; ", s, shape_name(s)).strip_log(lo, hi, 'stopped (×), failed (○): 1 ppc above, 2 ppc below').onsets.\
+  "plot ".shape_curves(s).strip_entries(k)
+
+# The baselines' panel: each method's points spread to the right of 160 and 1280 cells, one column per method.
+spread(k) = 1.05**(k - 1)
+bmine(m) = strcol(1) eq s_of(m) && strcol(2) eq i_of(m)
+BT = "ps 1.2 pt open(marker(i_of(word(B, k))))"
+BP = BT." lc rgb colour(s_of(word(B, k)))"
+stats two using ($3 == 1280 && baseline(2) && strcol(1) ne 'linear' && done(2) ? $5 : NaN) nooutput prefix "C"
+base_title = sprintf("today's baselines at 2 ppc, each method's points spread to the right of 160 and 1280 cells\nat 1280 cells all but linear + USL and MUSL lie within %.4f-%.4f", C_min, C_max)
+base_panel = "set title base_title; unset arrow; unset label 1; unset label 2; ".strip_log(lo, hi, 'stopped (×)').\
+  "set xrange [140:2300]; set xtics (160, 1280); set key at first 290, graph 0.86 left top; ".onset_label(1, 2).\
+  "plot for [k = 1:words(B)] two using (bmine(word(B, k)) && done(2) ? $3 * spread(k) : NaN):5 with points @BP notitle, ".\
+  "for [k = 1:words(B)] two using (bmine(word(B, k)) && !done(2) ? $3 * spread(k) : NaN):(row(2)) with points @BP notitle, ".\
+  "for [k = 1:words(B)] two using (bmine(word(B, k)) && off(2, 'stopped') ? $3 * spread(k) : NaN):(row(2)) with points ".stopped_style." notitle, ".\
+  "for [k = 1:words(B)] two using (bmine(word(B, k)) && off(2, 'failed') ? $3 * spread(k) : NaN):(row(2)) with points ".failed_style." notitle, ".\
+  "for [k = 1:words(B)] keyentry with points @BP title method_name(s_of(word(B, k)), i_of(word(B, k)))".strip_entries(4)
+
+draw = "set multiplot layout 2,2 title 'Fig. 6 at 1 and 2 particles per cell (ppc): RMS of v_A / |v_0| against the number of cells (CFL 0.5, 200 µs)' margins 0.06, 0.985, 0.07, 0.93 spacing 0.07, 0.1; ".\
+  "set logscale xy; set xrange [7:4200]; set xlabel 'cells'; set ylabel 'RMS of v_A / |v_0|'; set ytics (0.05, 0.07, 0.1, 0.15, 0.2, 0.3); ".\
+  "set key inside bottom left Left reverse samplen 2.5; ".\
+  shape_panel(1, 'linear')."; ".shape_panel(2, 'ugimp')."; ".shape_panel(3, 'lme')."; ".base_panel."; unset multiplot"
 load dir."/output.gp"

@@ -1,14 +1,79 @@
-# Point A against every particle: RMS of v_A / |v0| (solid) and the all-particle space-time norm / |v0| (dashed)
-# against the number of cells, per integrator (data/dyka_sweep.csv; runs that stopped have no point, named in the title;
-# runs no better than a flat line ringed in black). With the predictor-corrector the three shapes' curves lie on each
-# other up to 1280 cells: the title says so.
+# Point A against every particle: RMS of v_A / |v0| (left column) and the all-particle space-time norm / |v0|
+# (right column) against the number of cells, per integrator (rows: FE, NPC; the key of a row at its right), and in
+# the third row linear and uGIMP against LME gamma = 3 with the same integrator (norm / LME's - 1, in per cent, where
+# both completed before the crossing band: the curves of the rows above lie on each other there), each shape in its palette style (data/dyka_sweep.csv,
+# CFL 0.5). A line joins a method's meshes up to the grid-crossing band (2560 cells: a point of its own). Runs that
+# stopped (status failed) or are no better than a flat line (ending failed) are drawn on the strip above the data,
+# one row per shape (linear top, LME bottom), in the method's marker under a black cross (stopped) or ring
+# (failed), and named in the key. Each title gives how far apart the three shapes lie before the crossing band (with
+# NPC they coincide).
 load dir."/common.gp"
-w = 11; h = 4.8
+w = 13.3; h = 12
 f = data.'/dyka_sweep.csv'
-sel(shape, integrator, col) = sprintf("f using ((strcol(1) eq '%s' && strcol(2) eq '%s') ? $3 : NaN):%d", shape, integrator, col)
-colour(shape) = shape eq 'linear' ? "'#d62728'" : shape eq 'ugimp' ? "'#2ca02c'" : "'#1f77b4'"
-two(shape, integrator) = sel(shape, integrator, 8)." with linespoints lw 1.5 pt 7 lc rgb ".colour(shape)." title '".shape.", point A', ".sel(shape, integrator, 26)." with linespoints lw 1.5 pt 6 dt 2 lc rgb ".colour(shape)." title '".shape.", all particles'"
-failed(integrator) = sprintf(", f using ((strcol(2) eq '%s' && strcol(22) eq 'failed') ? $3 : NaN):8 with points pt 6 ps 2.2 lw 1.5 lc rgb 'black' title 'failed'", integrator)
-panel(integrator, title) = sprintf("set title '%s'; plot ", title).two('linear', integrator).", ".two('ugimp', integrator).", ".two('lme', integrator).failed(integrator)
-draw = "set multiplot layout 1,2 title 'Point A against every particle (CFL 0.5)'; set logscale xy; set xrange [8:3200]; set xlabel 'cells'; set ylabel 'RMS / |v_0|'; set key outside bottom center horizontal font ',8' maxrows 2; ".panel('fe', 'FE (linear stops at 2560 cells: no point)')."; ".panel('npc', 'NPC (the shapes coincide to 1280 cells; linear stops at 2560)')."; unset multiplot"
+shapes = "linear ugimp lme"
+done = "strcol(12) eq 'ok' && strcol(22) eq 'done'"
+stats f using ($3 * (strcol(6) eq 'crossing' ? 1 : NaN)) nooutput
+crossing = STATS_min  # the first mesh of the grid-crossing band
+stats f using (@done ? ($8 < $26 ? $8 : $26) : NaN) nooutput
+lo = STATS_min / 1.15
+stats f using (@done ? ($8 > $26 ? $8 : $26) : NaN) nooutput
+hi = STATS_max * 1.15
+row(s) = hi * (hi / lo)**(0.035 * (4 - (s eq 'linear' ? 1 : s eq 'ugimp' ? 2 : 3)))  # the strip's row of a shape
+mine(s, i) = strcol(1) eq s && strcol(2) eq i
+off(what) = what eq 'stopped' ? strcol(12) ne 'ok' : strcol(12) eq 'ok' && strcol(22) eq 'failed'
+
+# Per integrator: the key entries of the runs on the strip (one per method and outcome, its meshes), and how far
+# apart the shapes lie before the crossing band (the largest max / min - 1 over the meshes), per measure.
+list = ''
+add(n) = (list = list.(list eq '' ? '' : ', ').sprintf('%d', n), 1)
+do for [i in "fe npc"] {
+  entries = ''
+  do for [s in shapes] { do for [what in "stopped failed"] {
+    list = ''
+    stats f using (mine(s, i) && off(what) ? add($3) : 0) nooutput
+    if (list ne '') {
+      entries = entries.sprintf(", keyentry with points %s title '%s: %s, %s cells'", what eq 'stopped' ? stopped_style : failed_style, \
+        what eq 'stopped' ? 'stopped' : 'failed (flat line)', method_name(s, i), list)
+    }
+  } }
+  eval(sprintf("entries_%s = entries", i))
+  do for [c in "8 26"] {
+    apart = 0
+    do for [n in "10 20 40 80 160 320 640 1280 2560"] {
+      if (n + 0 < crossing) {
+        stats f using (strcol(2) eq i && $3 == n && @done ? column(c + 0) : NaN) nooutput
+        apart = STATS_max / STATS_min - 1 > apart ? STATS_max / STATS_min - 1 : apart
+      }
+    }
+    eval(sprintf("apart_%s_%s = %.12g", i, c, 100 * apart))
+  }
+}
+
+# LME gamma = 3's norms per integrator, measure and mesh, the reference of the third row.
+do for [i in "fe npc"] { do for [c in "8 26"] { do for [n in "10 20 40 80 160 320 640 1280 2560"] {
+  stats f using (mine('lme', i) && $3 == n && @done ? column(c + 0) : 0) nooutput
+  eval(sprintf("ref_%s_%s_%s = %s", i, c, n, STATS_max > 0 ? sprintf('%.12g', STATS_max) : 'NaN'))
+} } }
+ref(i, c, n) = value(sprintf("ref_%s_%d_%d", i, c, n))
+
+MS = "lw method_lw dt dash(i) pt marker(i) lc rgb colour(s)"
+stats f using ($3 < crossing ? $3 : NaN) nooutput
+last = STATS_max      # the last mesh before the crossing band
+panel(i, c) = sprintf("i = '%s'; set title '%s, %s: the shapes lie within %.1f %% of each other to %d cells'; ", i, integrator_name(i), c == 8 ? 'point A' : 'every particle', value(sprintf('apart_%s_%d', i, c)), last).\
+  strip_log(lo, hi, 'stopped (×), failed (○); rows: linear, uGIMP, LME').\
+  sprintf("plot for [s in shapes] f using (mine(s, i) && @done && $3 < crossing ? $3 : NaN):%d with linespoints ps 1.1 @MS title method_name(s, i), ", c).\
+  sprintf("for [s in shapes] f using (mine(s, i) && @done && $3 >= crossing ? $3 : NaN):%d with points ps 1.1 @MS notitle, ", c).\
+  "for [s in shapes] f using (mine(s, i) && !(@done) ? $3 : NaN):(row(s)) with points ps 1.1 pt marker(i) lc rgb colour(s) notitle, ".\
+  "f using (strcol(2) eq i && off('stopped') ? $3 : NaN):(row(strcol(1))) with points ".stopped_style." notitle, ".\
+  "f using (strcol(2) eq i && off('failed') ? $3 : NaN):(row(strcol(1))) with points ".failed_style." notitle".value('entries_'.i)
+difference(c) = sprintf("set title '%s: linear and uGIMP against LME γ = 3 with the same integrator'; unset logscale y; set ytics auto; set yrange [*:*]; ", c == 8 ? 'point A' : 'every particle').unstrip.\
+  sprintf("plot 0 with lines %s notitle, for [i in 'fe npc'] for [s in 'linear ugimp'] f using (mine(s, i) && @done && $3 < crossing ? $3 : NaN):(100 * (column(%d) / ref(i, %d, $3) - 1)) with linespoints ps 1.1 @MS title method_name(s, i)", reference_style, c, c)
+rows = "margins 0.06, 0.72, 0.05, 0.93 spacing 0.07, 0.07"
+draw = "set multiplot layout 3,2 title 'Point A against every particle on the Dyka bar (CFL 0.5): RMS of v_A / |v_0| (left) and the all-particle space-time norm / |v_0| (right) against the number of cells' ".rows."; ".\
+  "set logscale x; set xrange [7:3600]; set xlabel 'cells'; ".\
+  "set key at screen 0.735, graph 0.86 left top Left reverse samplen 2.5; ".\
+  "set logscale y; set ytics (0.04, 0.05, 0.07, 0.1, 0.15, 0.2, 0.3) nomirror; ".\
+  "unset key; set ylabel 'RMS / |v_0|'; ".panel('fe', 8)."; set key; unset ylabel; ".panel('fe', 26)."; ".\
+  "unset key; set ylabel 'RMS / |v_0|'; ".panel('npc', 8)."; set key; unset ylabel; ".panel('npc', 26)."; ".\
+  "unset key; set ylabel 'against LME γ = 3 (%)'; ".difference(8)."; set key; unset ylabel; ".difference(26)."; unset multiplot"
 load dir."/output.gp"

@@ -1,24 +1,105 @@
-# Speed against accuracy (beyond the paper): RMS of v_A / |v0| against the CPU time of each run, in four panels
-# (at most 7 entries each): the paper's methods over the mesh sweep (10 ... 2560 cells, left to right, one run
-# each), and today's baselines on 40, 160, 640 cells (the cubic B-spline also 2560) by family, each drawn over
-# the paper's methods in grey. Error bars: fastest to slowest of 5 interleaved repeats (40 and 160 cells).
-# A single timing (640, 2560 cells) is drawn with a bar from its time to its time widened by the largest spread
-# of the 160-cell repeats, the margin the front asks of it. Ringed and labelled with their cells: the runs on their mesh's error-cost front (data/dyka_baselines.csv, column pareto, computed by dyka_suite:
-# no method both more accurate and faster by more than the measured spread).
+# Speed against accuracy (beyond the paper): RMS of v_A / |v0| against the CPU time of each run (one thread), in
+# three panels by integrator: forward Euler (FE), the predictor-corrector (NPC), and forward Euler with the stress
+# updated last (USL) or modified (MUSL); each method in its palette style (colour: shape; dash and marker:
+# integrator). The paper's methods (linear, uGIMP, LME gamma = 3) over the mesh sweep (data/dyka_sweep.csv, 10 ...
+# 2560 cells, one run each); today's baselines (B-splines 2 and 3, LME gamma = 0.8 and 1.5, USL, MUSL) on 40, 160,
+# 640 cells, the cubic B-spline also on 2560 (data/dyka_baselines.csv). A method's runs are joined by a line up to
+# the grid-crossing band (2560 cells: a point of its own). Horizontal bars: fastest to slowest of 5 interleaved
+# repeats (40 and 160 cells; for the paper's methods a bar without a marker beside the sweep's point); a baseline's
+# single timing (640, 2560 cells) widened by the largest spread of the 160-cell repeats, the margin the front asks of
+# it. Boxed: the runs on their mesh's error-cost front (column pareto, computed by dyka_suite: no method both more
+# accurate and faster by more than the measured spread). Top axis: where each mesh's runs lie. The runs that stopped
+# (status failed) and those no better than a flat line (the sweep's ending failed) are drawn on the strip above the
+# data at their CPU time, in their method's marker under a black cross (stopped) or ring (failed), each named in
+# the key.
 load dir."/common.gp"
-w = 12; h = 8
+w = 13.3; h = 7
 sweep = data.'/dyka_sweep.csv'
 baselines = data.'/dyka_baselines.csv'
-methods = "linear,fe linear,npc ugimp,fe ugimp,npc lme,fe lme,npc"
-colours = "#d62728 #ff9896 #2ca02c #98df8a #1f77b4 #aec7e8"
-s_of(m) = m[1:strstrt(m,",")-1]; i_of(m) = m[strstrt(m,",")+1:]
-paper(grey) = sprintf("plot for [k=1:6] sweep using (strcol(1) eq s_of(word(methods,k)) && strcol(2) eq i_of(word(methods,k)) && strcol(12) eq 'ok' ? $17 : NaN):8 with linespoints pt (k %% 2 ? 7 : 5) ps 0.8 lc rgb (%d ? '#c8c8c8' : word(colours,k)) title (%d ? (k == 1 ? 'paper methods, 10-2560 cells' : '') : s_of(word(methods,k)).' + '.i_of(word(methods,k)))", grey, grey)
-ring = sprintf("baselines using (strcol(6) eq 'ok' && $7 == 1 && (strcol(1) eq word(group,1) || strcol(1) eq word(group,2) || strcol(1) eq word(group,3) || strcol(1) eq word(group,4)) ? $8 : NaN):3 with points pt 6 ps 2.4 lw 1.5 lc rgb 'black' title 'on its mesh''s front (label: cells)', baselines using (strcol(6) eq 'ok' && $7 == 1 && (strcol(1) eq word(group,1) || strcol(1) eq word(group,2) || strcol(1) eq word(group,3) || strcol(1) eq word(group,4)) ? $8 : NaN):3:(strcol(2)) with labels offset 1.6,0.7 font ',6' notitle")
-family = "for [k=1:4] baselines using (strcol(1) eq word(group,k) && strcol(6) eq 'ok' ? $8 : NaN):3:9:10 with xerrorlines pt 6+k ps 1.1 lw 1.5 lc rgb word(fcolours,k) title word(group,k)"
-fcolours = "#ff7f0e #9467bd #8c564b #17becf"
-own = "linear_fe linear_npc ugimp_fe ugimp_npc lme3_fe lme3_npc"
-mine(m) = (m eq word(own,1) || m eq word(own,2) || m eq word(own,3) || m eq word(own,4) || m eq word(own,5) || m eq word(own,6))
-first = "set title 'paper methods: the sweep (one run each), the repeats of 40 and 160 cells (error bars)'; ".paper(0).", for [k=1:6] baselines using (strcol(1) eq word(own,k) && strcol(6) eq 'ok' && $11 > 1 ? $8 : NaN):3:9:10 with xerrorbars pt 1 ps 0.8 lc rgb word(colours,k) notitle, baselines using (strcol(6) eq 'ok' && $7 == 1 && mine(strcol(1)) ? $8 : NaN):3 with points pt 6 ps 2.4 lw 1.5 lc rgb 'black' title 'on its mesh''s front (label: cells)', baselines using (strcol(6) eq 'ok' && $7 == 1 && mine(strcol(1)) ? $8 : NaN):3:(strcol(2)) with labels offset 1.6,0.7 font ',6' notitle"
-panel(title, members) = sprintf("set title '%s'; group = '%s'; ", title, members).paper(1).", ".family.", ".ring
-draw = "set multiplot layout 2,2 title 'Speed against accuracy: Dyka bar, CFL 0.5 (CPU time per run, one thread)'; set logscale xy; set xrange [5e-5:30]; set yrange [0.05:0.7]; set xlabel 'CPU time per run (s)'; set format x '10^{%L}'; set format y '%g'; set ylabel 'RMS of v_A / |v_0|'; set key bottom left font ',7' noenhanced; ".first."; ".panel('B-splines (uGIMP = quadratic B-spline)', 'bspline2_fe bspline2_npc bspline3_fe bspline3_npc')."; ".panel('stress updated last (USL) or modified (MUSL)', 'linear_usl linear_musl bspline2_usl bspline2_musl')."; ".panel('LME at small γ', 'lme0.8_fe lme0.8_npc lme1.5_fe lme1.5_npc')."; unset multiplot"
+lo = 0.05; hi = 0.36
+top = strip_y_log(lo, hi)
+stats sweep using ($3 * (strcol(6) eq 'crossing' ? 1 : NaN)) nooutput
+crossing = STATS_min  # the first mesh of the grid-crossing band
+
+# A baseline's key "shape_integrator": its shape and integrator (lme3 is LME gamma = 3).
+s_of(m) = m[1:strstrt(m, "_") - 1]
+i_of(m) = m[strstrt(m, "_") + 1:]
+paper(s) = (s eq 'linear' || s eq 'ugimp' || s eq 'lme' || s eq 'lme3')
+# The panels: their integrators and today's methods (the paper's shapes come from the sweep).
+integrators(p) = p == 3 ? "usl musl" : word("fe npc", p)
+in_panel(i, p) = strstrt(" ".integrators(p)." ", " ".i." ") > 0
+sweep_shapes = "linear ugimp lme"
+base_methods(p) = p == 1 ? "bspline2_fe bspline3_fe lme0.8_fe lme1.5_fe" : p == 2 ? \
+  "bspline2_npc bspline3_npc lme0.8_npc lme1.5_npc" : "linear_usl linear_musl bspline2_usl bspline2_musl"
+MS = "lw method_lw dt dash(i) pt marker(i) lc rgb colour(s)"                  # a sweep method (s, i)
+BS = "lw method_lw dt dash(i_of(m)) pt marker(i_of(m)) lc rgb colour(s_of(m))"  # a baseline m
+BL = "lw method_lw dt dash(i_of(m)) lc rgb colour(s_of(m))"                     # its line
+
+# The runs with no value, one key entry each (built here from the data).
+sweep_off(p, what) = in_panel(strcol(2), p) && (what eq 'stopped' ? strcol(12) ne 'ok' : strcol(12) eq 'ok' && strcol(22) eq 'failed')
+base_off(p) = in_panel(i_of(strcol(1)), p) && !paper(s_of(strcol(1))) && strcol(6) ne 'ok'
+add(style, what, s, i, n) = (entries = entries.sprintf(", keyentry with points %s title '%s: %s, %d cells'", style, what, method_name(s, i), n), 1)
+do for [p = 1:3] {
+  entries = ''
+  stats sweep using (sweep_off(p, 'stopped') ? add(stopped_style, 'stopped by the solver', strcol(1), strcol(2), $3) : 0) nooutput
+  stats baselines using (base_off(p) ? add(stopped_style, 'stopped by the solver', s_of(strcol(1)), i_of(strcol(1)), $2) : 0) nooutput
+  stats sweep using (sweep_off(p, 'failed') ? add(failed_style, 'failed, no better than a flat line', strcol(1), strcol(2), $3) : 0) nooutput
+  eval(sprintf("strip_entries%d = entries", p))
+}
+
+# The top axis: each mesh at the middle (geometric) of its completed runs' CPU times.
+meshes = "10 20 40 80 160 320 640 1280 2560"
+mesh_tics = ''
+do for [k = 1:words(meshes)] {
+  n = word(meshes, k) + 0
+  stats sweep using ($3 == n && strcol(22) eq 'done' ? $17 : NaN) nooutput
+  mesh_tics = mesh_tics.sprintf("%s'%d' %.6g", k > 1 ? ', ' : '', n, sqrt(STATS_min * STATS_max))
+}
+
+# Segments joining a baseline's runs (its rows are not adjacent in the file): seg(k, x, y) is the previous run's x
+# (NaN for the first) and sets y0, its y; the state is reset at each file's first row.
+px = NaN; py = NaN; x0 = NaN; y0 = NaN
+seg_reset(r) = (r == 0 ? (px = NaN, py = NaN) : 0)
+seg(k, x, y) = (seg_reset(column(0)), k ? (x0 = px, y0 = py, px = x, py = y, x0) : NaN)
+
+# The curves of a panel.
+sweep_ok = "strcol(12) eq 'ok' && strcol(22) ne 'failed'"
+sweep_curves(p) = sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (strcol(1) eq s && strcol(2) eq i && %s && $3 < crossing ? $17 : NaN):8 with linespoints ps 1.1 @MS notitle, ", integrators(p), sweep_ok).\
+  sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (strcol(1) eq s && strcol(2) eq i && %s && $3 >= crossing ? $17 : NaN):8 with points ps 1.1 @MS notitle, ", integrators(p), sweep_ok).\
+  sprintf("for [s in 'linear ugimp lme3'] for [i in '%s'] baselines using (strcol(1) eq s.'_'.i && strcol(6) eq 'ok' && $11 > 1 ? $8 : NaN):3:9:10 with xerrorbars ps 0 lw 1.5 lc rgb colour(s) notitle, ", integrators(p))
+base_curves(p) = sprintf("for [m in '%s'] baselines using (strcol(1) eq m && strcol(6) eq 'ok' ? $8 : NaN):3:9:10 with xerrorbars ps 1.1 @BS notitle, ", base_methods(p)).\
+  sprintf("for [m in '%s'] baselines using (seg(strcol(1) eq m && strcol(6) eq 'ok' && $2 < crossing, $8, $3)):(y0):($8 - x0):($3 - y0) with vectors nohead @BL notitle, ", base_methods(p))
+front(p) = sprintf("baselines using (strcol(6) eq 'ok' && $7 == 1 && in_panel(i_of(strcol(1)), %d) ? $8 : NaN):3 with points pt 4 ps 2.6 lw 1.5 lc rgb c_exact notitle, ", p)
+# On the strip: the method's marker in its colour, the black cross or ring over it.
+strip_points(p) = sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (strcol(1) eq s && strcol(2) eq i && (sweep_off(%d, 'stopped') || sweep_off(%d, 'failed')) ? $17 : NaN):(top) with points ps 1.1 pt marker(i) lc rgb colour(s) notitle, ", integrators(p), p, p).\
+  sprintf("for [m in '%s'] baselines using (strcol(1) eq m && base_off(%d) ? $8 : NaN):(top) with points ps 1.1 pt marker(i_of(m)) lc rgb colour(s_of(m)) notitle, ", base_methods(p), p).\
+  sprintf("sweep using (sweep_off(%d, 'stopped') ? $17 : NaN):(top) with points %s notitle, baselines using (base_off(%d) ? $8 : NaN):(top) with points %s notitle, ", p, stopped_style, p, stopped_style).\
+  sprintf("sweep using (sweep_off(%d, 'failed') ? $17 : NaN):(top) with points %s notitle", p, failed_style)
+# The key: each method in its style with its meshes, the front, the grey context, the runs on the strip.
+do for [p = 1:3] {
+  entries = ''
+  if (p < 3) { do for [s in sweep_shapes] {
+    i = integrators(p)
+    stats sweep using (strcol(1) eq s && strcol(2) eq i ? $3 : NaN) nooutput
+    entries = entries.sprintf(", keyentry with linespoints ps 1.1 %s title '%s (%d-%d cells)'", method_style(s, i), method_name(s, i), STATS_min, STATS_max)
+  } }
+  do for [m in base_methods(p)] {
+    stats baselines using (strcol(1) eq m ? $2 : NaN) nooutput
+    entries = entries.sprintf(", keyentry with linespoints ps 1.1 %s title '%s (%d-%d cells)'", method_style(s_of(m), i_of(m)), method_name(s_of(m), i_of(m)), STATS_min, STATS_max)
+  }
+  eval(sprintf("method_entries%d = entries", p))
+}
+keys(p) = (p < 3 ? '' : ", keyentry with lines lw 1 lc rgb c_context title 'the paper''s methods (left panels)'").value(sprintf("method_entries%d", p)).\
+  ", keyentry with points pt 4 ps 2.6 lw 1.5 lc rgb c_exact title 'boxed: on its mesh''s error-cost front'".value(sprintf("strip_entries%d", p))
+context = "for [s in sweep_shapes] for [i in 'fe npc'] sweep using (strcol(1) eq s && strcol(2) eq i && ".sweep_ok." && $3 < crossing ? $17 : NaN):8 with lines lw 1 lc rgb c_context notitle, "
+panel_title(p) = p == 1 ? 'forward Euler (FE)' : p == 2 ? 'predictor-corrector (NPC)' : 'FE, stress updated last (USL) or modified (MUSL)'
+panel(p) = sprintf("set title '%s' offset 0,0.6; ", panel_title(p)).strip_log(lo, hi, 'no value: stopped (×), failed (○)').\
+  "plot ".(p == 3 ? context : sweep_curves(p)).base_curves(p).front(p).strip_points(p).keys(p)
+
+draw = "set multiplot layout 1,3 title 'Speed against accuracy on the Dyka bar (CFL 0.5): RMS of v_A / |v_0| against the CPU time of each run (one thread), one panel per integrator' margins 0.05, 0.99, 0.34, 0.84 spacing 0.045; ".\
+  "set logscale xy; set xrange [1e-4:20]; set x2range [1e-4:20]; set logscale x2; set xtics nomirror; set format x '10^{%L}'; ".\
+  sprintf("set x2tics (%s) nomirror; set x2label 'cells (each mesh''s runs lie below its number)' offset 0,-0.4; ", mesh_tics).\
+  "set xlabel 'CPU time per run (s)'; set ytics (0.05, 0.07, 0.1, 0.15, 0.2, 0.3) nomirror; set ylabel 'RMS of v_A / |v_0|'; ".\
+  "set key outside below left Left reverse vertical maxrows 12 samplen 2.5 width -6 noenhanced; ".\
+  panel(1)."; unset ylabel; ".panel(2)."; ".panel(3)."; unset multiplot"
 load dir."/output.gp"
