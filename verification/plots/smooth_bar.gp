@@ -1,40 +1,74 @@
-# The vibrating bar: RMS error of velocity (top) and stress (bottom) against the number of
-# cells, one column per shape function; colour: integrator (FE red, NPC blue); solid with circles: 1
-# particle per cell, dashed with squares: 2; filled points: CFL 0.5, open: CFL 0.1. Grey guides: slopes
-# 1 and 2. A run that stopped is a cross above the data (its error is not drawn; 2 ppc higher). Fourth column:
-# today's baselines (CFL 0.5), one colour per method, ppc as in the other columns. Each row's y range
-# is the range of its data (stats), the x range the meshes run; the legends lie below the panels.
+# The vibrating bar (data/smooth_bar.csv), at the amplitude `amplitude` (small: against the exact first mode; large:
+# against the finite-strain reference): RMS error of the velocity (rows 1 and 3) and of the stress (rows 2 and 4)
+# against the number of cells. One panel per shape function, in its colour (palette.gp): the paper's (linear, uGIMP,
+# LME γ = 3; rows 1-2) and today's baselines at CFL 0.5 (B-splines 2 and 3, linear with USL and MUSL; rows 3-4). In a
+# panel the integrator is the dash and the marker (FE solid with circles, NPC dashed with squares, USL and MUSL with
+# triangles); 1 particle per cell filled markers, 2 open ones, drawn larger so that a filled one on the same value
+# shows inside; at small amplitude the paper's shapes also at CFL 0.1, thin lines with small markers (CFL 0.5: the
+# usual lines). Grey dotted: slopes 1 and 2. A run that stopped (black cross) or ended no better than a flat field
+# (failed, black ring) lies on the strip above the data, its method's marker inside, at one of four places about its
+# mesh: from left to right the panel's first integrator at 1 and 2 ppc, then its second. The velocity rows share
+# one y range, the stress rows another, each the range of its data; the legend lies below the panels.
 # gnuplot -e "dir='...'; data='...'; out='...'; amplitude='small|large'; caption='...'" smooth_bar.gp
 load dir."/common.gp"
-w = 15; h = 7.5
+w = 13.3; h = 12
 sweep = data.'/smooth_bar.csv'
+small = (amplitude eq 'small')
+# columns: 1 amplitude, 2 shape, 3 integrator, 4 ppc, 5 CFL, 6 cells, 7 velocity error, 8 stress error, 12 status (ok,
+# or failed: stopped), 18 ending (done, failed, stopped)
 mine(s, i, p, c) = (strcol(1) eq amplitude && strcol(2) eq s && strcol(3) eq i && $4 == p && abs($5 - c) < 1e-9)
-ok(s, i, p, c) = (mine(s, i, p, c) && strcol(12) eq 'ok')
-stopped(s, i, p, c) = (mine(s, i, p, c) && strcol(12) ne 'ok')
-colour(i) = (i eq 'fe' ? '#d62728' : '#1f77b4')
-point(p, c) = (p == 1 ? (c > 0.3 ? 7 : 6) : (c > 0.3 ? 5 : 4))
-stats sweep using (strcol(1) eq amplitude && strcol(12) eq 'ok' ? $7 : NaN) nooutput
-vlow = STATS_min / 2; vhigh = STATS_max * 16; vmark = STATS_max * 2.5
-stats sweep using (strcol(1) eq amplitude && strcol(12) eq 'ok' ? $8 : NaN) nooutput
-slow = STATS_min / 2; shigh = STATS_max * 16; smark = STATS_max * 2.5
+done(s, i, p, c) = (mine(s, i, p, c) && strcol(12) eq 'ok' && strcol(18) eq 'done')
+# the error of a run that ended (done), NaN otherwise, which breaks its line (a row whose column is nan is skipped)
+error(s, i, p, c, col) = (done(s, i, p, c) ? real(strcol(col)) : NaN)
+off(s, i, p, kind) = (mine(s, i, p, 0.5) && (kind eq 'stopped' ? strcol(12) ne 'ok' : strcol(12) eq 'ok' && strcol(18) eq 'failed'))
+stats sweep using (strcol(1) eq amplitude && strcol(18) eq 'done' ? $7 : NaN) nooutput
+vlow = STATS_min / 1.6; vhigh = STATS_max * 1.6
+stats sweep using (strcol(1) eq amplitude && strcol(18) eq 'done' ? $8 : NaN) nooutput
+slow = STATS_min / 1.6; shigh = STATS_max * 1.6
+stats sweep using (strcol(1) eq amplitude && strcol(18) ne 'done' ? 1 : 0) nooutput
+outcomes = STATS_sum  # runs on the strip
 stats sweep using (strcol(1) eq amplitude && strcol(12) ne 'ok' ? 1 : 0) nooutput
-if (STATS_sum == 0) { vhigh = vhigh / 8; shigh = shigh / 8 }  # no stopped run: no room for its marks
+stops = STATS_sum
+stats sweep using (strcol(1) eq amplitude && strcol(18) eq 'failed' ? 1 : 0) nooutput
+fails = STATS_sum
 stats sweep using (strcol(1) eq amplitude ? $6 : NaN) nooutput
-xlow = STATS_min / 1.3; xhigh = STATS_max * 1.3
-curves(s, col, mark) = sprintf("for [i in 'fe npc'] for [p = 1:2] for [c in '0.5 0.1'] sweep using (ok('%s', i, p, real(c)) ? $6 : NaN):%d with linespoints lw 1.5 dt p pt point(p, real(c)) lc rgb colour(i), for [i in 'fe npc'] for [p = 1:2] for [c in '0.5 0.1'] sweep using (stopped('%s', i, p, real(c)) ? $6 : NaN):(%g * (p == 2 ? 2.5 : 1)) with points pt 2 ps 1.5 lw 2 lc rgb colour(i), 0.05*(x/8)**-1 with lines dt 3 lc rgb '#888888', 0.05*(x/8)**-2 with lines dt 4 lc rgb '#888888'", s, col, s, mark)
-legend = "NaN with lines lw 2 lc rgb '#d62728' title 'FE', NaN with lines lw 2 lc rgb '#1f77b4' title 'NPC', NaN with linespoints dt 1 pt 7 lc rgb 'black' title '1 ppc', NaN with linespoints dt 2 pt 5 lc rgb 'black' title '2 ppc', " . (amplitude eq 'small' ? "NaN with points pt 7 lc rgb 'black' title 'CFL 0.5 (filled)', NaN with points pt 6 lc rgb 'black' title 'CFL 0.1 (open)', " : "") . "NaN with lines dt 3 lc rgb '#888888' title 'slopes 1 (dotted) and 2', NaN with points pt 2 lw 2 lc rgb 'black' title 'run stopped (upper: 2 ppc)'"
-S = 'bspline2 bspline2 bspline3 bspline3 linear linear'; I = 'fe npc fe npc usl musl'
-bcolour(k) = word('#ff7f0e #8c564b #2ca02c #9467bd #17becf #7f7f7f', k)
-bname(k) = word('B-spline2,FE B-spline2,NPC B-spline3,FE B-spline3,NPC linear,USL linear,MUSL', k)
-bcurves(col, mark) = sprintf("for [k = 1:6] for [p = 1:2] sweep using (ok(word(S, k), word(I, k), p, 0.5) ? $6 : NaN):%d with linespoints lw 1.5 dt p pt (p == 1 ? 7 : 5) lc rgb bcolour(k), for [k = 1:6] for [p = 1:2] sweep using (stopped(word(S, k), word(I, k), p, 0.5) ? $6 : NaN):(%g * (p == 2 ? 2.5 : 1)) with points pt 2 ps 1.5 lw 2 lc rgb bcolour(k)", col, mark)
-blegend = "for [k = 1:6] NaN with lines lw 2 lc rgb bcolour(k) title bname(k)"
-panel(s, title, col, ylabel, mark, extra) = sprintf("set title '%s'; set ylabel '%s'; plot %s%s", title, ylabel, curves(s, col, mark), extra)
-bpanel(title, col, mark, extra) = sprintf("set title '%s'; set ylabel ''; plot %s%s", title, bcurves(col, mark), extra)
-row(col, ylabel, low, high, mark, legends) = sprintf("set yrange [%g:%g]; ", low, high) . \
-  (legends ? "set key at screen 0.03, 0.1 left top horizontal Left reverse font ',8' samplen 2; " : "set key off; ") . panel('linear', 'linear', col, ylabel, mark, legends ? ', '.legend : '') . "; set key off; " . \
-  panel('ugimp', 'uGIMP', col, '', mark, '') . "; " . panel('lme', 'LME, γ = 3', col, '', mark, '') . "; " . \
-  (legends ? "set key at screen 0.76, 0.1 left top horizontal Left reverse font ',8' samplen 2; " : "") . bpanel('baselines: B-splines, USL, MUSL (CFL 0.5)', col, mark, legends ? ', '.blegend : '') . "; set key off"
-note = (amplitude eq 'small' ? "set label 99 'At small amplitude uGIMP coincides with linear (the same numbers), and NPC at 1 and 2 ppc nearly coincide (squares over circles); in the baselines B-spline2 and B-spline3 with NPC coincide, and so do USL and MUSL.' at screen 0.03, 0.015 font ',8'; " : "")
-draw = note . sprintf("set multiplot layout 2,4 title caption margins 0.05, 0.99, 0.15, 0.92 spacing 0.04, 0.08; set logscale xy; set format y '10^{%%L}'; set xrange [%g:%g]; set xlabel 'cells'; ", xlow, xhigh) . \
-  row(7, 'RMS(v_p - v) / V', vlow, vhigh, vmark, 0) . "; set title ''; " . row(8, 'RMS(σ_p - σ) / ZV', slow, shigh, smark, 1) . "; unset multiplot; unset label 99"
+xlow = STATS_min / 1.5; xhigh = STATS_max * 1.5
+# A method's look: its shape's colour, its integrator's dash and marker; 2 ppc open and larger; CFL 0.1 thin, small.
+cfls(s, i) = (small && (i eq 'fe' || i eq 'npc') && s ne 'bspline2' && s ne 'bspline3' ? '0.5 0.1' : '0.5')
+curves(s, i, col) = sprintf("for [p = 2:1:-1] for [c in '%s'] sweep using (mine('%s', '%s', p, real(c)) ? $6 : NaN):(error('%s', '%s', p, real(c), %d)) with linespoints lw (real(c) > 0.3 ? method_lw : 0.8) dt %d pt (p == 1 ? %d : %d) ps ((real(c) > 0.3 ? 1 : 0.6) * (p == 2 ? 1.5 : 1)) lc rgb '%s'", \
+  cfls(s, i), s, i, s, i, col, dash(i), marker(i), open(marker(i)), colour(s))
+# The strip: four places about each mesh, from left to right the first integrator at 1 and 2 ppc, then the second.
+slot(left, p) = 2**(0.25 * ((left ? 0 : 2) + p - 2.5))
+on_strip(s, i, left, kind, lo, hi, how) = sprintf("for [p = 1:2] sweep using (off('%s', '%s', p, '%s') ? $6 * slot(%d, p) : NaN):(%.12g) with points %s", s, i, kind, left, strip_y_log(lo, hi), how)
+strip_runs(s, i, left, lo, hi) = (outcomes == 0 ? '' : sprintf(", %s, %s, %s", on_strip(s, i, left, 'stopped', lo, hi, stopped_style), on_strip(s, i, left, 'failed', lo, hi, failed_style), \
+  on_strip(s, i, left, 'stopped', lo, hi, sprintf("pt (p == 1 ? %d : %d) ps 1.2 lc rgb '%s'", marker(i), open(marker(i)), colour(s)))) . \
+  sprintf(", %s", on_strip(s, i, left, 'failed', lo, hi, sprintf("pt (p == 1 ? %d : %d) ps 1.2 lc rgb '%s'", marker(i), open(marker(i)), colour(s)))))
+guides = sprintf(", 0.05 * (x / 8)**-1 with lines %s, 0.05 * (x / 8)**-2 with lines %s", reference_style, reference_style)
+yrange(lo, hi) = (outcomes > 0 ? strip_log(lo, hi, '') : sprintf("set yrange [%.12g:%.12g]; ", lo, hi).unstrip)
+# One panel: shape s with integrators i1 and i2; col 7 (velocity) or 8 (stress).
+panel(s, i1, i2, col, title) = sprintf("set title '%s'; set ylabel '%s'; ", title, col == 7 ? 'RMS(v_p - v) / V' : 'RMS(σ_p - σ) / ZV') . \
+  (col == 7 ? yrange(vlow, vhigh) : yrange(slow, shigh)) . "plot " . curves(s, i1, col) . ", " . curves(s, i2, col) . guides . \
+  strip_runs(s, i1, 1, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh) . strip_runs(s, i2, 0, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh)
+quantity(col) = (col == 7 ? 'velocity' : 'stress')
+paper_row(col) = panel('linear', 'fe', 'npc', col, shape_name('linear').': '.quantity(col).', FE and NPC') . "; " . \
+  panel('ugimp', 'fe', 'npc', col, shape_name('ugimp').': '.quantity(col).(small ? ', the same numbers as linear' : '')) . "; " . \
+  panel('lme', 'fe', 'npc', col, shape_name('lme').': '.quantity(col)) . "; "
+baseline_row(col) = panel('bspline2', 'fe', 'npc', col, 'baseline '.shape_name('bspline2').': '.quantity(col)) . "; " . \
+  panel('bspline3', 'fe', 'npc', col, 'baseline '.shape_name('bspline3').': '.quantity(col)) . "; " . \
+  panel('linear', 'usl', 'musl', col, 'baseline '.shape_name('linear').': '.quantity(col).', USL and MUSL'.(small ? ' (they coincide)' : '')) . "; "
+neutral(i) = sprintf("lw %g dt %d pt %d lc rgb '%s'", method_lw, dash(i), marker(i), c_exact)
+legend = sprintf("keyentry with linespoints %s title 'FE: solid, circles', keyentry with linespoints %s title 'NPC: dashed, squares', ", neutral('fe'), neutral('npc')) . \
+  sprintf("keyentry with linespoints %s title 'USL: triangles up', keyentry with linespoints %s title 'MUSL: triangles down', ", neutral('usl'), neutral('musl')) . \
+  sprintf("keyentry with points pt %d lc rgb '%s' title '1 ppc: filled markers', keyentry with points pt %d ps 1.5 lc rgb '%s' title '2 ppc: open, larger', ", marker('fe'), c_exact, open(marker('fe')), c_exact) . \
+  (small ? sprintf("keyentry with linespoints lw %g pt %d lc rgb '%s' title 'CFL 0.5', keyentry with linespoints lw 0.8 pt %d ps 0.6 lc rgb '%s' title 'CFL 0.1: thin, small markers', ", method_lw, marker('fe'), c_exact, marker('fe'), c_exact) : '') . \
+  "keyentry with lines ".reference_style." title 'slopes 1 and 2'" . \
+  (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (its method’s marker inside)'" : '') . \
+  (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: no better than a flat field'" : '')
+legend_panel = "set lmargin at screen 0.02; set rmargin at screen 0.99; set bmargin at screen 0.005; set tmargin at screen 0.075; unset logscale; unset border; unset tics; unset grid; " . \
+  "unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . "set key inside left top horizontal Left reverse samplen 3 maxrows 3; plot -1, " . legend
+note = (small ? 'coinciding: NPC at 1 and 2 ppc, and B-spline 3 + FE at 1 and 2 ppc (velocity: the filled marker inside the open one); FE at CFL 0.5 and 0.1 (stress: the thin line on the thick one)' : \
+  'rows 1-2: the paper’s shape functions, rows 3-4: today’s baselines; all at CFL 0.5')
+draw = "set border; set tics; set grid; set lmargin -1; set rmargin -1; set bmargin -1; set tmargin -1; set key off; " . \
+  sprintf("set multiplot layout 4,3 title '%s\n%s' margins 0.06, 0.99, 0.11, 0.935 spacing 0.06, 0.07; set logscale xy; set format y '10^{%%L}'; set xrange [%g:%g]; set xtics (8, 16, 32, 64, 128, 256); set xlabel 'cells'; ", caption, note, xlow, xhigh) . \
+  paper_row(7) . paper_row(8) . baseline_row(7) . baseline_row(8) . legend_panel . "; unset multiplot; set border; set tics; set grid"
 load dir."/output.gp"

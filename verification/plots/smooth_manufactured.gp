@@ -1,31 +1,94 @@
-# 2D manufactured solutions: RMS errors of velocity (left) and stress (middle) against the
-# cells per side, small amplitude (top) and large amplitude (bottom); colour: shape function; solid:
-# forward Euler, dashed: predictor-corrector; filled points: 2 x 2 particles per cell, open: 1.
-# Grey guides: slopes 1 and 2. A run that stopped is a cross above the data. Right column: today's
-# baselines' velocity error at 2 x 2 particles per cell, small (top) and large amplitude (bottom), one
-# colour per method, with LME γ = 3 + NPC in grey for reference. Each row's y range is its data's.
+# 2D manufactured solutions (data/smooth_manufactured.csv): RMS errors of velocity and stress against the cells per
+# side. Top row: small amplitude; middle row: the same errors of uGIMP and LME over linear's (same integrator, ppc,
+# mesh), where linear and uGIMP coincide (the same numbers) and LME lies within about 10 %; bottom row: large
+# amplitude (diagonal stretch). Colour: shape function (palette.gp); the integrator's dash and marker (FE solid with
+# circles, NPC dashed with squares, USL and MUSL with triangles); 1x1 particles per cell filled markers, 2x2 open ones,
+# drawn larger; uGIMP drawn wide, under linear. Right column: today's baselines' velocity error at 2x2 ppc, with LME
+# γ = 3 + NPC (2x2) for comparison. Grey dotted: slopes 1 and 2. A run that stopped (black cross) or ended no better
+# than a flat field (failed, black ring) lies on the strip above the data, its method's marker inside, each such
+# series of a row at its own offset. Each amplitude's panels share the y range of its data; the legend lies in the
+# middle row's right.
 # gnuplot -e "dir='...'; data='...'; out='...'" smooth_manufactured.gp
 load dir."/common.gp"
-w = 14; h = 7.5
+w = 13.3; h = 10.5
 file = data.'/smooth_manufactured.csv'
-colour(s) = (s eq 'linear' ? '#2ca02c' : s eq 'ugimp' ? '#9467bd' : '#d62728')
+# columns: 1 amplitude, 2 shape, 3 integrator, 4 ppc, 5 cells, 6 velocity error, 7 stress error, 10 status (ok, or
+# failed: stopped), 15 ending (done, failed, stopped)
 mine(a, s, i, p) = (strcol(1) eq a && strcol(2) eq s && strcol(3) eq i && $4 == p)
-ok(a, s, i, p) = (mine(a, s, i, p) && strcol(10) eq 'ok')
-stopped(a, s, i, p) = (mine(a, s, i, p) && strcol(10) ne 'ok')
-stats file using (strcol(1) eq 'small' ? $6 : NaN):(strcol(1) eq 'small' ? $7 : NaN) nooutput
+done(a, s, i, p) = (mine(a, s, i, p) && strcol(10) eq 'ok' && strcol(15) eq 'done')
+# the error of a run that ended (done), NaN otherwise, which breaks its line (a row whose column is nan is skipped)
+error(a, s, i, p, col) = (done(a, s, i, p) ? real(strcol(col)) : NaN)
+off(a, s, i, p, kind) = (mine(a, s, i, p) && (kind eq 'stopped' ? strcol(10) ne 'ok' : strcol(10) eq 'ok' && strcol(15) eq 'failed'))
+# A series is SHAPE/INTEGRATOR/PPC; uGIMP first, so that linear lies over its wide line.
+paper = 'ugimp/fe/1 ugimp/fe/2 ugimp/npc/1 ugimp/npc/2 linear/fe/1 linear/fe/2 linear/npc/1 linear/npc/2 lme/fe/1 lme/fe/2 lme/npc/1 lme/npc/2'
+baselines = 'bspline2/fe/2 bspline2/npc/2 bspline3/fe/2 bspline3/npc/2 linear/usl/2 linear/musl/2 lme/npc/2'
+rest(m) = m[strstrt(m, '/') + 1:]
+part(m, k) = (k == 1 ? m[1:strstrt(m, '/') - 1] : k == 2 ? rest(m)[1:strstrt(rest(m), '/') - 1] : rest(rest(m)))
+sel(a, m) = sprintf("mine('%s', '%s', '%s', %s)", a, part(m, 1), part(m, 2), part(m, 3))
+wide(m) = (part(m, 1) eq 'ugimp')
+look = "lw (wide(m) ? 3 : method_lw) dt dash(part(m, 2)) pt (part(m, 3) eq '1' ? marker(part(m, 2)) : open(marker(part(m, 2)))) ps ((wide(m) ? 1.3 : 1) * (part(m, 3) eq '1' ? 1 : 1.5)) lc rgb colour(part(m, 1))"
+# linear's errors, by amplitude, integrator, ppc and cells, for the middle row's ratios
+array linear_error[2 * 2 * 2 * 2 * 64]
+key(a, i, p, n, col) = 1 + (a eq 'large') + 2 * (i eq 'npc') + 4 * (p - 1) + 8 * (col - 6) + 16 * int(n)
+keep(k, value) = (k >= 1 && k <= 1024 ? (linear_error[k] = value, 0) : 0)
+stats file using (strcol(2) eq 'linear' && (strcol(3) eq 'fe' || strcol(3) eq 'npc') && strcol(15) eq 'done' ? keep(key(strcol(1), strcol(3), $4, $5, 6), $6) + keep(key(strcol(1), strcol(3), $4, $5, 7), $7) : 0) nooutput
+ratio(a, s, i, p, col) = (done(a, s, i, p) ? real(strcol(col)) / linear_error[key(a, i, p, $5, col)] : NaN)
+# y ranges: each amplitude's errors, the ratios
+stats file using (strcol(1) eq 'small' && strcol(15) eq 'done' ? $6 : NaN):(strcol(1) eq 'small' && strcol(15) eq 'done' ? $7 : NaN) nooutput
 small_low = (STATS_min_x < STATS_min_y ? STATS_min_x : STATS_min_y) / 1.5; small_high = (STATS_max_x > STATS_max_y ? STATS_max_x : STATS_max_y) * 1.5
-stats file using (strcol(1) eq 'large' && strcol(10) eq 'ok' ? $6 : NaN):(strcol(1) eq 'large' && strcol(10) eq 'ok' ? $7 : NaN) nooutput
-large_low = (STATS_min_x < STATS_min_y ? STATS_min_x : STATS_min_y) / 1.5; large_mark = (STATS_max_x > STATS_max_y ? STATS_max_x : STATS_max_y) * 2.5; large_high = large_mark * 2
-stats file using (strcol(10) ne 'ok' ? 1 : 0) nooutput
-if (STATS_sum == 0) { large_high = large_mark / 2 }  # no stopped run: no room for its marks
-mark(a) = (a eq 'small' ? small_high : large_mark)
-panel(a, col, title, ylabel) = sprintf("set title '%s'; set ylabel '%s'; plot for [s in 'linear ugimp lme'] for [i in 'fe npc'] for [p = 1:2] file using (ok('%s', s, i, p) ? $5 : NaN):%d with linespoints lw 1.5 dt 1+(i eq 'npc') pt (p == 2 ? 7 : 6) lc rgb colour(s), for [s in 'linear ugimp lme'] for [i in 'fe npc'] for [p = 1:2] file using (stopped('%s', s, i, p) ? $5 : NaN):(%g) with points pt 2 ps 1.5 lw 2 lc rgb colour(s), 0.15*(x/8)**-1 with lines dt 3 lc rgb '#888888', 0.15*(x/8)**-2 with lines dt 4 lc rgb '#888888'", title, ylabel, a, col, a, mark(a))
-legend = ", NaN with lines lw 2 lc rgb '#2ca02c' title 'linear', NaN with lines lw 2 lc rgb '#9467bd' title 'uGIMP', NaN with lines lw 2 lc rgb '#d62728' title 'LME, γ = 3', NaN with lines dt 1 lc rgb 'black' title 'FE', NaN with lines dt 2 lc rgb 'black' title 'NPC', NaN with points pt 6 lc rgb 'black' title '1x1 ppc', NaN with points pt 7 lc rgb 'black' title '2x2 ppc', NaN with points pt 2 lw 2 lc rgb 'black' title 'run stopped'"
-S = 'bspline2 bspline2 bspline3 bspline3 linear linear'; I = 'fe npc fe npc usl musl'
-bcolour(k) = word('#ff7f0e #ff7f0e #8c564b #8c564b #17becf #7f7f7f', k)
-bname(k) = word('B-spline2,FE B-spline2,NPC B-spline3,FE B-spline3,NPC linear,USL linear,MUSL', k)
-bpanel(a, title, extra) = sprintf("set title '%s'; set ylabel ''; plot for [k = 1:6] file using (ok('%s', word(S, k), word(I, k), 2) ? $5 : NaN):6 with linespoints lw 1.5 dt 1+(word(I, k) eq 'npc') pt 7 lc rgb bcolour(k) title (%d ? bname(k) : ''), for [k = 1:6] file using (stopped('%s', word(S, k), word(I, k), 2) ? $5 : NaN):(%g) with points pt 2 ps 1.5 lw 2 lc rgb bcolour(k), file using (ok('%s', 'lme', 'npc', 2) ? $5 : NaN):6 with linespoints lw 3 lc rgb '#bbbbbb' title (%d ? 'LME γ = 3, NPC' : '')", title, a, extra, a, mark(a), a, extra)
-draw = "set label 99 'At small amplitude linear coincides with uGIMP (green hidden under purple); USL and MUSL nearly coincide.' at screen 0.02, 0.012 font ',8'; set multiplot layout 2,3 title '2D manufactured solutions (plane strain, ν = 0.3): RMS errors at 1/8, 1/4, 3/8, 1/2 period' margins 0.06, 0.99, 0.15, 0.92 spacing 0.05, 0.1; set logscale xy; set format y '10^{%L}'; set xrange [7:36]; set xtics (8, 12, 16, 24, 32); set xlabel 'cells per side'; " . \
-  sprintf("set yrange [%g:%g]; ", small_low, small_high) . "set key at screen 0.02, 0.09 left top horizontal Left reverse font ',8' samplen 2; " . panel('small', 6, 'small amplitude: velocity', 'RMS |v_p - v| / Aω') . legend . "; set key off; " . panel('small', 7, 'small amplitude: stress', 'RMS |σ_p - σ| / σ scale') . "; set key at screen 0.68, 0.09 left top horizontal Left reverse font ',8' samplen 2; " . bpanel('small', 'baselines, 2x2 ppc, small amplitude: velocity', 1) . "; set key off; " . \
-  sprintf("set yrange [%g:%g]; ", large_low, large_high) . panel('large', 6, 'large amplitude (diagonal stretch): velocity', 'RMS |v_p - v| / aω') . "; " . panel('large', 7, 'large amplitude: stress', 'RMS |σ_p - σ| / σ scale') . "; " . bpanel('large', 'baselines, 2x2 ppc, large amplitude: velocity', 0) . "; unset multiplot; unset label 99"
+stats file using (strcol(1) eq 'large' && strcol(15) eq 'done' ? $6 : NaN):(strcol(1) eq 'large' && strcol(15) eq 'done' ? $7 : NaN) nooutput
+large_low = (STATS_min_x < STATS_min_y ? STATS_min_x : STATS_min_y) / 1.5; large_high = (STATS_max_x > STATS_max_y ? STATS_max_x : STATS_max_y) * 1.5
+stats file using (strcol(1) eq 'small' && (strcol(2) eq 'ugimp' || strcol(2) eq 'lme') ? ratio('small', strcol(2), strcol(3), $4, 6) : NaN):\
+  (strcol(1) eq 'small' && (strcol(2) eq 'ugimp' || strcol(2) eq 'lme') ? ratio('small', strcol(2), strcol(3), $4, 7) : NaN) nooutput
+ratio_low = (STATS_min_x < STATS_min_y ? STATS_min_x : STATS_min_y) - 0.03; ratio_high = (STATS_max_x > STATS_max_y ? STATS_max_x : STATS_max_y) + 0.03
+# The series of each amplitude with a run on the strip (paper's and baselines' apart), each at its own x offset there.
+do for [a in 'small large'] { do for [group in 'paper baselines'] {
+  list = ''
+  do for [m in value(group)] {
+    stats file using ((off(a, part(m, 1), part(m, 2), int(part(m, 3)), 'stopped') || off(a, part(m, 1), part(m, 2), int(part(m, 3)), 'failed')) ? 1 : 0) nooutput
+    if (STATS_sum > 0) { list = list.' '.m }
+  }
+  eval sprintf("onstrip_%s_%s = '%s'", a, group, list)
+} }
+rank(m, list) = sum [k = 1:words(list)] (word(list, k) eq m ? k : 0)
+dx(m, list) = 2**(0.1 * (rank(m, list) - (words(list) + 1) / 2.0))
+strip_list(a, group) = value(sprintf('onstrip_%s_%s', a, group))
+on_strip(a, group, kind, y, how) = sprintf("for [m in onstrip_%s_%s] file using (off('%s', part(m, 1), part(m, 2), int(part(m, 3)), '%s') ? $5 * dx(m, onstrip_%s_%s) : NaN):(%.12g) with points %s", a, group, a, kind, a, group, y, how)
+inside = "pt (part(m, 3) eq '1' ? marker(part(m, 2)) : open(marker(part(m, 2)))) ps 1.2 lc rgb colour(part(m, 1))"
+strip_runs(a, group, y) = (words(strip_list(a, group)) == 0 ? '' : ', ' . on_strip(a, group, 'stopped', y, stopped_style) . ', ' . on_strip(a, group, 'failed', y, failed_style) . \
+  ', ' . on_strip(a, group, 'stopped', y, inside) . ', ' . on_strip(a, group, 'failed', y, inside))
+any_strip(a) = (words(strip_list(a, 'paper')) + words(strip_list(a, 'baselines')) > 0)
+yrange(a) = (a eq 'small' ? (any_strip(a) ? strip_log(small_low, small_high, '') : sprintf("set yrange [%g:%g]; ", small_low, small_high).unstrip) : \
+  (any_strip(a) ? strip_log(large_low, large_high, '') : sprintf("set yrange [%g:%g]; ", large_low, large_high).unstrip))
+strip_y(a) = (a eq 'small' ? strip_y_log(small_low, small_high) : strip_y_log(large_low, large_high))
+guides = sprintf(", 0.15 * (x / 8)**-1 with lines %s, 0.15 * (x / 8)**-2 with lines %s", reference_style, reference_style)
+# Panels at explicit places: column c (1-3), from screen height b to t.
+at(c, b, t) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set bmargin at screen %g; set tmargin at screen %g; ", 0.06 + (c - 1) * 0.325, 0.06 + (c - 1) * 0.325 + 0.28, b, t)
+errors(a, group, col) = sprintf("plot for [m in %s] file using (%s ? $5 : NaN):(error('%s', part(m, 1), part(m, 2), int(part(m, 3)), %d)) with linespoints %s", group, "mine('".a."', part(m, 1), part(m, 2), int(part(m, 3)))", a, col, look) . guides . strip_runs(a, group, strip_y(a))
+panel(a, group, col, c, b, t, title, ylabel) = at(c, b, t) . "set logscale y; set format y '10^{%L}'; " . yrange(a) . sprintf("set title '%s'; set ylabel '%s'; ", title, ylabel) . errors(a, group, col) . "; "
+ratios(col, c, title) = at(c, 0.45, 0.575) . unstrip . sprintf("unset logscale y; set format y '%%g'; set ytics 0.05; set yrange [%g:%g]; set title '%s'; set ylabel 'error / linear’s'; ", ratio_low, ratio_high, title) . \
+  sprintf("plot for [m in paper] file using (part(m, 1) ne 'linear' && mine('small', part(m, 1), part(m, 2), int(part(m, 3))) ? $5 : NaN):(ratio('small', part(m, 1), part(m, 2), int(part(m, 3)), %d)) with linespoints %s, 1 with lines lw %g lc rgb '%s'; set ytics auto; ", col, look, method_lw, colour('linear'))
+vlabel = 'RMS |v_p - v| / Aω'; slabel = 'RMS |σ_p - σ| / σ scale'
+stats file using (strcol(10) eq 'failed' ? 1 : 0) nooutput
+stops = STATS_sum
+stats file using (strcol(10) eq 'ok' && strcol(15) eq 'failed' ? 1 : 0) nooutput
+fails = STATS_sum
+legend_slot = "set lmargin at screen 0.68; set rmargin at screen 0.99; set bmargin at screen 0.43; set tmargin at screen 0.575; unset logscale; unset border; unset tics; unset grid; unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . \
+  "set key inside left top vertical Left reverse samplen 3 maxrows 7 width -14; plot -1, " . \
+  "for [s in 'linear ugimp lme bspline2 bspline3'] keyentry with lines lw (s eq 'ugimp' ? 3 : method_lw) lc rgb colour(s) title shape_name(s).(s eq 'ugimp' ? ' (wide)' : ''), " . \
+  "for [i in 'fe npc usl musl'] keyentry with linespoints lw method_lw dt dash(i) pt marker(i) lc rgb c_exact title integrator_name(i), " . \
+  sprintf("keyentry with points pt %d lc rgb '%s' title '1x1 ppc: filled markers', keyentry with points pt %d ps 1.5 lc rgb '%s' title '2x2 ppc: open, large', ", marker('fe'), c_exact, open(marker('fe')), c_exact) . \
+  "keyentry with lines ".reference_style." title 'slopes 1 and 2'" . \
+  (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (marker inside)'" : "") . \
+  (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: error ≥ a flat field’s'" : "") . "; " . \
+  "set border; set tics; set grid; "
+draw = "set border; set tics; set grid; set key off; set multiplot title '2D manufactured solutions (plane strain, ν = 0.3): RMS errors at 1/8, 1/4, 3/8, 1/2 period against the cells per side\n" . \
+  "at small amplitude linear and uGIMP give the same numbers (uGIMP wide, under linear; middle row: the ratio, 1 for uGIMP); USL and MUSL nearly coincide (right)'; " . \
+  "set logscale x; set xrange [7:36]; set xtics (8, 12, 16, 24, 32); set xlabel 'cells per side'; " . \
+  panel('small', 'paper', 6, 1, 0.66, 0.91, 'small amplitude: velocity', vlabel) . panel('small', 'paper', 7, 2, 0.66, 0.91, 'small amplitude: stress', slabel) . \
+  panel('small', 'baselines', 6, 3, 0.66, 0.91, 'small: baselines and LME γ = 3 + NPC, 2x2 ppc, velocity', vlabel) . \
+  ratios(6, 1, 'small amplitude: velocity over linear’s') . ratios(7, 2, 'small amplitude: stress over linear’s') . \
+  panel('large', 'paper', 6, 1, 0.06, 0.35, 'large amplitude (diagonal stretch): velocity', vlabel) . panel('large', 'paper', 7, 2, 0.06, 0.35, 'large amplitude: stress', slabel) . \
+  panel('large', 'baselines', 6, 3, 0.06, 0.35, 'large: baselines and LME γ = 3 + NPC, 2x2 ppc, velocity', vlabel) . \
+  legend_slot . "unset multiplot; " . unstrip . "set lmargin -1; set rmargin -1; set bmargin -1; set tmargin -1"
 load dir."/output.gp"
