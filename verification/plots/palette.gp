@@ -3,8 +3,8 @@
 #   - a shape function (and each of today's baselines that is a shape: the B-splines, LME at small gamma) has one
 #     colour, colour(SHAPE);
 #   - an integrator (FE, NPC, USL, MUSL and the fair variants of Fig. 7) has one dash and one filled marker,
-#     dash(INTEGRATOR) and marker(INTEGRATOR); the open marker, open(marker(...)), marks a second variant of the
-#     same method (2 particles per cell);
+#     dash(INTEGRATOR) and marker(INTEGRATOR); the open marker, open(marker(...)), means 2 particles per cell and
+#     nothing else (LME under the authors' beta is a shape of its own, lme_authors, with the filled markers);
 #   - a method is its shape's colour with its integrator's dash and marker: method_style(SHAPE, INTEGRATOR);
 #   - the exact solution is black and thick (exact_style), a second reference (the finite-strain static column, a
 #     theory's slope) grey and dotted (reference_style), another code's run grey and dash-dotted (other_code_style);
@@ -50,8 +50,9 @@ reference_style = "lw 1.5 dt 3 lc rgb '#7f7f7f'"
 other_code_style = "lw 1.5 dt 4 pt 6 lc rgb '#7f7f7f'"
 c_context = '#c8c8c8'
 
-# Sequences: one ramp (viridis, its palest end left out so that every step shows on white).
-ramp_colours = "#440154 #46327e #365c8d #277f8e #1fa187 #4ac16d #a0da39"
+# Sequences: one ramp (viridis, its palest end left out so that every step shows on white; the steps spaced so that
+# neighbours differ in hue, not only in lightness).
+ramp_colours = "#440154 #3b528b #2c728e #21918c #28ae80 #5ec962 #addc30"
 ramp(k, n) = word(ramp_colours, n <= 1 ? 1 : 1 + int(0.5 + (k - 1) * (words(ramp_colours) - 1.0) / (n - 1)))
 
 # Outcomes: stopped by the solver, failed (no better than a flat line), on the strip above the data.
