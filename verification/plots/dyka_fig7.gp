@@ -1,6 +1,7 @@
 # Fig. 7: the predictor-corrector against forward Euler (LME γ = 3, 40 cells, CFL 0.5): v_A(t) against the exact
 # solution, each curve in the method style of palette.gp (LME's colour, the authors' β in lme_authors' colour; the
-# integrator's dash and marker, markers every few samples at intervals that differ per integrator). Top: forward Euler
+# integrator's dash and marker, markers every few samples at intervals that differ per integrator, the Newmark
+# average's pentagons drawn larger than FE's circles, on which its curve lies). Top: forward Euler
 # (left) and the predictor-corrector (Eq. 32, right) over 200 µs. Below: the jump at 46 µs (left) and the same under
 # the authors' β (right, paper/09_choices.md, 'The authors' beta'), each with a difference panel under it: each curve
 # minus the one it is compared with. make figures (fair = 0): FE and NPC; difference FE − NPC. make studies (fair = 1,
@@ -16,12 +17,14 @@ file(beta, i) = data.'/dyka_lme_'.(beta eq 'authors' ? 'authors_' : '').i.'_40.c
 shape(beta) = beta eq 'authors' ? 'lme_authors' : 'lme'
 # Markers every few samples, the interval per integrator (so that markers of curves on one another do not coincide).
 every(i, span) = span * (i eq 'fe' ? 5 : i eq 'npc' ? 6 : i eq 'feblend' ? 7 : 8)
+# Markers' sizes: the Newmark average's pentagon larger, so that it is not taken for FE's circle.
+size(i) = i eq 'npcavg' ? 1.8 : 0.9
 exact(beta) = sprintf("'%s' using ($1*1e6):3 with lines %s title 'exact'", file(beta, 'fe'), exact_style)
-curve(beta, i, span) = sprintf(", '%s' using ($1*1e6):2 with linespoints %s pi %d ps 0.9 title '%s'", \
-  file(beta, i), method_style(shape(beta), i), every(i, span), integrator_name(i))
+curve(beta, i, span) = sprintf(", '%s' using ($1*1e6):2 with linespoints %s pi %d ps %g title '%s'", \
+  file(beta, i), method_style(shape(beta), i), every(i, span), size(i), integrator_name(i))
 # Curve a minus curve b, sample by sample, in a's style.
-minus(beta, a, b) = sprintf("'< paste -d, %s %s' using ($1*1e6):($2-$5) with linespoints %s pi %d ps 0.9 title '%s − %s'", \
-  file(beta, a), file(beta, b), method_style(shape(beta), a), every(a, 2), integrator_name(a), integrator_name(b))
+minus(beta, a, b) = sprintf("'< paste -d, %s %s' using ($1*1e6):($2-$5) with linespoints %s pi %d ps %g title '%s − %s'", \
+  file(beta, a), file(beta, b), method_style(shape(beta), a), every(a, 2), size(a), integrator_name(a), integrator_name(b))
 zero = sprintf("0 with lines lw 1 lc rgb '%s' notitle", c_context)
 
 # Panels' places (screen fractions): two columns; the top row; the jump above its difference panel.
@@ -40,7 +43,7 @@ npc_top = place(2, 0.715, 0.905).full."set title '".npc_title."'; plot ".exact('
 jump = "set xrange [40:66]; set yrange [-3.6:8.5]; set xlabel ''; set format x ''; set ylabel 'v_A (m/s)'; set key bottom center horizontal maxrows 2; "
 on_jump(beta) = exact(beta).curve(beta, 'fe', 1).curve(beta, 'npc', 1).(fair ? curve(beta, 'feblend', 1).curve(beta, 'npcavg', 1) : '')
 jump_title(beta) = (beta eq 'authors' ? "the same under the authors' β" : "on the jump at 46 µs"). \
-  (fair ? (beta eq 'authors' ? ': the average again on FE, the blend (calibrated again) near NPC' : \
+  (fair ? (beta eq 'authors' ? ': the average on FE, the blend (recalibrated) near NPC' : \
                                ': the Newmark average lies on FE, the blend near NPC') : '')
 difference = "set xlabel 't (µs)'; set format x '%g'; set ylabel 'difference (m/s)'; set yrange [-2.2:2.9]; unset title; set key top center horizontal; "
 differences(beta) = minus(beta, 'fe', 'npc').(fair ? ', '.minus(beta, 'npcavg', 'fe').', '.minus(beta, 'feblend', 'npc') : '').', '.zero
