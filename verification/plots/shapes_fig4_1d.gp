@@ -9,9 +9,9 @@ names = "linear ugimp lme_0.8 lme_1.8 lme_4"
 titles = "'linear (Q4)' 'uGIMP, l_p = h/4' 'LME γ = 0.8' 'LME γ = 1.8' 'LME γ = 4'"
 file(k) = sprintf("%s/shape1d_%s_centre.csv", data, word(names, k))
 against_linear(k) = sprintf("< paste -d, %s %s", file(k), file(1))     # x, N, dN/dx, then the linear hat's
-# the LME gammas: the first three steps of a four-step ramp, gamma = 4 (nearest the linear hat and uGIMP) darkest, so
-# that no LME curve is the green of uGIMP's
-shade(k) = k == 1 ? colour('linear') : k == 2 ? colour('ugimp') : ramp(6 - k, 4)
+# the LME gammas: steps 1, 2 and 4 of the ramp's 7 (purple, indigo, blue-teal), gamma = 4 (nearest the linear hat and
+# uGIMP) darkest; its steps 5 to 7 (sea green to lime) would sit near uGIMP's green
+shade(k) = k == 1 ? colour('linear') : k == 2 ? colour('ugimp') : ramp(int(word('4 2 1', k - 2)), 7)
 style(k) = sprintf("with lines lw %g lc rgb '%s'", k == 1 ? 2 : 1.5, shade(k))
 one(k, column) = sprintf("'%s' using 1:%d %s title '%s'", file(k), column, style(k), word(titles, k))
 curves(column) = "plot ".one(1, column).", ".one(2, column).", ".one(3, column).", ".one(4, column).", ".one(5, column)

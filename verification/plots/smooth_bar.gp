@@ -6,12 +6,13 @@
 # triangles); 1 particle per cell filled markers, 2 open ones, drawn larger so that a filled one on the same value
 # shows inside; at small amplitude the paper's shapes also at CFL 0.1, thin lines with small markers (CFL 0.5: the
 # usual lines). Grey dotted: slopes 1 and 2. A run that stopped (black cross) or ended no better than a flat field
-# (failed, black ring) lies on the strip above the data, its method's marker inside, at one of four places about its
-# mesh: from left to right the panel's first integrator at 1 and 2 ppc, then its second. The velocity rows share
-# one y range, the stress rows another, each the range of its data; the legend lies below the panels.
+# (failed, black ring) lies on the strip above the data, its method's marker inside, at its mesh: the strip has one
+# row per series of the panel (from the top: the first integrator at 1 and 2 ppc, then the second), each row with
+# a run named at its left ("FE, 1 ppc"). The velocity rows share one y range, the stress rows another, each the
+# range of its data; the legend lies below the panels.
 # gnuplot -e "dir='...'; data='...'; out='...'; amplitude='small|large'; caption='...'" smooth_bar.gp
 load dir."/common.gp"
-w = 13.3; h = 12
+w = 13.3
 sweep = data.'/smooth_bar.csv'
 small = (amplitude eq 'small')
 # columns: 1 amplitude, 2 shape, 3 integrator, 4 ppc, 5 CFL, 6 cells, 7 velocity error, 8 stress error, 12 status (ok,
@@ -27,27 +28,47 @@ stats sweep using (strcol(1) eq amplitude && strcol(18) eq 'done' ? $8 : NaN) no
 slow = STATS_min / 1.6; shigh = STATS_max * 1.6
 stats sweep using (strcol(1) eq amplitude && strcol(18) ne 'done' ? 1 : 0) nooutput
 outcomes = STATS_sum  # runs on the strip
+h = (outcomes > 0 ? 13.5 : 12)  # taller with the strip's rows, so that the data keep their height
 stats sweep using (strcol(1) eq amplitude && strcol(12) ne 'ok' ? 1 : 0) nooutput
 stops = STATS_sum
 stats sweep using (strcol(1) eq amplitude && strcol(18) eq 'failed' ? 1 : 0) nooutput
 fails = STATS_sum
 stats sweep using (strcol(1) eq amplitude ? $6 : NaN) nooutput
-xlow = STATS_min / 1.5; xhigh = STATS_max * 1.5
+xhigh = STATS_max * 1.5
+xlow = STATS_min / (outcomes > 0 ? 3.3 : 1.5)  # room at the left of the strip for its rows' names
 # A method's look: its shape's colour, its integrator's dash and marker; 2 ppc open and larger; CFL 0.1 thin, small.
 cfls(s, i) = (small && (i eq 'fe' || i eq 'npc') && s ne 'bspline2' && s ne 'bspline3' ? '0.5 0.1' : '0.5')
 curves(s, i, col) = sprintf("for [p = 2:1:-1] for [c in '%s'] sweep using (mine('%s', '%s', p, real(c)) ? $6 : NaN):(error('%s', '%s', p, real(c), %d)) with linespoints lw (real(c) > 0.3 ? method_lw : 0.8) dt %d pt (p == 1 ? %d : %d) ps ((real(c) > 0.3 ? 1 : 0.6) * (p == 2 ? 1.5 : 1)) lc rgb '%s'", \
   cfls(s, i), s, i, s, i, col, dash(i), marker(i), open(marker(i)), colour(s))
-# The strip: four places about each mesh, from left to right the first integrator at 1 and 2 ppc, then the second.
-slot(left, p) = 2**(0.25 * ((left ? 0 : 2) + p - 2.5))
-on_strip(s, i, left, kind, lo, hi, how) = sprintf("for [p = 1:2] sweep using (off('%s', '%s', p, '%s') ? $6 * slot(%d, p) : NaN):(%.12g) with points %s", s, i, kind, left, strip_y_log(lo, hi), how)
-strip_runs(s, i, left, lo, hi) = (outcomes == 0 ? '' : sprintf(", %s, %s, %s", on_strip(s, i, left, 'stopped', lo, hi, stopped_style), on_strip(s, i, left, 'failed', lo, hi, failed_style), \
-  on_strip(s, i, left, 'stopped', lo, hi, sprintf("pt (p == 1 ? %d : %d) ps 1.2 lc rgb '%s'", marker(i), open(marker(i)), colour(s)))) . \
-  sprintf(", %s", on_strip(s, i, left, 'failed', lo, hi, sprintf("pt (p == 1 ? %d : %d) ps 1.2 lc rgb '%s'", marker(i), open(marker(i)), colour(s)))))
+# The strip: one row per series of a panel, k = 1 (top) to 4: the first integrator at 1 and 2 ppc, then the second;
+# each run at its mesh. A row is named at its left when it holds a run (count_SHAPE_INTEGRATOR_PPC: its runs there).
+rows = 4
+row_share = 0.1  # a row's height, as a share of the data's (log) height
+row_y(lo, hi, k) = hi * (hi / lo)**(row_share * (rows - k + 0.5))
+do for [series in 'linear/fe linear/npc ugimp/fe ugimp/npc lme/fe lme/npc bspline2/fe bspline2/npc bspline3/fe bspline3/npc linear/usl linear/musl'] {
+  do for [ppc = 1:2] {
+    series_shape = series[1:strstrt(series, '/') - 1]; series_integrator = series[strstrt(series, '/') + 1:]
+    stats sweep using ((off(series_shape, series_integrator, ppc, 'stopped') || off(series_shape, series_integrator, ppc, 'failed')) ? 1 : 0) nooutput
+    eval sprintf("count_%s_%s_%d = %d", series_shape, series_integrator, ppc, STATS_sum)
+  }
+}
+count(s, i, p) = value(sprintf('count_%s_%s_%d', s, i, p))
+row_name(s, i, p, k, lo, hi) = (count(s, i, p) > 0 ? sprintf("set label %d '%s, %d ppc' at graph 0.015, first %.12g left front; ", 90 + k, integrator_name(i), p, row_y(lo, hi, k)) : '')
+row_names(s, i1, i2, lo, hi) = (outcomes == 0 ? '' : row_name(s, i1, 1, 1, lo, hi) . row_name(s, i1, 2, 2, lo, hi) . row_name(s, i2, 1, 3, lo, hi) . row_name(s, i2, 2, 4, lo, hi))
+unname = "unset label 91; unset label 92; unset label 93; unset label 94; "
+inside(s, i) = sprintf("pt (p == 1 ? %d : %d) ps 1.2 lc rgb '%s'", marker(i), open(marker(i)), colour(s))
+on_strip(s, i, first, kind, lo, hi, how) = sprintf("for [p = 1:2] sweep using (off('%s', '%s', p, '%s') ? $6 : NaN):(row_y(%.12g, %.12g, %d + p)) with points %s", s, i, kind, lo, hi, first ? 0 : 2, how)
+strip_runs(s, i, first, lo, hi) = (outcomes == 0 ? '' : sprintf(", %s, %s, %s, %s", on_strip(s, i, first, 'stopped', lo, hi, stopped_style), on_strip(s, i, first, 'failed', lo, hi, failed_style), \
+  on_strip(s, i, first, 'stopped', lo, hi, inside(s, i)), on_strip(s, i, first, 'failed', lo, hi, inside(s, i))))
 guides = sprintf(", 0.05 * (x / 8)**-1 with lines %s, 0.05 * (x / 8)**-2 with lines %s", reference_style, reference_style)
-yrange(lo, hi) = (outcomes > 0 ? strip_log(lo, hi, '') : sprintf("set yrange [%.12g:%.12g]; ", lo, hi).unstrip)
+strip_top(lo, hi) = hi * (hi / lo)**(row_share * rows)
+# the y tics: every decade up to hi, none on the strip
+decades(lo, hi) = sprintf("set ytics %.12g, 10, %.12g; ", 10**floor(log10(lo)), hi)
+yrange(lo, hi) = unname . decades(lo, hi) . (outcomes > 0 ? sprintf("set yrange [%.12g:%.12g]; ", lo, strip_top(lo, hi)) . strip_common(hi, strip_top(lo, hi), hi, '') : \
+  sprintf("set yrange [%.12g:%.12g]; ", lo, hi).unstrip)
 # One panel: shape s with integrators i1 and i2; col 7 (velocity) or 8 (stress).
 panel(s, i1, i2, col, title) = sprintf("set title '%s'; set ylabel '%s'; ", title, col == 7 ? 'RMS(v_p - v) / V' : 'RMS(σ_p - σ) / ZV') . \
-  (col == 7 ? yrange(vlow, vhigh) : yrange(slow, shigh)) . "plot " . curves(s, i1, col) . ", " . curves(s, i2, col) . guides . \
+  (col == 7 ? yrange(vlow, vhigh) . row_names(s, i1, i2, vlow, vhigh) : yrange(slow, shigh) . row_names(s, i1, i2, slow, shigh)) . "plot " . curves(s, i1, col) . ", " . curves(s, i2, col) . guides . \
   strip_runs(s, i1, 1, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh) . strip_runs(s, i2, 0, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh)
 quantity(col) = (col == 7 ? 'velocity' : 'stress')
 paper_row(col) = panel('linear', 'fe', 'npc', col, shape_name('linear').': '.quantity(col).', FE and NPC') . "; " . \
@@ -65,7 +86,7 @@ legend = sprintf("keyentry with linespoints %s title 'FE: solid, circles', keyen
   (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (its method’s marker inside)'" : '') . \
   (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: no better than a flat field'" : '')
 legend_panel = "set lmargin at screen 0.02; set rmargin at screen 0.99; set bmargin at screen 0.005; set tmargin at screen 0.075; unset logscale; unset border; unset tics; unset grid; " . \
-  "unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . "set key inside left top horizontal Left reverse samplen 3 maxrows 3; plot -1, " . legend
+  "unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . unname . "set key inside left top horizontal Left reverse samplen 3 maxrows 3; plot -1, " . legend
 note = (small ? 'coinciding: NPC at 1 and 2 ppc, and B-spline 3 + FE at 1 and 2 ppc (velocity: the filled marker inside the open one); FE at CFL 0.5 and 0.1 (stress: the thin line on the thick one)' : \
   'rows 1-2: the paper’s shape functions, rows 3-4: today’s baselines; all at CFL 0.5')
 draw = "set border; set tics; set grid; set lmargin -1; set rmargin -1; set bmargin -1; set tmargin -1; set key off; " . \

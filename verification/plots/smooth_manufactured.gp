@@ -1,13 +1,14 @@
 # 2D manufactured solutions (data/smooth_manufactured.csv): RMS errors of velocity and stress against the cells per
-# side. Top row: small amplitude; middle row: the same errors of uGIMP and LME over linear's (same integrator, ppc,
-# mesh), where linear and uGIMP coincide (the same numbers) and LME lies within about 10 %; bottom row: large
-# amplitude (diagonal stretch). Colour: shape function (palette.gp); the integrator's dash and marker (FE solid with
-# circles, NPC dashed with squares, USL and MUSL with triangles); 1x1 particles per cell filled markers, 2x2 open ones,
-# drawn larger; uGIMP drawn wide, under linear. Right column: today's baselines' velocity error at 2x2 ppc, with LME
-# γ = 3 + NPC (2x2) for comparison. Grey dotted: slopes 1 and 2. A run that stopped (black cross) or ended no better
-# than a flat field (failed, black ring) lies on the strip above the data, its method's marker inside, each such
-# series of a row at its own offset. Each amplitude's panels share the y range of its data; the legend lies in the
-# middle row's right.
+# side. Top row: small amplitude, linear and LME γ = 3 (uGIMP gives linear's numbers, to within a few 1e-5, so it is
+# drawn in the middle row only); middle row: the same errors of uGIMP and LME over linear's (same integrator, ppc,
+# mesh), linear the red line at 1, uGIMP its markers on it, LME within about 10 %; bottom row: large amplitude
+# (diagonal stretch), every shape. Colour: shape function (palette.gp); the integrator's dash and marker (FE solid
+# with circles, NPC dashed with squares, USL and MUSL with triangles); 1x1 particles per cell filled markers, 2x2 open
+# ones, drawn larger. Right column: today's baselines' velocity error at 2x2 ppc, with LME γ = 3 + NPC (2x2) for
+# comparison. Grey dotted: slopes 1 and 2. A run that stopped (black cross) or ended no better than a flat field
+# (failed, black ring) lies on the strip above the data, its method's marker inside, at its mesh: one strip row per
+# series with such a run, named at its left (method and ppc). Each amplitude's panels share the y range of its data
+# (and the strip's height); the legend lies in the middle row's right.
 # gnuplot -e "dir='...'; data='...'; out='...'" smooth_manufactured.gp
 load dir."/common.gp"
 w = 13.3; h = 10.5
@@ -19,14 +20,16 @@ done(a, s, i, p) = (mine(a, s, i, p) && strcol(10) eq 'ok' && strcol(15) eq 'don
 # the error of a run that ended (done), NaN otherwise, which breaks its line (a row whose column is nan is skipped)
 error(a, s, i, p, col) = (done(a, s, i, p) ? real(strcol(col)) : NaN)
 off(a, s, i, p, kind) = (mine(a, s, i, p) && (kind eq 'stopped' ? strcol(10) ne 'ok' : strcol(10) eq 'ok' && strcol(15) eq 'failed'))
-# A series is SHAPE/INTEGRATOR/PPC; uGIMP first, so that linear lies over its wide line.
-paper = 'ugimp/fe/1 ugimp/fe/2 ugimp/npc/1 ugimp/npc/2 linear/fe/1 linear/fe/2 linear/npc/1 linear/npc/2 lme/fe/1 lme/fe/2 lme/npc/1 lme/npc/2'
+# A series is SHAPE/INTEGRATOR/PPC. At small amplitude uGIMP's numbers are linear's: the top row leaves it out
+# (paper_small), the middle row draws it.
+paper = 'linear/fe/1 linear/fe/2 linear/npc/1 linear/npc/2 ugimp/fe/1 ugimp/fe/2 ugimp/npc/1 ugimp/npc/2 lme/fe/1 lme/fe/2 lme/npc/1 lme/npc/2'
+paper_small = 'linear/fe/1 linear/fe/2 linear/npc/1 linear/npc/2 lme/fe/1 lme/fe/2 lme/npc/1 lme/npc/2'
 baselines = 'bspline2/fe/2 bspline2/npc/2 bspline3/fe/2 bspline3/npc/2 linear/usl/2 linear/musl/2 lme/npc/2'
 rest(m) = m[strstrt(m, '/') + 1:]
 part(m, k) = (k == 1 ? m[1:strstrt(m, '/') - 1] : k == 2 ? rest(m)[1:strstrt(rest(m), '/') - 1] : rest(rest(m)))
 sel(a, m) = sprintf("mine('%s', '%s', '%s', %s)", a, part(m, 1), part(m, 2), part(m, 3))
-wide(m) = (part(m, 1) eq 'ugimp')
-look = "lw (wide(m) ? 3 : method_lw) dt dash(part(m, 2)) pt (part(m, 3) eq '1' ? marker(part(m, 2)) : open(marker(part(m, 2)))) ps ((wide(m) ? 1.3 : 1) * (part(m, 3) eq '1' ? 1 : 1.5)) lc rgb colour(part(m, 1))"
+point = "pt (part(m, 3) eq '1' ? marker(part(m, 2)) : open(marker(part(m, 2)))) ps (part(m, 3) eq '1' ? 1 : 1.5) lc rgb colour(part(m, 1))"
+look = "lw method_lw dt dash(part(m, 2)) ".point
 # linear's errors, by amplitude, integrator, ppc and cells, for the middle row's ratios
 array linear_error[2 * 2 * 2 * 2 * 64]
 key(a, i, p, n, col) = 1 + (a eq 'large') + 2 * (i eq 'npc') + 4 * (p - 1) + 8 * (col - 6) + 16 * int(n)
@@ -41,8 +44,11 @@ large_low = (STATS_min_x < STATS_min_y ? STATS_min_x : STATS_min_y) / 1.5; large
 stats file using (strcol(1) eq 'small' && (strcol(2) eq 'ugimp' || strcol(2) eq 'lme') ? ratio('small', strcol(2), strcol(3), $4, 6) : NaN):\
   (strcol(1) eq 'small' && (strcol(2) eq 'ugimp' || strcol(2) eq 'lme') ? ratio('small', strcol(2), strcol(3), $4, 7) : NaN) nooutput
 ratio_low = (STATS_min_x < STATS_min_y ? STATS_min_x : STATS_min_y) - 0.03; ratio_high = (STATS_max_x > STATS_max_y ? STATS_max_x : STATS_max_y) + 0.03
-# The series of each amplitude with a run on the strip (paper's and baselines' apart), each at its own x offset there.
-do for [a in 'small large'] { do for [group in 'paper baselines'] {
+stats file using (strcol(1) eq 'small' && strcol(2) eq 'ugimp' ? abs(ratio('small', 'ugimp', strcol(3), $4, 6) - 1) : NaN):\
+  (strcol(1) eq 'small' && strcol(2) eq 'ugimp' ? abs(ratio('small', 'ugimp', strcol(3), $4, 7) - 1) : NaN) nooutput
+ugimp_off = (STATS_max_x > STATS_max_y ? STATS_max_x : STATS_max_y)  # uGIMP's largest departure from linear's
+# The series of each amplitude with a run on the strip (paper's and baselines' apart); each has a row of the strip.
+do for [a in 'small large'] { do for [group in 'paper paper_small baselines'] {
   list = ''
   do for [m in value(group)] {
     stats file using ((off(a, part(m, 1), part(m, 2), int(part(m, 3)), 'stopped') || off(a, part(m, 1), part(m, 2), int(part(m, 3)), 'failed')) ? 1 : 0) nooutput
@@ -51,23 +57,46 @@ do for [a in 'small large'] { do for [group in 'paper baselines'] {
   eval sprintf("onstrip_%s_%s = '%s'", a, group, list)
 } }
 rank(m, list) = sum [k = 1:words(list)] (word(list, k) eq m ? k : 0)
-dx(m, list) = 2**(0.1 * (rank(m, list) - (words(list) + 1) / 2.0))
 strip_list(a, group) = value(sprintf('onstrip_%s_%s', a, group))
-on_strip(a, group, kind, y, how) = sprintf("for [m in onstrip_%s_%s] file using (off('%s', part(m, 1), part(m, 2), int(part(m, 3)), '%s') ? $5 * dx(m, onstrip_%s_%s) : NaN):(%.12g) with points %s", a, group, a, kind, a, group, y, how)
-inside = "pt (part(m, 3) eq '1' ? marker(part(m, 2)) : open(marker(part(m, 2)))) ps 1.2 lc rgb colour(part(m, 1))"
-strip_runs(a, group, y) = (words(strip_list(a, group)) == 0 ? '' : ', ' . on_strip(a, group, 'stopped', y, stopped_style) . ', ' . on_strip(a, group, 'failed', y, failed_style) . \
-  ', ' . on_strip(a, group, 'stopped', y, inside) . ', ' . on_strip(a, group, 'failed', y, inside))
 any_strip(a) = (words(strip_list(a, 'paper')) + words(strip_list(a, 'baselines')) > 0)
-yrange(a) = (a eq 'small' ? (any_strip(a) ? strip_log(small_low, small_high, '') : sprintf("set yrange [%g:%g]; ", small_low, small_high).unstrip) : \
-  (any_strip(a) ? strip_log(large_low, large_high, '') : sprintf("set yrange [%g:%g]; ", large_low, large_high).unstrip))
-strip_y(a) = (a eq 'small' ? strip_y_log(small_low, small_high) : strip_y_log(large_low, large_high))
+# The strip of an amplitude: as many rows as its fullest panel, row_share of the data's (log) height each; row 1 on top.
+row_share = 0.075
+rows(a) = (words(strip_list(a, 'paper')) > words(strip_list(a, 'baselines')) ? words(strip_list(a, 'paper')) : words(strip_list(a, 'baselines')))
+low(a) = (a eq 'small' ? small_low : large_low)
+high(a) = (a eq 'small' ? small_high : large_high)
+strip_top(a) = high(a) * (high(a) / low(a))**(row_share * rows(a))
+row_y(a, k) = high(a) * (high(a) / low(a))**(row_share * (rows(a) - k + 0.5))
+# each row named at its left: the method and its ppc (labels 91 on)
+ppc_name(p) = (p eq '1' ? '1x1 ppc' : '2x2 ppc')
+do for [a in 'small large'] { do for [group in 'paper paper_small baselines'] {
+  list = strip_list(a, group); names = ''
+  do for [k = 1:words(list)] {
+    m = word(list, k)
+    names = names . sprintf("set label %d '%s, %s' at graph 0.015, first %.12g left front; ", 90 + k, method_name(part(m, 1), part(m, 2)), ppc_name(part(m, 3)), row_y(a, k))
+  }
+  if (words(list) == 0) { names = sprintf("set label 91 'every run here ended (none stopped or failed)' at graph 0.015, first %.12g left front; ", row_y(a, (rows(a) + 1) / 2.0)) }
+  eval sprintf("names_%s_%s = names", a, group)
+} }
+unname = ''
+do for [k = 1:12] { unname = unname . sprintf('unset label %d; ', 90 + k) }
+on_strip(a, group, kind, how) = sprintf("for [m in onstrip_%s_%s] file using (off('%s', part(m, 1), part(m, 2), int(part(m, 3)), '%s') ? $5 : NaN):(row_y('%s', rank(m, onstrip_%s_%s))) with points %s", a, group, a, kind, a, a, group, how)
+inside = "pt (part(m, 3) eq '1' ? marker(part(m, 2)) : open(marker(part(m, 2)))) ps 1.2 lc rgb colour(part(m, 1))"
+strip_runs(a, group) = (words(strip_list(a, group)) == 0 ? '' : ', ' . on_strip(a, group, 'stopped', stopped_style) . ', ' . on_strip(a, group, 'failed', failed_style) . \
+  ', ' . on_strip(a, group, 'stopped', inside) . ', ' . on_strip(a, group, 'failed', inside))
+# the y range of an amplitude, with its strip when it has one; tics on every decade up to the data's top, none on the strip
+decades(a) = sprintf("set ytics %.12g, 10, %.12g; ", 10**floor(log10(low(a))), high(a))
+yrange(a, group) = unname . decades(a) . (any_strip(a) ? sprintf("set yrange [%.12g:%.12g]; ", low(a), strip_top(a)) . strip_common(high(a), strip_top(a), high(a), '') . value(sprintf('names_%s_%s', a, group)) : \
+  sprintf("set yrange [%.12g:%.12g]; ", low(a), high(a)) . unstrip)
 guides = sprintf(", 0.15 * (x / 8)**-1 with lines %s, 0.15 * (x / 8)**-2 with lines %s", reference_style, reference_style)
 # Panels at explicit places: column c (1-3), from screen height b to t.
 at(c, b, t) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set bmargin at screen %g; set tmargin at screen %g; ", 0.06 + (c - 1) * 0.325, 0.06 + (c - 1) * 0.325 + 0.28, b, t)
-errors(a, group, col) = sprintf("plot for [m in %s] file using (%s ? $5 : NaN):(error('%s', part(m, 1), part(m, 2), int(part(m, 3)), %d)) with linespoints %s", group, "mine('".a."', part(m, 1), part(m, 2), int(part(m, 3)))", a, col, look) . guides . strip_runs(a, group, strip_y(a))
-panel(a, group, col, c, b, t, title, ylabel) = at(c, b, t) . "set logscale y; set format y '10^{%L}'; " . yrange(a) . sprintf("set title '%s'; set ylabel '%s'; ", title, ylabel) . errors(a, group, col) . "; "
-ratios(col, c, title) = at(c, 0.45, 0.575) . unstrip . sprintf("unset logscale y; set format y '%%g'; set ytics 0.05; set yrange [%g:%g]; set title '%s'; set ylabel 'error / linear’s'; ", ratio_low, ratio_high, title) . \
-  sprintf("plot for [m in paper] file using (part(m, 1) ne 'linear' && mine('small', part(m, 1), part(m, 2), int(part(m, 3))) ? $5 : NaN):(ratio('small', part(m, 1), part(m, 2), int(part(m, 3)), %d)) with linespoints %s, 1 with lines lw %g lc rgb '%s'; set ytics auto; ", col, look, method_lw, colour('linear'))
+errors(a, group, col) = sprintf("plot for [m in %s] file using (%s ? $5 : NaN):(error('%s', part(m, 1), part(m, 2), int(part(m, 3)), %d)) with linespoints %s", group, "mine('".a."', part(m, 1), part(m, 2), int(part(m, 3)))", a, col, look) . guides . strip_runs(a, group)
+panel(a, group, col, c, b, t, title, ylabel) = at(c, b, t) . "set logscale y; set format y '10^{%L}'; " . yrange(a, group) . sprintf("set title '%s'; set ylabel '%s'; ", title, ylabel) . errors(a, group, col) . "; "
+# linear's line at 1 first, uGIMP's markers on it (no line: its lines would cover linear's), LME's lines and markers
+ratio_of(s, col) = sprintf("file using (part(m, 1) eq '%s' && mine('small', part(m, 1), part(m, 2), int(part(m, 3))) ? $5 : NaN):(ratio('small', part(m, 1), part(m, 2), int(part(m, 3)), %d))", s, col)
+ratios(col, c, title) = at(c, 0.45, 0.575) . unstrip . unname . sprintf("unset logscale y; set format y '%%g'; set ytics 0.05; set yrange [%g:%g]; set title '%s'; set ylabel 'error / linear’s'; ", ratio_low, ratio_high, title) . \
+  sprintf("plot 1 with lines lw %g lc rgb '%s', ", method_lw, colour('linear')) . "for [m in paper] " . ratio_of('ugimp', col) . " with points " . point . \
+  ", for [m in paper] " . ratio_of('lme', col) . " with linespoints " . look . "; set ytics auto; "
 vlabel = 'RMS |v_p - v| / Aω'; slabel = 'RMS |σ_p - σ| / σ scale'
 stats file using (strcol(10) eq 'failed' ? 1 : 0) nooutput
 stops = STATS_sum
@@ -75,19 +104,20 @@ stats file using (strcol(10) eq 'ok' && strcol(15) eq 'failed' ? 1 : 0) nooutput
 fails = STATS_sum
 legend_slot = "set lmargin at screen 0.68; set rmargin at screen 0.99; set bmargin at screen 0.43; set tmargin at screen 0.575; unset logscale; unset border; unset tics; unset grid; unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . \
   "set key inside left top vertical Left reverse samplen 3 maxrows 7 width -14; plot -1, " . \
-  "for [s in 'linear ugimp lme bspline2 bspline3'] keyentry with lines lw (s eq 'ugimp' ? 3 : method_lw) lc rgb colour(s) title shape_name(s).(s eq 'ugimp' ? ' (wide)' : ''), " . \
+  "for [s in 'linear ugimp lme bspline2 bspline3'] keyentry with lines lw method_lw lc rgb colour(s) title shape_name(s), " . \
   "for [i in 'fe npc usl musl'] keyentry with linespoints lw method_lw dt dash(i) pt marker(i) lc rgb c_exact title integrator_name(i), " . \
   sprintf("keyentry with points pt %d lc rgb '%s' title '1x1 ppc: filled markers', keyentry with points pt %d ps 1.5 lc rgb '%s' title '2x2 ppc: open, large', ", marker('fe'), c_exact, open(marker('fe')), c_exact) . \
   "keyentry with lines ".reference_style." title 'slopes 1 and 2'" . \
-  (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (marker inside)'" : "") . \
+  (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (its method’s marker inside)'" : "") . \
   (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: error ≥ a flat field’s'" : "") . "; " . \
   "set border; set tics; set grid; "
 draw = "set border; set tics; set grid; set key off; set multiplot title '2D manufactured solutions (plane strain, ν = 0.3): RMS errors at 1/8, 1/4, 3/8, 1/2 period against the cells per side\n" . \
-  "at small amplitude linear and uGIMP give the same numbers (uGIMP wide, under linear; middle row: the ratio, 1 for uGIMP); USL and MUSL nearly coincide (right)'; " . \
+  sprintf("at small amplitude uGIMP gives linear’s numbers (to less than %d·10^{%d}): top row linear and LME γ = 3, middle row each over linear’s (uGIMP the markers on 1); USL and MUSL nearly coincide (right)'; ", \
+  ceil(ugimp_off / 10**floor(log10(ugimp_off))), floor(log10(ugimp_off))) . \
   "set logscale x; set xrange [7:36]; set xtics (8, 12, 16, 24, 32); set xlabel 'cells per side'; " . \
-  panel('small', 'paper', 6, 1, 0.66, 0.91, 'small amplitude: velocity', vlabel) . panel('small', 'paper', 7, 2, 0.66, 0.91, 'small amplitude: stress', slabel) . \
+  panel('small', 'paper_small', 6, 1, 0.66, 0.91, 'small amplitude: velocity, linear and LME γ = 3', vlabel) . panel('small', 'paper_small', 7, 2, 0.66, 0.91, 'small amplitude: stress, linear and LME γ = 3', slabel) . \
   panel('small', 'baselines', 6, 3, 0.66, 0.91, 'small: baselines and LME γ = 3 + NPC, 2x2 ppc, velocity', vlabel) . \
-  ratios(6, 1, 'small amplitude: velocity over linear’s') . ratios(7, 2, 'small amplitude: stress over linear’s') . \
+  ratios(6, 1, 'small amplitude: velocity over linear’s (uGIMP, LME)') . ratios(7, 2, 'small amplitude: stress over linear’s (uGIMP, LME)') . \
   panel('large', 'paper', 6, 1, 0.06, 0.35, 'large amplitude (diagonal stretch): velocity', vlabel) . panel('large', 'paper', 7, 2, 0.06, 0.35, 'large amplitude: stress', slabel) . \
   panel('large', 'baselines', 6, 3, 0.06, 0.35, 'large: baselines and LME γ = 3 + NPC, 2x2 ppc, velocity', vlabel) . \
   legend_slot . "unset multiplot; " . unstrip . "set lmargin -1; set rmargin -1; set bmargin -1; set tmargin -1"
