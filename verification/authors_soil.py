@@ -9,7 +9,10 @@ verification/data/other_codes.csv): nl_partsol_soil_{lme_pce,ugimp_pce,q4_pce,q4
 For each, this project runs SCENE.toml (scenes/soil_block.toml) with `mpm run` under the authors' settings and with
 one of them undone at a time, interpolates its u_y linearly at their sample times and writes, per run, the largest
 |u_y(theirs) - u_y(ours)| over their history and the difference at their last sample, both over their settlement
-there, to OUT.csv, and the table and the verdict (the one rule, verification/verdict_rule.py) to REPORT.md.
+there, to OUT.csv, and the table and the verdict (the one rule, verification/verdict_rule.py) to REPORT.md. Beside
+OUT.csv, for each case's run under their settings, authors_soil_CASE.csv (t, theirs, ours, difference: their u_y, ours
+at their sample times, theirs - ours), the histories the figure authors_soil draws (verification/plots/authors_soil.gp,
+drawn by make_studies.sh; its line in REPORT.md).
 Exits 2 on a missing or unreadable input, 1 when a run of this project fails.
 """
 import bisect
@@ -81,6 +84,15 @@ def differences(theirs, mine):
     return out
 
 
+def keep_history(path, t, u, d):
+    """Their u_y, ours at their sample times and theirs - ours (d), one row per sample of theirs."""
+    with open(path, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["t", "theirs", "ours", "difference"])
+        for row in zip(t, u, d):
+            writer.writerow(["%.12g" % row[0], "%.12g" % row[1], "%.12g" % (row[1] - row[2]), "%.6g" % row[2]])
+
+
 def main():
     if len(sys.argv) != 6:
         sys.exit("usage: authors_soil.py MPM SCENE.toml DATA_DIR OUT.csv REPORT.md")
@@ -100,6 +112,9 @@ def main():
                 except subprocess.CalledProcessError as error:
                     print("authors_soil.py: %s, %s: mpm run failed (%s)" % (label, variant, error), file=sys.stderr)
                     sys.exit(1)
+                if primary:  # the histories under their settings, for the figure
+                    kept = os.path.join(os.path.dirname(os.path.abspath(out_csv)), "authors_soil_%s.csv" % name)
+                    keep_history(kept, t, u, d)
                 largest = max(abs(x) for x in d)
                 halves = [max(abs(x) for x in d[first::2]) for first in (0, 1)]
                 rows.append({"case": name, "label": label, "variant": variant, "undoes": undoes, "primary": primary,
@@ -157,6 +172,11 @@ def write_report(path, rows):
                                                            "their run stopped at %.2f s" % r["their_end_time"])
                                               for r, o in zip(primary, outcomes) if o in ("undecided", "stopped")) or "-",
                                     verdict_rule.verdict_text(outcomes)))
+        out.write("![authors_soil](figures/authors_soil.png)\n\n"
+                  "The figure sets the top particle's settlement of both codes side by side for each case, ours under their "
+                  "settings (the table's first row of each case), and below, theirs minus ours at their sample times; its "
+                  "largest magnitude is the table's largest difference. Their linear (Q4) runs stop near 8.5 s (a cross on "
+                  "the strip above the data), ours was run to their stop.\n\n")
 
 
 main()

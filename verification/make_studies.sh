@@ -23,7 +23,8 @@
 #                (tests/authors_table.sh, verification/authors_code.py; not a study file: fixed cases; figure
 #                authors_code from particle A's histories, data/authors_code/)
 #   authors_soil the authors' code on the soil block, four cases, against this project under their settings and with
-#                each setting undone (verification/authors_soil.py)
+#                each setting undone (verification/authors_soil.py; figure authors_soil from the histories under their
+#                settings, data/authors_soil_*.csv)
 # A hard check or a comparison that fails (a case that does not finish, a result outside its tolerance) makes this
 # script (and `make studies`) fail; so does a number quoted in paper/ or README.md from these runs that differs
 # (check_book_numbers.py --target studies). Each part runs its cases on every core, so the parts run one after the
@@ -77,9 +78,12 @@ authors_code() {  # the table, particle A's histories (data/authors_code/), the 
       draw_figure authors_code.gp "out='$out/figures/authors_code'; histories='$data/authors_code'; theirs='$root/verification/data'"; } \
     >"$out/report/authors_code.log" 2>&1
 }
-authors_soil() {
-  python3 "$root/verification/authors_soil.py" "$bin/mpm" "$root/scenes/soil_block.toml" "$root/verification/data" \
-    "$out/data/authors_soil.csv" "$out/report/61_authors_soil.md" >"$out/report/authors_soil.log" 2>&1
+authors_soil() {  # the runs, the report section, the histories under their settings (data/authors_soil_*.csv),
+  # the figure
+  local plots=$root/verification/plots data=$out/data
+  { python3 "$root/verification/authors_soil.py" "$bin/mpm" "$root/scenes/soil_block.toml" "$root/verification/data" \
+      "$data/authors_soil.csv" "$out/report/61_authors_soil.md" &&
+      draw_figure authors_soil.gp "out='$out/figures/authors_soil'"; } >"$out/report/authors_soil.log" 2>&1
 }
 done_line() { echo "studies: $1 done ($(( $(date +%s) - start )) s)"; }
 

@@ -2,9 +2,10 @@
 # nine cases of tests/authors_table.sh, one column per method (linear + FE, uGIMP + NPC, LME under the authors' beta +
 # NPC; their PCE is our NPC). Rows: the histories at 40 cells and at 640 cells, ours (method_style), theirs
 # (other_code_style; at 640 cells uGIMP also on their grid extended by 4 cells beyond the free end and a row above and
-# below, with markers) and the exact solution at A's reference position h/2 (exact_style); then ours - theirs over
-# v0 = 5 m/s at their sample times on the three meshes (the ramp), on a symmetric log axis (linear within +-1e-5) so
-# that the methods' differences, 1e-4 to 1, read on one scale.
+# below, in reference_style: grey, dotted, no marker) and the exact solution at A's reference position h/2
+# (exact_style); then ours - theirs over v0 = 5 m/s at their sample times on the three meshes (the ramp; against
+# uGIMP's extended grid at 640 cells a solid line in reference_style's grey), on a symmetric log axis (linear within
+# +-1e-5) so that the methods' differences, 1e-4 to 1, read on one scale, with room above 1 for the key.
 # Ours: histories/ours_STEM.csv (t, A.v_x, exact_v_x) and histories/difference_STEM.csv (t, dv_over_v0), written by
 # `tests/authors_table.sh MPM --histories DIR` (ours on the grid that matches theirs, the run of the table's
 # max |dv|/v0); theirs: theirs/nl_partsol_dyka_STEM.csv (t, A.x, A.v_x). STEM is e.g. linear_fe_40, ugimp_pce_640.
@@ -35,14 +36,14 @@ history(m, cells) = sprintf("set title '%s, %s cells'; set xlabel 't (µs)'; set
     '%s' using ($1 * 1e6):3 with linespoints %s pi %d title 'theirs (NL-PartSol)'", \
   method(m), cells, ours(m, cells), exact_style, ours(m, cells), method_style(word(shapes, m), word(integrators, m)), \
   every(cells), their(m, cells), other_code_style, every(cells) + 7).(m == 2 && cells eq '640' ? sprintf(", \
-    '%s' using ($1 * 1e6):3 with linespoints %s ps 1.6 pi %d title 'theirs, their grid extended'", \
-    their(m, '640_margin4_rows1'), other_code_style, every(cells) / 2) : '')
+    '%s' using ($1 * 1e6):3 with lines %s title 'theirs, their grid extended'", \
+    their(m, '640_margin4_rows1'), reference_style) : '')
 gap(m) = sprintf("set title '%s: (ours − theirs) / v_0'; set xlabel 't (µs)'; \
   set ylabel '(v_{ours} − v_{theirs}) / v_0'; set xrange [0:200]; set yrange [%.6g:%.6g]; ", \
-  method(m), symlog(-1.5), symlog(40)).symlog_tics."set key top left horizontal ".(m == 2 ? 'maxrows 2 width -3' : 'maxrows 1 width 0')." samplen 2; \
+  method(m), symlog(-1.5), symlog(3000)).symlog_tics."set key top left horizontal ".(m == 2 ? 'maxrows 2 width -2' : 'maxrows 1 width 0')." samplen 2; \
   plot for [k = 3:1:-1] difference(".m.", word(meshes, k)) using ($1 * 1e6):(symlog($2)) \
     with lines lw 1 lc rgb ramp(k, 3) title word(meshes, k).' cells'".(m == 2 ? sprintf(", \
-    '%s' using ($1 * 1e6):(symlog($2)) with linespoints lw 1 pt 6 pi 700 lc rgb ramp(3, 3) \
+    '%s' using ($1 * 1e6):(symlog($2)) with lines lw 1.5 lc rgb c_reference \
     title '640, grid extended'", difference(m, '640_margin4_rows1')) : '')
 panels = ''
 do for [m = 1:3] { panels = panels.history(m, '40').'; ' }
