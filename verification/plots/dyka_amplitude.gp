@@ -1,20 +1,37 @@
 # Grid crossing isolated on the Dyka bar: RMS of v_A / |v0| against U/h, the free end's largest displacement in
-# cells, at 640 cells, the initial speed swept (data/dyka_amplitude.csv), one panel per integrator (FE, NPC), each
-# shape in its palette style. A run that stopped (ending stopped) or is no better than a flat line (ending failed,
-# its RMS in the key) is drawn on the strip above the data, one row per shape (linear top, LME bottom), in its
-# method's marker under a black cross (stopped) or ring (failed), and named in the key with its amplitudes. The
-# dotted line is the first cell face (U/h = 1/2); each title gives how far apart the three shapes lie below it (with
-# NPC they coincide).
+# cells, at 640 cells, the initial speed swept (data/dyka_amplitude.csv), one column per integrator (FE, NPC), each
+# shape in its palette style. Top row: the RMS; a run that stopped (ending stopped) or is no better than a flat line
+# (ending failed, its RMS in the key) is drawn on the strip above the data, one row per shape (named at the row's
+# left: linear top, LME bottom), in its method's marker under a black cross (stopped) or ring (failed), and named in
+# the key with its amplitudes. The dotted line is the first cell face (U/h = 1/2). Bottom row: linear and uGIMP
+# against LME gamma = 3 with the same integrator (RMS / LME's - 1, in per cent) where both completed, since the
+# shapes lie on each other in the top row (with NPC within a line's width); each title gives how far apart they lie
+# below the first cell face.
 load dir."/common.gp"
-w = 13.3; h = 6
+w = 13.3; h = 9.4
 f = data.'/dyka_amplitude.csv'
 shapes = "linear ugimp lme"
 stats f using (strcol(10) eq 'done' ? $5 : NaN) nooutput
 lo = STATS_min / 1.1; hi = STATS_max * 1.12
 stats f using 3 nooutput
 xlo = STATS_min / 1.4; xhi = STATS_max * 1.4
-row(s) = hi * (hi / lo)**(0.035 * (4 - (s eq 'linear' ? 1 : s eq 'ugimp' ? 2 : 3)))  # the strip's row of a shape
+# The strip, taller than common.gp's (three rows of crosses and rings): its top, a shape's row, the row's name.
+tall = 0.32
+strip_top = hi * (hi / lo)**tall
+order(s) = s eq 'linear' ? 1 : s eq 'ugimp' ? 2 : 3
+row(s) = hi * (hi / lo)**(tall * (4 - order(s)) / 4.0)
+strip = strip_log(lo, hi, '').sprintf("set yrange [%.12g:%.12g]; ", lo, strip_top).\
+  sprintf("set label 91 '%s' at graph 0.01, first %.12g left front; set label 92 '%s' at graph 0.01, first %.12g left front; set label 93 '%s' at graph 0.01, first %.12g left front; ", \
+  shape_name('linear'), row('linear'), shape_name('ugimp'), row('ugimp'), shape_name('lme'), row('lme'))
+unstrip_rows = unstrip."unset label 91; unset label 92; unset label 93; "
 mine(s, i) = strcol(1) eq s && strcol(2) eq i
+
+# LME gamma = 3's RMS per integrator and amplitude (" i:U/h:rms" words), the bottom row's reference.
+lme_list = ''
+addref(i, u, r) = (lme_list = lme_list.sprintf(' %s:%g:%.12g', i, u, r), 1)
+stats f using (strcol(1) eq 'lme' && strcol(10) eq 'done' ? addref(strcol(2), $3, $5) : 0) nooutput
+tag(i, u) = sprintf(' %s:%g:', i, u)
+ref(i, u) = strstrt(lme_list, tag(i, u)) == 0 ? NaN : real(lme_list[strstrt(lme_list, tag(i, u)) + strlen(tag(i, u)):])
 
 # The key entries of the runs on the strip: per method and outcome, its amplitudes (and the failed runs' RMS).
 list = ''; rms_lo = 1e9; rms_hi = 0
@@ -26,13 +43,18 @@ do for [i in "fe npc"] {
     stats f using (mine(s, i) && strcol(10) eq what ? add($3, what eq 'failed' ? real(strcol(5)) : 0) : 0) nooutput
     if (list ne '') {
       entries = entries.sprintf(", keyentry with points %s title '%s: %s at U/h = %s%s'", what eq 'stopped' ? stopped_style : failed_style, \
-        what eq 'stopped' ? 'stopped' : 'failed', shape_name(s), list, what eq 'failed' ? sprintf(' (RMS %.2f-%.2f)', rms_lo, rms_hi) : '')
+        what eq 'stopped' ? 'stopped' : 'failed', method_name(s, i), list, what eq 'failed' ? sprintf(' (RMS %.2f-%.2f)', rms_lo, rms_hi) : '')
     }
   } }
   eval(sprintf("entries_%s = entries", i))
-  # how far apart the three shapes lie below the first cell face (where every run completes)
+  # how far apart the three shapes lie below the first cell face (where every run completes), and the largest
+  # difference of linear and uGIMP from LME there (per cent)
   stats f using (strcol(2) eq i && $3 < 0.5 && strcol(10) eq 'done' ? $5 : NaN) nooutput
   eval(sprintf("apart_%s = %.12g", i, 100 * (STATS_max / STATS_min - 1)))
+  stats f using (strcol(2) eq i && strcol(1) ne 'lme' && $3 < 0.5 && strcol(10) eq 'done' ? abs(100 * ($5 / ref(i, $3) - 1)) : NaN) nooutput
+  eval(sprintf("within_%s = %.12g", i, STATS_max))
+  stats f using (strcol(2) eq i && $3 < 0.5 ? $3 : NaN) nooutput
+  eval(sprintf("below_%s = '%g-%g'", i, STATS_min, STATS_max))
 }
 
 MS = "lw method_lw dt dash(i) pt marker(i) lc rgb colour(s)"
@@ -41,10 +63,22 @@ curves(i) = sprintf("i = '%s'; ", i).\
   "for [s in shapes] f using (mine(s, i) && strcol(10) ne 'done' ? $3 : NaN):(row(s)) with points ps 1.2 pt marker(i) lc rgb colour(s) notitle, ".\
   "f using (strcol(2) eq i && strcol(10) eq 'stopped' ? $3 : NaN):(row(strcol(1))) with points ".stopped_style." notitle, ".\
   "f using (strcol(2) eq i && strcol(10) eq 'failed' ? $3 : NaN):(row(strcol(1))) with points ".failed_style." notitle".value('entries_'.i)
-panel(i) = sprintf("set title '%s, three shapes: below the first cell face they lie within %.1f %% of each other'; ", integrator_name(i), value('apart_'.i)).\
-  strip_log(lo, hi, 'stopped (×), failed (○); rows: linear, uGIMP, LME').curves(i)
-draw = "set multiplot layout 1,2 title 'Grid crossing isolated: the Dyka bar at 640 cells, the initial speed swept, RMS of v_A / |v_0| against U/h (free end displacement / cell)' margins 0.06, 0.99, 0.30, 0.87 spacing 0.07; ".\
-  sprintf("set logscale xy; set xrange [%g:%g]; set xlabel 'U/h (free end displacement / cell)'; set ylabel 'RMS of v_A / |v_0|'; set ytics (0.07, 0.08, 0.09, 0.1, 0.15, 0.2, 0.3, 0.4) nomirror; ", xlo, xhi).\
-  sprintf("set arrow 1 from 0.5, graph 0 to 0.5, first %g nohead %s; set label 1 'first cell face' at 0.5, first %g right rotate by 90 offset -0.6,0 front; ", hi, reference_style, hi / 1.03).\
-  "set key outside below left Left reverse vertical samplen 2.5; ".panel('fe')."; ".panel('npc')."; unset multiplot"
+cell_face = sprintf("set arrow 1 from 0.5, graph 0 to 0.5, first %g nohead %s; set label 1 'first cell face' at 0.5, first %g right rotate by 90 offset -0.6,0 front; ", hi, reference_style, hi / 1.03)
+panel(i) = sprintf("set title '%s: below the first cell face the three shapes lie within %.2f %% of each other%s'; ", integrator_name(i), value('apart_'.i), value('apart_'.i) < 1 ? ",\nwithin the width of a line: drawn apart below" : '').\
+  "set logscale y; set ylabel 'RMS of v_A / |v_0|'; set ytics (0.07, 0.08, 0.09, 0.1, 0.15, 0.2, 0.3, 0.4) nomirror; set format x ''; unset xlabel; ".\
+  strip.cell_face.curves(i)
+difference(i) = sprintf("i = '%s'; ", i).\
+  sprintf("set title '%s: linear and uGIMP against LME γ = 3 + %s; at U/h = %s within %.2f %% of it'; ", integrator_name(i), integrator_name(i), value('below_'.i), value('within_'.i)).\
+  unstrip_rows."unset logscale y; set yrange [*:*]; set ytics auto; set offsets 0, 0, graph 0.1, graph 0.1; set format x '%g'; set xlabel 'U/h (free end displacement / cell)'; ".\
+  "set ylabel 'RMS / LME γ = 3''s - 1 (%)'; set key off; unset label 1; ".\
+  sprintf("set arrow 1 from 0.5, graph 0 to 0.5, graph 1 nohead %s; ", reference_style).\
+  sprintf("plot 0 with lines %s notitle, for [s in 'linear ugimp'] f using (mine(s, i) && strcol(10) eq 'done' && ref(i, $3) == ref(i, $3) ? $3 : NaN):(100 * ($5 / ref(i, $3) - 1)) with linespoints ps 1.2 @MS notitle; set offsets 0, 0, 0, 0", reference_style)
+side(k) = sprintf("set lmargin at screen %s; set rmargin at screen %s; ", word("0.065 0.565", k), word("0.475 0.975", k))
+top_row = "set tmargin at screen 0.895; set bmargin at screen 0.52; "
+bottom_row = "set tmargin at screen 0.445; set bmargin at screen 0.255; "
+key(k) = sprintf("set key at screen %s, screen 0.185 left top Left reverse vertical samplen 2.5; ", word("0.065 0.565", k))
+draw = "set multiplot title 'Grid crossing isolated: the Dyka bar at 640 cells, the initial speed swept, RMS of v_A / |v_0| against U/h (free end displacement / cell)'; ".\
+  sprintf("set logscale x; set xrange [%g:%g]; ", xlo, xhi).\
+  side(1).top_row.key(1).panel('fe')."; ".side(2).top_row.key(2).panel('npc')."; ".\
+  side(1).bottom_row.difference('fe')."; ".side(2).bottom_row.difference('npc')."; unset multiplot"
 load dir."/output.gp"

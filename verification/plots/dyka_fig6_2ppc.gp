@@ -5,10 +5,13 @@
 # right of their mesh so that each shows. Each method in its palette style (colour: shape; dash and marker: integrator).
 # A line joins a method's runs on adjacent meshes (twice as many cells) on the same side of the start of grid crossing
 # (crossing ratio of paper/08_test_cases.md = 1, from the files' crossing_ratio column: 1011 cells at 2 ppc, 2021 at
-# 1 ppc; dotted verticals); elsewhere the runs are points. Runs that stopped (status) and runs no better than a flat
-# line (ending failed) are drawn on the strip above the data (upper row 1 ppc, lower row 2 ppc; FE left of NPC), in
-# their method's marker under a black cross (stopped) or ring (failed), each named in its panel's key. The same runs
-# as data/dyka_fig6_2ppc.csv (written by smooth_suite --fig6-2ppc), read from the files that say which failed.
+# 1 ppc; dotted verticals, named from the top of the data down); elsewhere the runs are points. The figure's title
+# names the meshes of each (1 ppc: the whole sweep; 2 ppc: the 2-ppc study's), and a shape's title the 2-ppc runs of
+# the study's meshes that were not made (from the file: linear and uGIMP + NPC at 2560 cells, a choice of cost). Runs
+# that stopped (status) and runs no better than a flat line (ending failed) are drawn on the strip above the data
+# (upper row 1 ppc, lower row 2 ppc; FE left of NPC), in their method's marker under a black cross (stopped) or ring
+# (failed), each named in its panel's key. The same runs as data/dyka_fig6_2ppc.csv (written by smooth_suite
+# --fig6-2ppc), read from the files that say which failed.
 # gnuplot -e "dir='...'; data='...'; out='...'" dyka_fig6_2ppc.gp
 load dir."/common.gp"
 w = 13.3; h = 10.4
@@ -66,9 +69,25 @@ shape_curves(s) = sprintf("for [i in 'fe npc'] for [p = 1:2] file(p) using (join
 LS = "lw method_lw dt dash(i) lc rgb colour(s)"
 PT = "ps 1.2 pt (p == 1 ? marker(i) : open(marker(i)))"
 PS = PT." lc rgb colour(s)"
-onset_label(n, p) = sprintf("set arrow %d from %g, graph 0 to %g, first %g nohead %s; set label %d '%d ppc: crossing' at first %g, graph 0.03 left rotate by 90 offset -0.6,0 front; ", n, onset(p), onset(p), hi, reference_style, n, p, onset(p))
+onset_label(n, p) = sprintf("set arrow %d from %g, graph 0 to %g, first %g nohead %s; set label %d '%d ppc: crossing' at first %g, first %g right rotate by 90 offset -0.6,0 front; ", n, onset(p), onset(p), hi, reference_style, n, p, onset(p), hi / 1.03)
 onsets = onset_label(1, 2).onset_label(2, 1)
-shape_panel(k, s) = sprintf("s = '%s'; set title '%s: FE and NPC at 1 ppc (filled) and 2 ppc (open)'; ", s, shape_name(s)).strip_log(lo, hi, 'stopped (×), failed (○): 1 ppc above, 2 ppc below').onsets.\
+# The meshes of the 2-ppc study (the paper's shapes), and per shape the 2-ppc runs not made, named in its title.
+meshes2 = ''
+addm(n) = strstrt(meshes2.' ', sprintf(' %d ', n)) > 0 ? 0 : (meshes2 = meshes2.sprintf(' %d', n), 1)
+stats two using ((strcol(1) eq 'linear' || strcol(1) eq 'ugimp' || strcol(1) eq 'lme') ? addm($3) : 0) nooutput
+do for [s in "linear ugimp lme"] {
+  missing = ''
+  do for [i in "fe npc"] { do for [n in meshes2] {
+    stats two using (strcol(1) eq s && strcol(2) eq i && $3 == n ? 1 : 0) nooutput
+    if (STATS_sum == 0) { missing = missing.(missing eq '' ? '' : '; ').sprintf('%s, %s cells', integrator_name(i), n) }
+  } }
+  eval(sprintf("missing_%s = '%s'", s, missing))
+}
+stats one using 3 nooutput prefix "M"   # the 1-ppc sweep's meshes
+join_meshes = ''
+do for [n in meshes2] { join_meshes = join_meshes.(join_meshes eq '' ? '' : ', ').n }
+not_run(s) = value('missing_'.s) eq '' ? '' : sprintf("\nnot run at 2 ppc (a choice of cost): %s", value('missing_'.s))
+shape_panel(k, s) = sprintf("s = '%s'; set title '%s: FE and NPC at 1 ppc (filled) and 2 ppc (open)%s'; ", s, shape_name(s), not_run(s)).strip_log(lo, hi, 'stopped (×), failed (○): 1 ppc above, 2 ppc below').onsets.\
   "plot ".shape_curves(s).strip_entries(k)
 
 # The baselines' panel: each method's points spread to the right of 160 and 1280 cells, one column per method.
@@ -86,7 +105,7 @@ base_panel = "set title base_title; unset arrow; unset label 1; unset label 2; "
   "for [k = 1:words(B)] two using (bmine(word(B, k)) && off(2, 'failed') ? $3 * spread(k) : NaN):(row(2)) with points ".failed_style." notitle, ".\
   "for [k = 1:words(B)] keyentry with points @BP title method_name(s_of(word(B, k)), i_of(word(B, k)))".strip_entries(4)
 
-draw = "set multiplot layout 2,2 title 'Fig. 6 at 1 and 2 particles per cell (ppc): RMS of v_A / |v_0| against the number of cells (CFL 0.5, 200 µs)' margins 0.06, 0.985, 0.07, 0.93 spacing 0.07, 0.1; ".\
+draw = sprintf("set multiplot layout 2,2 title 'Fig. 6 at 1 and 2 particles per cell (ppc): RMS of v_A / |v_0| against the number of cells (CFL 0.5, 200 µs);\n1 ppc: the whole sweep of the Dyka suite, %d-%d cells; 2 ppc: %s cells' margins 0.06, 0.985, 0.07, 0.9 spacing 0.07, 0.11; ", M_min, M_max, join_meshes).\
   "set logscale xy; set xrange [7:4200]; set xlabel 'cells'; set ylabel 'RMS of v_A / |v_0|'; set ytics (0.05, 0.07, 0.1, 0.15, 0.2, 0.3); ".\
   "set key inside bottom left Left reverse samplen 2.5; ".\
   shape_panel(1, 'linear')."; ".shape_panel(2, 'ugimp')."; ".shape_panel(3, 'lme')."; ".base_panel."; unset multiplot"

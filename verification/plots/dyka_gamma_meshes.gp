@@ -1,10 +1,11 @@
 # LME's gamma of Fig. 8 on three meshes (160: no crossing, 640: transition, 2560: crossing), both integrators
 # (data/dyka_gamma_meshes.csv): accuracy (RMS of v_A / |v0|), ringing (total variation of v_A over the exact one's,
 # less 1, on a log axis, so that the predictor-corrector's 1.00-1.18 show) and damping (the plateau mean shortfall /
-# |v0|) against gamma, each with the band of its even and odd samples as error bars. A mesh is a colour of the ramp,
-# an integrator its dash and marker. Runs no better than a flat line (ending failed) and runs that stopped are drawn
-# on the strip above the data of every panel (FE left of its gamma, NPC right), in their mesh's colour and their
-# integrator's marker under a black ring (failed) or cross (stopped), and named in the key (with the failed runs' RMS).
+# |v0|; its title names the curves that lie on 0 within a line's width) against gamma, each with the band of its even
+# and odd samples as error bars. A mesh is a colour of the ramp, an integrator its dash and marker. Runs no better
+# than a flat line (ending failed) and runs that stopped are drawn on the strip above the data of every panel (FE left
+# of its gamma, NPC right), in their mesh's colour and their integrator's marker under a black ring (failed) or cross
+# (stopped), and named in the key (with the failed runs' RMS).
 load dir."/common.gp"
 w = 13.3; h = 5.6
 f = data.'/dyka_gamma_meshes.csv'
@@ -47,6 +48,16 @@ do for [n in meshes] { do for [i in "fe npc"] { do for [what in "failed stopped"
   }
 } } }
 
+# The damping curves that lie on 0 within 2 % of the panel's range (about a line's width): named in its title.
+flat = ''; flat_max = 0
+do for [n in meshes] { do for [i in "fe npc"] {
+  stats f using ($1 == n && strcol(2) eq i && @done ? abs($9) : NaN) nooutput
+  if (STATS_max < 0.02 * (hi(3) - lo(3))) {
+    flat = flat.(flat eq '' ? '' : ', ').sprintf('%s cells %s', n, integrator_name(i)); flat_max = STATS_max > flat_max ? STATS_max : flat_max
+  }
+} }
+damping_title = flat eq '' ? 'damping' : sprintf("damping: %s lie on 0\n(|shortfall| / |v_0| at most %.2g: about a line''s width)", flat, flat_max)
+
 # A panel: a curve per mesh and integrator, the strip.
 MS = "lw method_lw dt dash(i) pt marker(i) lc rgb mesh_colour(n + 0)"
 curves(p) = sprintf("plot for [n in meshes] for [i in 'fe npc'] f using ($1 == n && strcol(2) eq i && @done ? $3 : NaN):(column(%d) - %d):%d with yerrorlines ps 1.1 @MS title sprintf('%%s cells, %%s', n, integrator_name(i)), ", col(p), shift(p), band(p)).\
@@ -61,5 +72,5 @@ draw = "set multiplot layout 1,3 title 'LME: γ on three meshes (CFL 0.5), FE an
   "set key at screen 0.5, screen 0.02 center bottom vertical maxrows 4 Left reverse samplen 2.5; ".\
   panel(1, 'accuracy', 'RMS of v_A / |v_0|')."; set key off; ".\
   panel(2, 'ringing', 'total variation / exact - 1')."; unset logscale y; ".\
-  panel(3, 'damping', 'plateau mean shortfall / |v_0|')."; unset multiplot"
+  panel(3, damping_title, 'plateau mean shortfall / |v_0|')."; unset multiplot"
 load dir."/output.gp"

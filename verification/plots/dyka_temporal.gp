@@ -1,10 +1,10 @@
 # The temporal order alone: every particle's v at the end time against the same method at the finest CFL (16 times
 # finer than the finest compared), RMS over the particles / |v0|, against the CFL at fixed h (columns: 40 and 160
 # cells), each shape and integrator in its palette style (data/dyka_temporal.csv), with slopes 1/2, 1 and 2 for
-# reference (grey, named beside the smallest CFL). The shapes of one integrator lie on each other: the second row draws linear
-# and uGIMP against LME gamma = 3 with the same integrator (difference / LME's - 1, in per cent). A run that stopped
-# or failed (ending not done) would be drawn on the strip above the data, named in the key; the title says when
-# every run completed.
+# reference (grey, named beside the smallest CFL). The shapes of one integrator lie on each other: the second row
+# draws linear and uGIMP against LME gamma = 3 with the same integrator (difference / LME's - 1, in per cent; the
+# range padded so that no point sits on the frame). A run that stopped or failed (ending not done) would be drawn on
+# the strip above the data, named in the key; the title says when every run completed.
 load dir."/common.gp"
 w = 13.3; h = 10
 f = data.'/dyka_temporal.csv'
@@ -45,7 +45,7 @@ strip = off > 0 ? strip_log(lo, hi, 'stopped (×), failed (○)') : unstrip
 strip_points(n) = off == 0 ? '' : sprintf(", f using ($1 == %d && @compared && !(@done) ? $4 : NaN):(strip_y_log(lo, hi)) with points %s notitle", n, stopped_style)
 panel(n) = sprintf("set title '%d cells: difference against CFL %g'; ", n, finest).strip.slope_labels.\
   sprintf("plot for [i in 'fe npc'] for [s in shapes] f using (mine(%d, s, i) && @compared && @done ? $4 : NaN):6 with linespoints ps 1.1 @MS title method_name(s, i), ", n).slopes.strip_points(n).entries
-difference(n) = sprintf("set title '%d cells: linear and uGIMP against LME γ = 3 with the same integrator'; ", n).unstrip."unset label 11; unset label 12; unset label 13; unset logscale y; set yrange [*:*]; set ytics auto; ".\
+difference(n) = sprintf("set title '%d cells: linear and uGIMP against LME γ = 3 with the same integrator'; ", n).unstrip."unset label 11; unset label 12; unset label 13; unset logscale y; set yrange [*:*]; set ytics auto; set offsets 0, 0, graph 0.06, graph 0.06; ".\
   sprintf("plot 0 with lines %s notitle, for [i in 'fe npc'] for [s in 'linear ugimp'] f using (mine(%d, s, i) && @compared && @done ? $4 : NaN):(100 * ($6 / ref(%d, i, $4) - 1)) with linespoints ps 1.1 @MS title method_name(s, i)", reference_style, n, n)
 title = sprintf("Step refined at fixed h: every particle's v at 200 µs against the same method at CFL %g (RMS over the particles / |v_0|)%s", finest, off == 0 ? '; every run completed' : '')
 draw = "set multiplot layout 2,2 title title margins 0.06, 0.76, 0.06, 0.9 spacing 0.07, 0.1; ".\
@@ -53,5 +53,5 @@ draw = "set multiplot layout 2,2 title title margins 0.06, 0.76, 0.06, 0.9 spaci
   "set key at screen 0.775, graph 0.95 left top Left reverse samplen 2.5; ".\
   sprintf("set logscale y; set yrange [%g:%g]; set ylabel 'difference / |v_0|'; set format y '%%g'; ", lo, hi).\
   "unset key; ".panel(40)."; set key; unset ylabel; ".panel(160)."; ".\
-  "unset key; set ylabel 'against LME γ = 3 (%)'; ".difference(40)."; set key; unset ylabel; ".difference(160)."; unset multiplot"
+  "unset key; set ylabel 'difference / LME γ = 3''s - 1 (%)'; ".difference(40)."; set key; unset ylabel; ".difference(160)."; unset multiplot"
 load dir."/output.gp"

@@ -7,13 +7,17 @@
 # the grid-crossing band (2560 cells: a point of its own). Horizontal bars: fastest to slowest of 5 interleaved
 # repeats (40 and 160 cells; for the paper's methods a bar without a marker beside the sweep's point); a baseline's
 # single timing (640, 2560 cells) widened by the largest spread of the 160-cell repeats, the margin the front asks of
-# it. Boxed: the runs on their mesh's error-cost front (column pareto, computed by dyka_suite: no method both more
-# accurate and faster by more than the measured spread). Top axis: where each mesh's runs lie. The runs that stopped
-# (status failed) and those no better than a flat line (the sweep's ending failed) are drawn on the strip above the
-# data at their CPU time, in their method's marker under a black cross (stopped) or ring (failed), each named in
-# the key.
+# it; the title says how wide they are at most (a few per cent: within a marker). Boxed: the runs on their mesh's
+# error-cost front (column pareto, computed by dyka_suite: no method both more accurate and faster by more than the
+# measured spread). Top axis: where each mesh's runs lie. The runs that stopped (status failed) and those no better
+# than a flat line (the sweep's ending failed) are drawn on the strip above the data at their CPU time, in their
+# method's marker under a black cross (stopped) or ring (failed), each named in the key. Under the FE and NPC panels,
+# each method's RMS against LME gamma = 3's with the same integrator on the same mesh (per cent, where both
+# completed before the crossing band), since the methods lie within a marker of each other above; the title names
+# the methods that stay within a line's width of LME there. B-spline 2 equals uGIMP on this bar (1 particle per
+# cell) to a few parts in a million: it is drawn with a larger marker, beneath the others, and the titles say so.
 load dir."/common.gp"
-w = 13.3; h = 7
+w = 13.3; h = 10.5
 sweep = data.'/dyka_sweep.csv'
 baselines = data.'/dyka_baselines.csv'
 lo = 0.05; hi = 0.36
@@ -32,7 +36,8 @@ sweep_shapes = "linear ugimp lme"
 base_methods(p) = p == 1 ? "bspline2_fe bspline3_fe lme0.8_fe lme1.5_fe" : p == 2 ? \
   "bspline2_npc bspline3_npc lme0.8_npc lme1.5_npc" : "linear_usl linear_musl bspline2_usl bspline2_musl"
 MS = "lw method_lw dt dash(i) pt marker(i) lc rgb colour(s)"                  # a sweep method (s, i)
-BS = "lw method_lw dt dash(i_of(m)) pt marker(i_of(m)) lc rgb colour(s_of(m))"  # a baseline m
+BS = "lw method_lw dt dash(i_of(m)) pt marker(i_of(m)) ps size(m) lc rgb colour(s_of(m))"  # a baseline m
+size(m) = m eq 'bspline2_fe' || m eq 'bspline2_npc' ? 2.0 : 1.1   # B-spline 2, which equals uGIMP here, larger and beneath
 BL = "lw method_lw dt dash(i_of(m)) lc rgb colour(s_of(m))"                     # its line
 
 # The runs with no value, one key entry each (built here from the data).
@@ -62,12 +67,40 @@ px = NaN; py = NaN; x0 = NaN; y0 = NaN
 seg_reset(r) = (r == 0 ? (px = NaN, py = NaN) : 0)
 seg(k, x, y) = (seg_reset(column(0)), k ? (x0 = px, y0 = py, px = x, py = y, x0) : NaN)
 
+sweep_ok_ = "strcol(12) eq 'ok' && strcol(22) ne 'failed' && $3 < crossing"
+# LME gamma = 3's RMS per integrator and mesh (" i:cells:rms" words, the sweep's completed runs before the
+# crossing band), the reference of the panels under FE and NPC; ratio(i, n, r) is a run's RMS r against it (%).
+lme_list = ''
+addref(i, n, r) = (lme_list = lme_list.sprintf(' %s:%d:%.12g', i, n, r), 1)
+stats sweep using (strcol(1) eq 'lme' && strcol(12) eq 'ok' && strcol(22) eq 'done' && $3 < crossing ? addref(strcol(2), $3, $8) : 0) nooutput
+tag(i, n) = sprintf(' %s:%d:', i, n)
+ref(i, n) = strstrt(lme_list, tag(i, n)) == 0 ? NaN : real(lme_list[strstrt(lme_list, tag(i, n)) + strlen(tag(i, n)):])
+ratio(i, n, r) = 100 * (r / ref(i, n) - 1)
+# Per integrator: how far linear, uGIMP and B-spline 2 lie from LME from 40 cells on (the largest, per cent), and
+# how far B-spline 2 lies from uGIMP (relative, on the baselines' meshes).
+do for [i in "fe npc"] {
+  stats sweep using (strcol(2) eq i && (strcol(1) eq 'linear' || strcol(1) eq 'ugimp') && @sweep_ok_ && $3 >= 40 ? abs(ratio(i, $3, $8)) : NaN) nooutput prefix "W"
+  within = W_max
+  stats baselines using (strcol(1) eq 'bspline2_'.i && strcol(6) eq 'ok' && $2 >= 40 ? abs(ratio(i, $2, $3)) : NaN) nooutput prefix "W"
+  eval(sprintf("within_%s = %.12g", i, W_max > within ? W_max : within))
+  gap = 0
+  do for [n in "40 160 640"] {
+    stats baselines using (strcol(1) eq 'bspline2_'.i && $2 == n ? $3 : NaN) nooutput prefix "B"
+    stats baselines using (strcol(1) eq 'ugimp_'.i && $2 == n ? $3 : NaN) nooutput prefix "U"
+    gap = abs(B_max / U_max - 1) > gap ? abs(B_max / U_max - 1) : gap
+  }
+  eval(sprintf("gap_%s = %.12g", i, gap))
+}
+# The largest spread of the repeated timings (per cent): the horizontal bars.
+stats baselines using ($11 > 1 && strcol(6) eq 'ok' ? 100 * ($10 / $9 - 1) : NaN) nooutput prefix "R"
+bars = R_max
+
 # The curves of a panel.
 sweep_ok = "strcol(12) eq 'ok' && strcol(22) ne 'failed'"
 sweep_curves(p) = sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (strcol(1) eq s && strcol(2) eq i && %s && $3 < crossing ? $17 : NaN):8 with linespoints ps 1.1 @MS notitle, ", integrators(p), sweep_ok).\
   sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (strcol(1) eq s && strcol(2) eq i && %s && $3 >= crossing ? $17 : NaN):8 with points ps 1.1 @MS notitle, ", integrators(p), sweep_ok).\
   sprintf("for [s in 'linear ugimp lme3'] for [i in '%s'] baselines using (strcol(1) eq s.'_'.i && strcol(6) eq 'ok' && $11 > 1 ? $8 : NaN):3:9:10 with xerrorbars ps 0 lw 1.5 lc rgb colour(s) notitle, ", integrators(p))
-base_curves(p) = sprintf("for [m in '%s'] baselines using (strcol(1) eq m && strcol(6) eq 'ok' ? $8 : NaN):3:9:10 with xerrorbars ps 1.1 @BS notitle, ", base_methods(p)).\
+base_curves(p) = sprintf("for [m in '%s'] baselines using (strcol(1) eq m && strcol(6) eq 'ok' ? $8 : NaN):3:9:10 with xerrorbars @BS notitle, ", base_methods(p)).\
   sprintf("for [m in '%s'] baselines using (seg(strcol(1) eq m && strcol(6) eq 'ok' && $2 < crossing, $8, $3)):(y0):($8 - x0):($3 - y0) with vectors nohead @BL notitle, ", base_methods(p))
 front(p) = sprintf("baselines using (strcol(6) eq 'ok' && $7 == 1 && in_panel(i_of(strcol(1)), %d) ? $8 : NaN):3 with points pt 4 ps 2.6 lw 1.5 lc rgb c_exact notitle, ", p)
 # On the strip: the method's marker in its colour, the black cross or ring over it.
@@ -85,7 +118,7 @@ do for [p = 1:3] {
   } }
   do for [m in base_methods(p)] {
     stats baselines using (strcol(1) eq m ? $2 : NaN) nooutput
-    entries = entries.sprintf(", keyentry with linespoints ps 1.1 %s title '%s (%d-%d cells)'", method_style(s_of(m), i_of(m)), method_name(s_of(m), i_of(m)), STATS_min, STATS_max)
+    entries = entries.sprintf(", keyentry with linespoints ps %g %s title '%s (%d-%d cells)%s'", size(m), method_style(s_of(m), i_of(m)), method_name(s_of(m), i_of(m)), STATS_min, STATS_max, size(m) > 1.1 ? ', larger: equals uGIMP' : '')
   }
   eval(sprintf("method_entries%d = entries", p))
 }
@@ -94,12 +127,29 @@ keys(p) = (p < 3 ? '' : ", keyentry with lines lw 1 lc rgb c_context title 'the 
 context = "for [s in sweep_shapes] for [i in 'fe npc'] sweep using (strcol(1) eq s && strcol(2) eq i && ".sweep_ok." && $3 < crossing ? $17 : NaN):8 with lines lw 1 lc rgb c_context notitle, "
 panel_title(p) = p == 1 ? 'forward Euler (FE)' : p == 2 ? 'predictor-corrector (NPC)' : 'FE, stress updated last (USL) or modified (MUSL)'
 panel(p) = sprintf("set title '%s' offset 0,0.6; ", panel_title(p)).strip_log(lo, hi, 'no value: stopped (×), failed (○)').\
-  "plot ".(p == 3 ? context : sweep_curves(p)).base_curves(p).front(p).strip_points(p).keys(p)
+  "plot ".(p == 3 ? context : '').base_curves(p).(p == 3 ? '' : sweep_curves(p)).front(p).strip_points(p).keys(p)
 
-draw = "set multiplot layout 1,3 title 'Speed against accuracy on the Dyka bar (CFL 0.5): RMS of v_A / |v_0| against the CPU time of each run (one thread), one panel per integrator' margins 0.05, 0.99, 0.34, 0.84 spacing 0.045; ".\
-  "set logscale xy; set xrange [1e-4:20]; set x2range [1e-4:20]; set logscale x2; set xtics nomirror; set format x '10^{%L}'; ".\
+# The panels under FE and NPC: each run's RMS against LME gamma = 3's on its mesh, baselines first (B-spline 2
+# beneath), LME itself on 0.
+ratio_title(p) = (i = integrators(p), sprintf("%s: RMS against LME γ = 3 + %s on the same mesh%s\nB-spline 2 + %s equals uGIMP + %s to %.0e: drawn larger", \
+  integrator_name(i), integrator_name(i), value('within_'.i) < 0.5 ? sprintf(";\nfrom 40 cells linear, uGIMP, B-spline 2 within %.2f %% of it", value('within_'.i)) : '', \
+  integrator_name(i), integrator_name(i), value('gap_'.i)))
+ratio_curves(p) = sprintf("i = '%s'; B = '%s'; ", integrators(p), base_methods(p)).\
+  "plot for [m in B] baselines using (strcol(1) eq m && strcol(6) eq 'ok' && ref(i, $2) == ref(i, $2) ? $8 : NaN):(ratio(i, $2, $3)) with points @BS notitle, ".\
+  "for [m in B] baselines using (seg(strcol(1) eq m && strcol(6) eq 'ok' && ref(i, $2) == ref(i, $2), $8, ratio(i, $2, $3))):(y0):($8 - x0):(ratio(i, $2, $3) - y0) with vectors nohead @BL notitle, ".\
+  "for [s in sweep_shapes] sweep using (strcol(1) eq s && strcol(2) eq i && @sweep_ok_ && ref(i, $3) == ref(i, $3) ? $17 : NaN):(ratio(i, $3, $8)) with linespoints ps 1.1 @MS notitle"
+ratio_panel(p) = sprintf("set title '%s' offset 0,0; ", ratio_title(p)).unstrip."unset x2tics; unset x2label; set x2tics; unset x2tics; unset logscale y; set yrange [*:*]; set ytics auto; set offsets 0, 0, graph 0.06, graph 0.06; ".\
+  "set ylabel 'RMS / LME γ = 3''s - 1 (%)'; set key off; ".ratio_curves(p)."; set offsets 0, 0, 0, 0"
+
+col(k) = sprintf("set lmargin at screen %s; set rmargin at screen %s; ", word("0.055 0.385 0.715", k), word("0.31 0.64 0.97", k))
+top_row = "set tmargin at screen 0.87; set bmargin at screen 0.55; "
+ratio_row = "set tmargin at screen 0.43; set bmargin at screen 0.25; "
+key_at(k) = sprintf("set key at screen %s, screen %s left top Left reverse vertical samplen 2.5 noenhanced; ", word("0.055 0.385 0.715", k), k == 3 ? "0.43" : "0.18")
+axes = "set logscale xy; set xrange [1e-4:20]; set x2range [1e-4:20]; set logscale x2; set xtics nomirror; set format x '10^{%L}'; ".\
   sprintf("set x2tics (%s) nomirror; set x2label 'cells (each mesh''s runs lie below its number)' offset 0,-0.4; ", mesh_tics).\
-  "set xlabel 'CPU time per run (s)'; set ytics (0.05, 0.07, 0.1, 0.15, 0.2, 0.3) nomirror; set ylabel 'RMS of v_A / |v_0|'; ".\
-  "set key outside below left Left reverse vertical maxrows 12 samplen 2.5 width -6 noenhanced; ".\
-  panel(1)."; unset ylabel; ".panel(2)."; ".panel(3)."; unset multiplot"
+  "set xlabel 'CPU time per run (s)'; set ytics (0.05, 0.07, 0.1, 0.15, 0.2, 0.3) nomirror; set ylabel 'RMS of v_A / |v_0|'; "
+title = sprintf("Speed against accuracy on the Dyka bar (CFL 0.5): RMS of v_A / |v_0| against the CPU time of each run (one thread), one panel per integrator;\nhorizontal bars: fastest to slowest of the repeated timings, at most %.1f %% apart, within a marker at this scale", bars)
+draw = "set multiplot title title; ".\
+  axes.col(1).top_row.key_at(1).panel(1)."; ".axes.col(2).top_row.key_at(2).panel(2)."; ".axes.col(3).top_row.key_at(3).panel(3)."; ".\
+  col(1).ratio_row.ratio_panel(1)."; ".col(2).ratio_row.ratio_panel(2)."; unset multiplot"
 load dir."/output.gp"
