@@ -36,5 +36,19 @@ expect 1 empty_entry
 grep -q "legend entries with no data: \"stopped\"" "$work/empty_entry.log" ||
   { echo "FAIL: the empty legend entry is not named"; cat "$work/empty_entry.log"; failures=$((failures + 1)); }
 expect 1 wide
+# tests/figure_style.py on a tree with one figure script that sets a colour and a small font of its own, and one
+# shell script that runs gnuplot itself: each offence named, exit 1.
+mkdir -p "$work/tree/verification/plots"
+cp "$work/plots/good.gp" "$work/tree/verification/plots/"
+printf 'load dir."/common.gp"\nw = 6; h = 3\ndraw = "set key font \x27,8\x27; plot x lc rgb \x27#123456\x27"\nload dir."/output.gp"\n' \
+  >"$work/tree/verification/plots/own.gp"
+printf 'gnuplot -e "x=1" own.gp\n' >"$work/tree/verification/own.sh"
+python3 "$root/tests/figure_style.py" "$work/tree" >"$work/style.log"
+style=$?
+for offence in "own.gp:3: a colour of its own (#123456)" "own.gp:3: font size 8 below" "own.sh:1: runs gnuplot itself"; do
+  grep -qF "$offence" "$work/style.log" || { echo "FAIL: figure_style.py missed: $offence"; failures=$((failures + 1)); }
+done
+grep -q "good.gp" "$work/style.log" && { echo "FAIL: figure_style.py faults the good script"; failures=$((failures + 1)); }
+[[ $style == 1 ]] || { echo "FAIL: figure_style.py returned $style on offences"; failures=$((failures + 1)); }
 echo "figure_wrapper: $failures failure(s)"
 exit $((failures > 0))
