@@ -102,7 +102,7 @@ sweep_curves(p) = sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (
   sprintf("for [s in 'linear ugimp lme3'] for [i in '%s'] baselines using (strcol(1) eq s.'_'.i && strcol(6) eq 'ok' && $11 > 1 ? $8 : NaN):3:9:10 with xerrorbars ps 0 lw 1.5 lc rgb colour(s) notitle, ", integrators(p))
 base_curves(p) = sprintf("for [m in '%s'] baselines using (strcol(1) eq m && strcol(6) eq 'ok' ? $8 : NaN):3:9:10 with xerrorbars @BS notitle, ", base_methods(p)).\
   sprintf("for [m in '%s'] baselines using (seg(strcol(1) eq m && strcol(6) eq 'ok' && $2 < crossing, $8, $3)):(y0):($8 - x0):($3 - y0) with vectors nohead @BL notitle, ", base_methods(p))
-front(p) = sprintf("baselines using (strcol(6) eq 'ok' && $7 == 1 && in_panel(i_of(strcol(1)), %d) ? $8 : NaN):3 with points pt 4 ps 2.6 lw 1.5 lc rgb c_exact notitle, ", p)
+front(p) = sprintf("baselines using (strcol(6) eq 'ok' && $7 == 1 && in_panel(i_of(strcol(1)), %d) ? $8 : NaN):3 with points ".front_style." notitle, ", p)
 # On the strip: the method's marker in its colour, the black cross or ring over it.
 strip_points(p) = sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (strcol(1) eq s && strcol(2) eq i && (sweep_off(%d, 'stopped') || sweep_off(%d, 'failed')) ? $17 : NaN):(top) with points ps 1.1 pt marker(i) lc rgb colour(s) notitle, ", integrators(p), p, p).\
   sprintf("for [m in '%s'] baselines using (strcol(1) eq m && base_off(%d) ? $8 : NaN):(top) with points ps 1.1 pt marker(i_of(m)) lc rgb colour(s_of(m)) notitle, ", base_methods(p), p).\
@@ -123,7 +123,7 @@ do for [p = 1:3] {
   eval(sprintf("method_entries%d = entries", p))
 }
 keys(p) = (p < 3 ? '' : ", keyentry with lines lw 1 lc rgb c_context title 'the paper''s methods (left panels)'").value(sprintf("method_entries%d", p)).\
-  ", keyentry with points pt 4 ps 2.6 lw 1.5 lc rgb c_exact title 'boxed: on its mesh''s error-cost front'".value(sprintf("strip_entries%d", p))
+  ", keyentry with points ".front_style." title 'boxed: on its mesh''s error-cost front'".value(sprintf("strip_entries%d", p))
 context = "for [s in sweep_shapes] for [i in 'fe npc'] sweep using (strcol(1) eq s && strcol(2) eq i && ".sweep_ok." && $3 < crossing ? $17 : NaN):8 with lines lw 1 lc rgb c_context notitle, "
 panel_title(p) = p == 1 ? 'forward Euler (FE)' : p == 2 ? 'predictor-corrector (NPC)' : 'FE, stress updated last (USL) or modified (MUSL)'
 panel(p) = sprintf("set title '%s' offset 0,0.6; ", panel_title(p)).strip_log(lo, hi, 'no value: stopped (×), failed (○)').\

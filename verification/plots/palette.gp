@@ -8,7 +8,10 @@
 #   - a method is its shape's colour with its integrator's dash and marker: method_style(SHAPE, INTEGRATOR);
 #   - the exact solution is black and thick (exact_style), a second reference (the finite-strain static column, a
 #     theory's slope) grey and dotted (reference_style), another code's run grey and dash-dotted (other_code_style);
-#   - a sequence (gamma, meshes, amplitudes) takes its colours from one ramp, ramp(K, N);
+#   - a sequence (gamma, meshes, amplitudes) takes its colours from one ramp, ramp(K, N): where gamma is what a figure
+#     varies (Figs. 4 and 8, gamma on three meshes), LME's gammas are the ramp, not the colours of lme0.8 and lme1.5,
+#     which are LME at small gamma as one of today's baselines beside other methods;
+#   - another code's run is grey, dash-dotted, with an asterisk (other_code_style), a marker no integrator has;
 #   - a run the solver stopped is a black cross, a run no better than a flat line (failed) a black ring, both on the
 #     strip above the data (strip_log, strip_linear in common.gp), never at a height a value could have.
 # The keys are the method keys of the data files: linear, ugimp, lme (or lme3: gamma = 3), lme_authors (LME under
@@ -47,7 +50,7 @@ c_exact = '#000000'
 exact_style = "lw 2 dt 1 lc rgb '#000000'"
 c_reference = '#7f7f7f'
 reference_style = "lw 1.5 dt 3 lc rgb '#7f7f7f'"
-other_code_style = "lw 1.5 dt 4 pt 6 lc rgb '#7f7f7f'"
+other_code_style = "lw 1.5 dt 4 pt 3 lc rgb '#7f7f7f'"
 c_context = '#c8c8c8'
 
 # Sequences: one ramp (viridis, its palest end left out so that every step shows on white; the steps spaced so that
@@ -58,6 +61,9 @@ ramp(k, n) = word(ramp_colours, n <= 1 ? 1 : 1 + int(0.5 + (k - 1) * (words(ramp
 # Outcomes: stopped by the solver, failed (no better than a flat line), on the strip above the data.
 stopped_style = "pt 2 ps 1.8 lw 2 lc rgb '#000000'"
 failed_style = "pt 6 ps 2.0 lw 1.5 lc rgb '#000000'"
+# Annotations, black and larger than any method's marker (the only other open shapes besides 2 ppc): a run on its
+# mesh's error-cost front (work-precision chart).
+front_style = "pt 4 ps 2.6 lw 1.5 lc rgb '#000000'"
 c_strip = '#ececec'
 
 # Backgrounds: the grid-crossing bands of the Dyka bar (negligible, transition, crossing), the grid.
