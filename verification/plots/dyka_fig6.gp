@@ -7,12 +7,16 @@
 # one no better than a flat line (failed, ○) is drawn on the strip above the data (common.gp), its method's marker in
 # its colour inside the black cross or ring, FE left of NPC, and named (method and mesh) on the strip.
 # LME's panel also holds its runs under the authors' β (lme_authors colour, the integrator's filled markers, drawn
-# smaller and thinner on top of γ = 3's so that both show where they meet).
+# smaller and thinner on top of γ = 3's so that both show where they meet). Under each panel, a difference panel of the
+# runs that finished under both: linear and uGIMP FE's RMS over NPC's − 1 in % (the shape's colour, FE's dash and
+# marker), where the sign changes named in the title; LME the authors' β's RMS over γ = 3's − 1 in %, per integrator
+# (lme_authors colour, the integrator's dash and marker), the meshes from which NPC's two coincide (within 1 %) and
+# their largest difference there named in the title, computed from the CSVs.
 # Reads dyka_sweep.csv and dyka_sweep_authors.csv (column 1 shape, 2 integrator, 3 cells, 8 rms_over_v0, 22 ending:
 # done, failed or stopped) and dyka_orders.csv (shape, integrator, band, order, ..., standard_error).
 # gnuplot -e "dir='...'; data='...'; out='...'; orders='.../dyka_orders.csv'" dyka_fig6.gp
 load dir."/common.gp"
-w = 12.5; h = 5.2
+w = 12.5; h = 7
 sweep = data.'/dyka_sweep.csv'; authors = data.'/dyka_sweep_authors.csv'
 band1 = 0.1 / (3.298e-5 / (0.5 * 0.1333)); band2 = 1.0 / (3.298e-5 / (0.5 * 0.1333))
 xlo = 7; xhi = 3600
@@ -68,21 +72,71 @@ panel(shape, title, more) = "set title \"".title."\"; ".strip_log(lo, hi, strip_
   "set label 2 '".orders_text(shape, 'npc')."' at graph 0.03, graph 0.05 front; ". \
   "plot ".curves(sweep, shape).more
 
+# The difference panels: "cells,percent" of the runs of (shape a, integrator a) in file a and (shape b, integrator b)
+# in file b that both ended `done`, a's RMS over b's − 1 in %, by mesh.
+apart_runs(fa, sa, ia, fb, sb, ib) = sprintf("awk -F, 'FNR == NR {if ($1 == \"%s\" && $2 == \"%s\" && $22 == \"done\") b[$3] = $8; next} $1 == \"%s\" && $2 == \"%s\" && $22 == \"done\" && ($3 in b) {print $3 \",\" ($8 / b[$3] - 1) * 100}' %s %s", \
+  sb, ib, sa, ia, fb, fa)
+fe_npc(shape) = apart_runs(sweep, shape, 'fe', sweep, shape, 'npc')
+authors_lme(i) = apart_runs(authors, 'lme_authors', i, sweep, 'lme', i)
+# "L C M" of a difference: L the largest |difference|, C the smallest mesh from which every difference is within 1 %
+# and M the largest there (C and M "-" where the finest mesh's is not within 1 %).
+coincide(runs) = system(runs." | awk -F, '{c[NR] = $1; d[NR] = $2 < 0 ? -$2 : $2} END {m = 0; l = 0; from = \"-\"; on = 1; for (k = NR; k >= 1; k--) {if (d[k] > l) l = d[k]; if (d[k] > 1) on = 0; if (on) {if (d[k] > m) m = d[k]; from = c[k]}} printf \"%.2g %s %s\", l, from, (from == \"-\" ? \"-\" : sprintf(\"%.2g\", m))}'")
+# Where a difference changes sign: "between A and B cells" (the first change), or "above 0 on every mesh".
+sign_change(runs) = system(runs." | awk -F, 'NR > 1 && ($2 > 0) != (p > 0) && t == \"\" {t = \"changes sign between \" c \" and \" $1 \" cells\"} {c = $1; p = $2} END {print (t != \"\" ? t : (p > 0 ? \"above 0 on every mesh\" : \"below 0 on every mesh\"))}'")
+# The range of a difference panel (all its curves), widened by a tenth.
+diff_lo = 0; diff_hi = 0
+widen(runs) = system(runs." | awk -F, 'BEGIN {lo = 0; hi = 0} {if ($2 < lo) lo = $2; if ($2 > hi) hi = $2} END {print lo, hi}'")
+do for [r in 'linear ugimp'] { span = widen(fe_npc(r)); diff_lo = (word(span, 1) + 0 < diff_lo ? word(span, 1) + 0 : diff_lo); diff_hi = (word(span, 2) + 0 > diff_hi ? word(span, 2) + 0 : diff_hi) }
+pad = 0.1 * (diff_hi - diff_lo); diff_lo = diff_lo - pad; diff_hi = diff_hi + pad
+zero = sprintf("0 with lines lw 1 lc rgb '%s' notitle", c_context)
+# A difference curve, `runs` the expression (text) of its command (no key entry: its style is the method's of the
+# key, its quantity the y label's).
+diff_curve(runs, style) = sprintf("('< '.%s) using 1:2 with linespoints %s notitle", runs, style)
+
+# Panels' places (screen fractions): three columns, each a panel over its difference panel; the key below.
+column_left(k) = 0.055 + (k - 1) * 0.32
+place(k, bottom, top) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set bmargin at screen %g; set tmargin at screen %g; ", \
+  column_left(k), column_left(k) + 0.27, bottom, top)
+top_panel(k) = place(k, 0.43, 0.82)."set xlabel ''; set format x ''; set logscale y; ".sprintf("set ytics (%s); ", yticks)
+diff_panel(k) = place(k, 0.2, 0.41).unstrip."unset title; unset label 1; unset label 2; unset logscale y; set ytics autofreq; set format x '%g'; set xlabel 'cells'; ". \
+  "unset object 1; unset object 2; unset object 3; ". \
+  sprintf("set object 4 rect from %g, graph 0 to %g, graph 1 behind fc rgb '%s' fs solid noborder; ", xlo, band1, c_band1). \
+  sprintf("set object 5 rect from %g, graph 0 to %g, graph 1 behind fc rgb '%s' fs solid noborder; ", band1, band2, c_band2). \
+  sprintf("set object 6 rect from %g, graph 0 to %g, graph 1 behind fc rgb '%s' fs solid noborder; ", band2, xhi, c_band3)
+back_to_top = "unset object 4; unset object 5; unset object 6; "
+shape_diff(k, shape) = diff_panel(k).sprintf("set yrange [%g:%g]; set ylabel 'FE / NPC − 1 (%%)'; ", diff_lo, diff_hi). \
+  "plot ".diff_curve("fe_npc('".shape."')", method_style(shape, 'fe')).", ".zero
+
 # make figures runs the authors' β to 640 cells (every mesh in make studies): the panel's title says where its
 # curves end (authors_last, the largest mesh in dyka_sweep_authors.csv).
 stats authors using 3 nooutput
 authors_last = int(STATS_max)
-lme_title = sprintf("LME: γ = 3 and the authors’ β (to %d cells)\\nNPC under both β coincide from 40 cells", authors_last)
+npc_same = coincide(authors_lme('npc'))
+fe_same = coincide(authors_lme('fe'))
+same_text(c) = word(c, 2) eq '-' ? 'apart on every mesh' : sprintf('within %s %% from %s cells', word(c, 3), word(c, 2))
+key_text(i, c) = sprintf('%s: |Δ| ≤ %s %%', integrator_name(i), word(c, 1)). \
+  (word(c, 2) eq '-' || word(c, 2) + 0 == authors_last ? '' : sprintf('; ≤ %s %% from %s cells', word(c, 3), word(c, 2)))
+lme_title = sprintf("LME: γ = 3 and the authors’ β (to %d cells)\\nNPC under both β %s (below)", authors_last, same_text(npc_same))
 lme_more = ", ".curves(authors, 'lme_authors')
+# Its range leaves the top right free for the key (the differences there are small).
+span = widen("{ ".authors_lme('fe')."; ".authors_lme('npc')."; }")
+lme_range = sprintf("set yrange [%g:%g]; ", word(span, 1) - 1, word(span, 2) * 1.8)
+lme_diff = diff_panel(3).lme_range."set ylabel 'authors’ β / γ = 3 − 1 (%)'; set key inside top right Left reverse samplen 3 width -9; ". \
+  "plot ".sprintf("('< '.authors_lme('fe')) using 1:2 with linespoints %s title '%s', ", style('lme_authors', 'fe'), key_text('fe', fe_same)). \
+  sprintf("('< '.authors_lme('npc')) using 1:2 with linespoints %s title '%s', ", style('lme_authors', 'npc'), key_text('npc', npc_same)).zero
+shape_title(shape) = shape_name(shape)."\\nFE / NPC − 1 ".sign_change(fe_npc(shape))." (below)"
+# The key of the method curves, below the panels.
+method_key = "set key at graph 0.5, screen 0.08 center top maxrows 2 Left reverse samplen 3 width 1 noopaque; "
 
 fig_title = "Fig. 6: RMS of v_A (Eq. 43) / |v_0| against the number of cells (CFL 0.5); shading: grid-crossing band "
 fig_title = fig_title."(light: negligible, middle: transition, dark: crossing)\nPrinted: fitted order ± s.e. per band "
 fig_title = fig_title."(negligible | transition | crossing). Strip above the data: × stopped by the solver, ○ failed "
-fig_title = fig_title."(RMS no smaller than a flat line's),\nthe method's marker inside, FE left of NPC. FE and NPC meet near 320 cells: "
-fig_title = fig_title."FE's markers are drawn larger, under NPC's; the authors' β smaller, over γ = 3's"
-draw = "set multiplot layout 1,3 title fig_title margins 0.055, 0.965, 0.24, 0.8 spacing 0.05, 0.1; ". \
-  sprintf("set logscale xy; set xrange [%g:%g]; set ytics (%s); ", xlo, xhi, yticks). \
-  "set xlabel 'cells'; set ylabel 'RMS / |v_0|'; set key at graph 0.5, screen 0.1 center top maxrows 2 Left reverse samplen 3 width 1; ". \
-  panel('linear', 'linear (Q4)', '')."; set ylabel ''; ".panel('ugimp', 'uGIMP', '')."; ". \
-  panel('lme', lme_title, lme_more)."; unset multiplot"
+fig_title = fig_title."(RMS no smaller than a flat line's),\nthe method's marker inside, FE left of NPC. FE's markers are drawn "
+fig_title = fig_title."larger, under NPC's; the authors' β smaller, over γ = 3's.\nBelow, in %, for the runs that finished under both: "
+fig_title = fig_title."FE's RMS over NPC's − 1 (linear, uGIMP); the authors' β's RMS over γ = 3's − 1, per integrator (LME)"
+draw = "set multiplot title fig_title; ". \
+  sprintf("set logscale x; set xrange [%g:%g]; ", xlo, xhi). \
+  "set ylabel 'RMS / |v_0|'; ".method_key.top_panel(1).panel('linear', shape_title('linear'), '')."; ".shape_diff(1, 'linear')."; ". \
+  back_to_top."set ylabel ''; ".method_key.top_panel(2).panel('ugimp', shape_title('ugimp'), '')."; ".shape_diff(2, 'ugimp')."; ". \
+  back_to_top."set ylabel ''; ".method_key.top_panel(3).panel('lme', lme_title, lme_more)."; ".lme_diff."; unset multiplot"
 load dir."/output.gp"
