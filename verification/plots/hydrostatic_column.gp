@@ -6,11 +6,13 @@
 # rho g (H - y) near the base (y < 0.03 m), the one stress of each cell (that of its mid-height) against the straight
 # line, USF and USL, with its key. Bottom, from
 # data/hydrostatic_column.csv (written by verification/hydrostatic_column.py): (c) the base stress's gap to rho g H
-# against h, ours and CB-Geo's, beside the two terms that explain it (the half-cell rho g h/2, and that less the bottom
-# cell's compression); (d) ours against CB-Geo and against that explained term, relative, with the hard check's
-# 0.01 %, each comparison named by a label with an arrow.
+# against h, ours and CB-Geo's (its asterisk, larger than ours' markers, under them), beside the two terms that
+# explain it (the half-cell rho g h/2, dotted, and that less the bottom cell's compression, a wide grey line under
+# ours: it coincides with ours); (d) ours against CB-Geo and against that explained term, relative, with the hard
+# check's 0.01 %, each comparison named by a label with an arrow.
 # A cell size is a step of the ramp (coarse dark); USF takes FE's dash and marker, USL USL's; bottom, ours in
-# linear's colour (method_style), CB-Geo in other_code_style, the explained terms in reference_style.
+# linear's colour (method_style), CB-Geo in other_code_style (its asterisk), the explained terms in the reference's
+# grey (reference_style; the compression term wide and solid, no marker).
 #   gnuplot -e "dir='verification/plots'; data='results/studies/data'; out='...'" hydrostatic_column.gp
 load dir."/common.gp"
 set datafile missing NaN   # a row another curve's filter leaves out (NaN) is skipped: each curve's line goes on
@@ -65,17 +67,17 @@ split_panel = fresh.place(0.39, 0.55).sprintf("set title \"USF − USL of every 
     using (1e3 * split[first[k] + int(i)]):(height[first[k] + int(i)]) with lines lw 1.5 lc rgb ramp(k, 3)"
 difference = fresh.place(0.62, 0.98)."set title \"(b) σ_{yy} + ρ g (H − y) near the base: one stress per cell, " \
   ."its mid-height's;\\nUSL lies under USF (USF − USL: left of this panel)\"; set xlabel 'σ_{yy} + ρ g (H − y) (Pa)'; set ylabel 'height y (m)'; \
-  set xrange [-100:190]; set xtics -100, 50, 100; set yrange [0:0.03]; set key top right; \
+  set xrange [-100:225]; set xtics -100, 50, 100; set yrange [0:0.03]; set key top right samplen 2; \
   plot for [k = 1:3] for [u in updates] profiles using (is_case(k, u) ? $5 - $6 : NaN):4 with linespoints ".mesh_style." pi 10 \
     title mesh_name(k, u)"
 unplace = "set lmargin; set rmargin; set bmargin; set tmargin; "
 gap = fresh.unplace."set origin 0, 0; set size 0.5, 0.47; ".sprintf("set title '(c) the base: gap to ρ g H = %.1f Pa; ours, CB-Geo and the explained term coincide (d)'; ", rho_g_H)."\
   set xlabel 'cell size h (m)'; set ylabel 'σ_{yy,min} + ρ g H (Pa)'; set logscale xy; set xrange [0.002:0.0125]; \
-  set yrange [15:120]; set xtics (0.0025, 0.005, 0.01); set ytics (20, 40, 60, 80, 100); set key top left; \
+  set yrange [15:120]; set xtics (0.0025, 0.005, 0.01); set ytics (20, 40, 60, 80, 100); set key bottom right; \
   plot base using (at_base('usf')):($9 - $8) with lines ".reference_style." title 'ρ g h / 2 (the half-cell)', \
-    base using (at_base('usf')):($10 - $8) with linespoints ".reference_style." pt 4 ps 1.5 \
-      title 'ρ g h / 2 less the bottom cell''s compression', \
-    for [u in updates] base using (at_base(u)):($6 - $8) with points ".other_code_style." ps 2.2 \
+    base using (at_base('usf')):($10 - $8) with lines lw 6 lc rgb c_reference \
+      title 'ρ g h / 2 less the bottom cell''s compression (wide grey)', \
+    for [u in updates] base using (at_base(u)):($6 - $8) with points ".other_code_style." ps 3 \
       title (u eq 'usf' ? 'CB-Geo (published), USF and USL' : ''), \
     for [u in updates] base using (at_base(u)):($5 - $8) with linespoints ".ours_style." title 'ours, '.update_name(u)"
 # (d): both comparisons in ours' style, told apart by a label with an arrow each
