@@ -1,20 +1,21 @@
 # Where methods fail, on the Dyka bar (40 cells, 20 ms), from data/dyka_stability.csv (a row per method),
 # data/dyka_stability_runs.csv (a row per run) and data/dyka_stability_factors.txt (the scan's CFLs as fractions of
 # the step limit), written by verification/dyka_stability.sh. Top: a column per method, named in words (its shape's
-# colour and its integrator's marker under it; LME at every gamma in LME's colour), the scan's CFLs as rows, evenly
-# spaced (the axis names each fraction of the step limit the scan is placed by, column cfl_limit_scanned, in
-# brackets under the method; the body it is computed on is column scanned_limit_body: the free bar, the smaller of its
-# limit at rest and with the particles moved 1e-6 h towards the free end; the held bar's only where the free bar's
-# analysis finds no stable CFL, and then named so in the title and under the method). Each run is a dot in its
-# amplitude's colour (v0 left, v0/100 right); a run the solver stopped has the black cross over its dot. The bar
-# reaches the last CFL before the first stopped run at v0; the black line is the step limit scanned (1, between the
-# rows 0.995 and 1.005), the grey one the step limit of a bar held at both ends (column cfl_limit_step; one above the
-# scan's rows is drawn at the top with its value). A cross inside a bar's range cannot be: a cross below a dot marks
-# stable CFLs that are not an interval. Bottom: v_A of linear + forward Euler at v0 at the two CFLs named by
-# `below` and `above` (dyka_stability_below.csv, dyka_stability_above.csv: the last CFL before its first stopped run
-# and that first stopped one), one panel each; where the stopped run stopped (the diagnosis's t) is a black vertical
-# line and the stopped marker on the strip above the data. The titles say which fractions of the limit they are and
-# which other CFLs of the scan stop or complete (from the runs file).
+# colour and its integrator's marker under it; LME's gammas, a sequence here, the ramp; an NPC with another Newmark
+# gamma, its gamma_N written over its marker), the scan's CFLs as rows, evenly spaced (the axis names each fraction of
+# the step limit the scan is placed by, column cfl_limit_scanned, in brackets under the method; the body it is
+# computed on is column scanned_limit_body: the free bar, the smaller of its limit at rest and with the particles
+# moved 1e-6 h towards the free end; the held bar's only where the free bar's analysis finds no stable CFL, and then
+# named so in the title and under the method). Each run is a dot, v0 black and left, v0/100 grey and right (the ramp
+# is LME's gammas); a run the solver stopped has the black cross over its dot. The bar reaches the last CFL before the
+# first stopped run at v0; the black line is the step limit scanned (1, between the rows 0.995 and 1.005), the grey
+# one the step limit of a bar held at both ends (column cfl_limit_step; one above the scan's rows is drawn at the top
+# with its value). A cross inside a bar's range cannot be: a cross below a dot marks stable CFLs that are not an
+# interval. Bottom: v_A of linear + forward Euler at v0 at the two CFLs named by `below` and `above`
+# (dyka_stability_below.csv, dyka_stability_above.csv: the last CFL before its first stopped run and that first
+# stopped one), one panel each; where the stopped run stopped (the diagnosis's t) is a black vertical line and the
+# stopped marker on the strip above the data. The titles say which fractions of the limit they are and which other
+# CFLs of the scan stop or complete, at v0 and at v0/100 (from the runs file).
 load dir."/common.gp"
 w = 13.3; h = 11.5
 csv = data."/dyka_stability.csv"
@@ -40,36 +41,48 @@ ftics = ''
 do for [k = 1:nf] { ftics = ftics.sprintf("%s'%s' %d", k > 1 ? ', ' : '', word(factors, k), k) }
 
 # A method's key in words: shape (LME's gamma named), integrator and its variant; shape and integrator keys of
-# the palette for its colour and marker (every LME gamma in LME's colour).
+# the palette for its colour and marker, LME's gammas (a sequence here) the ramp in increasing gamma.
 shape_of(m) = m[1:strstrt(m, '_') - 1]
 rest_of(m) = m[strstrt(m, '_') + 1:]
-palette_shape(s) = s[1:3] eq 'lme' ? 'lme' : s
+is_lme(s) = s[1:3] eq 'lme'
+lme_gammas = ''
+add_gamma(s) = strstrt(lme_gammas.' ', sprintf(' %g ', real(s[4:]))) > 0 ? 0 : (lme_gammas = lme_gammas.sprintf(' %g', real(s[4:])), 1)
+stats csv every ::1 using (is_lme(shape_of(strcol(1))) ? add_gamma(shape_of(strcol(1))) : 0) nooutput
+gamma_index(g) = 1 + sum [k = 1:words(lme_gammas)] (word(lme_gammas, k) + 0 < g ? 1 : 0)  # its rank, from the smallest
+shape_colour(s) = is_lme(s) ? ramp(gamma_index(real(s[4:])), words(lme_gammas)) : colour(s)
 integrator_of(m) = rest_of(m) eq 'npc_average' ? 'npcavg' : strstrt(rest_of(m), '_') > 0 ? rest_of(m)[1:strstrt(rest_of(m), '_') - 1] : rest_of(m)
 word_shape(s) = s[1:3] eq 'lme' ? sprintf('LME γ = %g', real(s[4:])) : shape_name(s)
-variant(m) = strstrt(rest_of(m), 'gamma') > 0 ? sprintf(', Newmark γ = %s', rest_of(m)[strstrt(rest_of(m), 'gamma') + 5:]) : ''
+newmark(m) = rest_of(m)[strstrt(rest_of(m), 'gamma') + 5:]   # NPC's Newmark gamma of a variant
+variant(m) = strstrt(rest_of(m), 'gamma') > 0 ? sprintf(', Newmark γ = %s', newmark(m)) : ''
 method_words(m) = word_shape(shape_of(m)).' + '.integrator_name(integrator_of(m)).variant(m)
 body(c) = strstrt(strcol(c), 'held') == 1 ? ', held bar' : ''
 tic(name) = sprintf('%s (%.3f%s)', method_words(strcol(name)), column(12), body(13))
-amplitude_colour(k) = ramp(k, 2)     # v0, v0/100: a sequence of two amplitudes
+# v0, v0/100: black and grey (the ramp colours LME's gammas here); their side of the column tells them apart too.
+amplitude_colour(k) = k == 1 ? c_exact : c_reference
 side(a) = a < -1 ? -0.2 : 0.2        # v0 left of the column's middle, v0/100 right
 limits = held == 0 ? "the free bar''s step limit (in brackets: the smaller at rest and with the particles moved 1e-6 h)" : sprintf("the free bar''s step limit (in brackets; the held bar''s for %d methods, so named)", held)
-base = -0.35                         # the row of the methods' markers, under the bars
+base = -1.05                         # the row of the methods' markers, under the bars
+newmark_label(m) = "γ_N\n".newmark(m)
+newmark_y = 0.2                     # a Newmark variant's gamma, over its marker
 # A palette colour '#rrggbb' as the number `lc rgb variable` takes.
 rgb(c) = sum [k = 2:7] (strstrt('0123456789abcdef', c[k:k]) - 1) * 16**(7 - k)
 
 left = sprintf("set title 'Every scanned run of the %d methods, at CFLs that are fractions of %s' noenhanced; ", methods, limits).\
-  sprintf("set ylabel 'CFL / the step limit scanned (the scan''s rows, evenly spaced)'; set yrange [-0.8:%g]; set ytics (%s) nomirror; ", above_scan + 0.6, ftics).\
+  sprintf("set ylabel 'CFL / the step limit scanned (the scan''s rows, evenly spaced)'; set yrange [-1.5:%g]; set ytics (%s) nomirror; ", above_scan + 0.6, ftics).\
   sprintf("set xrange [-0.7:%g]; set xtics rotate by -40 noenhanced nomirror; set boxwidth 0.7; set grid noxtics ytics; ", methods - 0.3).\
   "set key at screen 0.715, screen 0.905 left top Left reverse samplen 2 enhanced; ".\
   "plot csv every ::1 using 0:(row($2 / $12) + 0.45):xtic(tic(1)) with boxes fs solid 0.5 noborder lc rgb c_context title 'bar: the CFLs below the first run stopped at v_0', ".\
   "csv every ::1 using ($0 - 0.35):(held_row($6 / $12)):(0.7):(0) with vectors nohead lw 3 lc rgb c_reference title 'the step limit of the bar held at both ends', ".\
   "csv every ::1 using ($0 - 0.35):(row(1)):(0.7):(0) with vectors nohead lw 2 lc rgb c_exact title 'the step limit scanned (1)', ".\
   "csv every ::1 using 0:(row($6 / $12) > nf + 0.5 ? above_scan : NaN):(sprintf('%.3f', $6 / $12)) with labels offset 0,0.8 notitle, ".\
-  "runs every ::1 using ($1 + side($3)):($3 < -1 ? row($5) : NaN) with points pt 7 ps 0.7 lc rgb amplitude_colour(1) title 'a run at v_0 = 5 m/s (left in its column)', ".\
-  "runs every ::1 using ($1 + side($3)):($3 > -1 ? row($5) : NaN) with points pt 7 ps 0.7 lc rgb amplitude_colour(2) title 'a run at v_0/100 (right)', ".\
+  "runs every ::1 using ($1 + side($3)):($3 < -1 ? row($5) : NaN) with points pt 7 ps 0.7 lc rgb amplitude_colour(1) title 'a run at v_0 = 5 m/s (black, left in its column)', ".\
+  "runs every ::1 using ($1 + side($3)):($3 > -1 ? row($5) : NaN) with points pt 7 ps 0.7 lc rgb amplitude_colour(2) title 'a run at v_0/100 (grey, right)', ".\
   "runs every ::1 using ($1 + side($3)):($6 == 0 ? row($5) : NaN) with points ".stopped_style." title 'stopped by the solver (× over the run''s dot)', ".\
-  "csv every ::1 using 0:(base):(marker(integrator_of(strcol(1)))):(rgb(colour(palette_shape(shape_of(strcol(1)))))) with points pt variable ps 1.3 lc rgb variable notitle, ".\
-  "keyentry with points pt marker('fe') ps 1.3 lc rgb c_reference title 'under a column: shape''s colour, integrator''s marker'".\
+  "csv every ::1 using 0:(base):(marker(integrator_of(strcol(1)))):(rgb(shape_colour(shape_of(strcol(1))))) with points pt variable ps 1.3 lc rgb variable notitle, ".\
+  "csv every ::1 using 0:(variant(strcol(1)) eq '' ? NaN : newmark_y):(newmark_label(strcol(1))) with labels notitle, ".\
+  "keyentry with points pt marker('fe') ps 1.3 lc rgb c_reference title 'under a column: shape''s colour, integrator''s marker', ".\
+  "for [k = 1:words(lme_gammas)] keyentry with lines lw 4 lc rgb ramp(k, words(lme_gammas)) title sprintf('LME γ = %s (the ramp)', word(lme_gammas, k)), ".\
+  "keyentry with points pt marker('npc') ps 1.3 lc rgb colour('linear') title 'γ_N over NPC''s marker: its Newmark γ'".\
   (none > 0 ? ", csv every ::1 using 0:(strcol(2) eq 'nan' ? 1 : NaN):('no stable CFL') with labels rotate by 90 left offset 0,1 notitle" : "")
 
 # The two runs drawn at the bottom: their fractions of linear + FE's limit, the stop's time, the scan's other outcomes.
@@ -77,11 +90,15 @@ stats csv every ::1 using (strcol(1) eq 'linear_fe' ? (limit = $12, diagnosis = 
 stop = real(diagnosis[strstrt(diagnosis, 't = ') + 4:]) * 1e3   # ms
 fb = below / limit; fa = above / limit
 stopped_too = ''; completes_again = ''
-collect(f, ok) = (f > fa + 1e-4 && f < 1 ? (ok ? (completes_again = completes_again.(completes_again eq '' ? '' : ', ').sprintf('%.3f', f)) : (stopped_too = stopped_too.(stopped_too eq '' ? '' : ', ').sprintf('%.3f', f))) : '', 0)
+collect(f, ok) = (f > fa + 1e-4 ? (ok ? (completes_again = completes_again.(completes_again eq '' ? '' : ', ').sprintf('%.3f', f)) : (stopped_too = stopped_too.(stopped_too eq '' ? '' : ', ').sprintf('%.3f', f))) : '', 0)
 stats runs every ::1 using (strcol(2) eq 'linear_fe' && $3 < -1 ? collect($5, $6 == 1) : 0) nooutput
-others = (stopped_too ne '' ? 'the scan also stops it at '.stopped_too : '').\
-  (completes_again ne '' ? (stopped_too ne '' ? ' and' : 'the scan').' completes 20 ms at '.completes_again.' × the limit: its stable CFLs are not an interval' : \
-  stopped_too ne '' ? ' × the limit' : 'no other CFL of the scan lies between it and the limit')
+# and at v0/100 (the column's right dots): the CFLs of the scan it stops at.
+small_stops = ''
+stats runs every ::1 using (strcol(2) eq 'linear_fe' && $3 > -1 && $6 == 0 ? (small_stops = small_stops.(small_stops eq '' ? '' : ', ').sprintf('%.3f', $5), 0) : 0) nooutput
+others = (stopped_too ne '' ? 'at v_0 the scan also stops it at '.stopped_too : '').\
+  (completes_again ne '' ? (stopped_too ne '' ? ' and' : 'at v_0 the scan').' completes 20 ms at '.completes_again.' × the limit: its stable CFLs are not an interval' : \
+  stopped_too ne '' ? ' × the limit' : 'at v_0 no other CFL of the scan lies between it and the limit').\
+  (small_stops ne '' ? '; at v_0/100 it stops at '.small_stops : '; at v_0/100 it completes every CFL of the scan')
 stats data.'/dyka_stability_above.csv' using 2 nooutput prefix "A"
 stats data.'/dyka_stability_below.csv' using 2 nooutput prefix "B"
 vlo = (A_min < B_min ? A_min : B_min); vhi = (A_max > B_max ? A_max : B_max)

@@ -1,27 +1,30 @@
-# Speed against accuracy (beyond the paper): RMS of v_A / |v0| against the CPU time of each run (one thread), in
-# three panels by integrator: forward Euler (FE), the predictor-corrector (NPC), and forward Euler with the stress
-# updated last (USL) or modified (MUSL); each method in its palette style (colour: shape; dash and marker:
-# integrator). The paper's methods (linear, uGIMP, LME gamma = 3) over the mesh sweep (data/dyka_sweep.csv, 10 ...
-# 2560 cells, one run each); today's baselines (B-splines 2 and 3, LME gamma = 0.8 and 1.5, USL, MUSL) on 40, 160,
-# 640 cells, the cubic B-spline also on 2560 (data/dyka_baselines.csv). A method's runs are joined by a line up to
-# the grid-crossing band (2560 cells: a point of its own). Horizontal bars: fastest to slowest of 5 interleaved
-# repeats (40 and 160 cells; for the paper's methods a bar without a marker beside the sweep's point); a baseline's
-# single timing (640, 2560 cells) widened by the largest spread of the 160-cell repeats, the margin the front asks of
-# it; the title says how wide they are at most (a few per cent: within a marker). Boxed: the runs on their mesh's
-# error-cost front (column pareto, computed by dyka_suite: no method both more accurate and faster by more than the
-# measured spread). Top axis: where each mesh's runs lie. The runs that stopped (status failed) and those no better
-# than a flat line (the sweep's ending failed) are drawn on the strip above the data at their CPU time, in their
-# method's marker under a black cross (stopped) or ring (failed), each named in the key. Under the FE and NPC panels,
-# each method's RMS against LME gamma = 3's with the same integrator on the same mesh (per cent, where both
-# completed before the crossing band), since the methods lie within a marker of each other above; the title names
-# the methods that stay within a line's width of LME there. B-spline 2 equals uGIMP on this bar (1 particle per
-# cell) to a few parts in a million: it is drawn with a larger marker, beneath the others, and the titles say so.
+# Speed against accuracy (beyond the paper): RMS of v_A / |v0| against the CPU time of each run (one thread), in three
+# panels by integrator: forward Euler (FE), the predictor-corrector (NPC), and forward Euler with the stress updated
+# last (USL) or modified (MUSL); each method in its palette style (colour: shape; dash and marker: integrator). The
+# paper's methods (linear, uGIMP, LME gamma = 3) over the mesh sweep (data/dyka_sweep.csv, 10 ... 2560 cells, one run
+# each); today's baselines (B-splines 2 and 3, LME gamma = 0.8 and 1.5, USL, MUSL) on 40, 160, 640 cells, the cubic
+# B-spline also on 2560 (data/dyka_baselines.csv). A method's runs are joined by a line up to the grid-crossing band
+# (2560 cells: a point of its own). Horizontal bars: fastest to slowest of 5 interleaved repeats (40 and 160 cells;
+# for the paper's methods a bar without a marker beside the sweep's point); a baseline's single timing (640, 2560
+# cells) widened by the largest spread of the 160-cell repeats, the margin the front asks of it; the title says how
+# wide they are at most (a few per cent: within a marker). Boxed: the runs on their mesh's error-cost front (column
+# pareto, computed by dyka_suite: no method both more accurate and faster by more than the measured spread). Top axis:
+# each mesh at the (geometric) middle of its completed runs' CPU times. The runs that stopped (status failed) and
+# those no better than a flat line (the sweep's ending failed) are drawn on the strip above the data at their own CPU
+# time (which may lie under another mesh's number), their method's marker above a black cross (stopped) or ring
+# (failed), each named in the key with its mesh and CPU time. Under the FE and NPC panels, each method's RMS against
+# LME gamma = 3's with the same integrator on the same mesh (per cent, where both completed before the crossing band),
+# since the methods lie within a marker of each other above; the title names the methods that stay within a line's
+# width of LME there. B-spline 2 equals uGIMP on this bar (1 particle per cell) to a few parts in a million: it is
+# drawn with a larger marker, beneath the others, and the titles say so.
 load dir."/common.gp"
 w = 13.3; h = 10.5
 sweep = data.'/dyka_sweep.csv'
 baselines = data.'/dyka_baselines.csv'
 lo = 0.05; hi = 0.36
-top = strip_y_log(lo, hi)
+# On the strip: the method's marker in its upper half, the black cross or ring below it (so that both read).
+top = hi * (hi / lo)**0.1
+outcome = hi * (hi / lo)**0.04
 stats sweep using ($3 * (strcol(6) eq 'crossing' ? 1 : NaN)) nooutput
 crossing = STATS_min  # the first mesh of the grid-crossing band
 
@@ -43,12 +46,12 @@ BL = "lw method_lw dt dash(i_of(m)) lc rgb colour(s_of(m))"                     
 # The runs with no value, one key entry each (built here from the data).
 sweep_off(p, what) = in_panel(strcol(2), p) && (what eq 'stopped' ? strcol(12) ne 'ok' : strcol(12) eq 'ok' && strcol(22) eq 'failed')
 base_off(p) = in_panel(i_of(strcol(1)), p) && !paper(s_of(strcol(1))) && strcol(6) ne 'ok'
-add(style, what, s, i, n) = (entries = entries.sprintf(", keyentry with points %s title '%s: %s, %d cells'", style, what, method_name(s, i), n), 1)
+add(style, what, s, i, n, t) = (entries = entries.sprintf(", keyentry with points %s title '%s: %s, %d cells, %.3g s CPU'", style, what, method_name(s, i), n, t), 1)
 do for [p = 1:3] {
   entries = ''
-  stats sweep using (sweep_off(p, 'stopped') ? add(stopped_style, 'stopped by the solver', strcol(1), strcol(2), $3) : 0) nooutput
-  stats baselines using (base_off(p) ? add(stopped_style, 'stopped by the solver', s_of(strcol(1)), i_of(strcol(1)), $2) : 0) nooutput
-  stats sweep using (sweep_off(p, 'failed') ? add(failed_style, 'failed, no better than a flat line', strcol(1), strcol(2), $3) : 0) nooutput
+  stats sweep using (sweep_off(p, 'stopped') ? add(stopped_style, 'stopped by the solver', strcol(1), strcol(2), $3, $17) : 0) nooutput
+  stats baselines using (base_off(p) ? add(stopped_style, 'stopped by the solver', s_of(strcol(1)), i_of(strcol(1)), $2, $8) : 0) nooutput
+  stats sweep using (sweep_off(p, 'failed') ? add(failed_style, 'failed, no better than flat', strcol(1), strcol(2), $3, $17) : 0) nooutput
   eval(sprintf("strip_entries%d = entries", p))
 }
 
@@ -103,11 +106,11 @@ sweep_curves(p) = sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (
 base_curves(p) = sprintf("for [m in '%s'] baselines using (strcol(1) eq m && strcol(6) eq 'ok' ? $8 : NaN):3:9:10 with xerrorbars @BS notitle, ", base_methods(p)).\
   sprintf("for [m in '%s'] baselines using (seg(strcol(1) eq m && strcol(6) eq 'ok' && $2 < crossing, $8, $3)):(y0):($8 - x0):($3 - y0) with vectors nohead @BL notitle, ", base_methods(p))
 front(p) = sprintf("baselines using (strcol(6) eq 'ok' && $7 == 1 && in_panel(i_of(strcol(1)), %d) ? $8 : NaN):3 with points ".front_style." notitle, ", p)
-# On the strip: the method's marker in its colour, the black cross or ring over it.
+# On the strip: the method's marker in its colour, the black cross or ring under it.
 strip_points(p) = sprintf("for [s in sweep_shapes] for [i in '%s'] sweep using (strcol(1) eq s && strcol(2) eq i && (sweep_off(%d, 'stopped') || sweep_off(%d, 'failed')) ? $17 : NaN):(top) with points ps 1.1 pt marker(i) lc rgb colour(s) notitle, ", integrators(p), p, p).\
   sprintf("for [m in '%s'] baselines using (strcol(1) eq m && base_off(%d) ? $8 : NaN):(top) with points ps 1.1 pt marker(i_of(m)) lc rgb colour(s_of(m)) notitle, ", base_methods(p), p).\
-  sprintf("sweep using (sweep_off(%d, 'stopped') ? $17 : NaN):(top) with points %s notitle, baselines using (base_off(%d) ? $8 : NaN):(top) with points %s notitle, ", p, stopped_style, p, stopped_style).\
-  sprintf("sweep using (sweep_off(%d, 'failed') ? $17 : NaN):(top) with points %s notitle", p, failed_style)
+  sprintf("sweep using (sweep_off(%d, 'stopped') ? $17 : NaN):(outcome) with points %s notitle, baselines using (base_off(%d) ? $8 : NaN):(outcome) with points %s notitle, ", p, stopped_style, p, stopped_style).\
+  sprintf("sweep using (sweep_off(%d, 'failed') ? $17 : NaN):(outcome) with points %s notitle", p, failed_style)
 # The key: each method in its style with its meshes, the front, the grey context, the runs on the strip.
 do for [p = 1:3] {
   entries = ''
@@ -146,7 +149,7 @@ top_row = "set tmargin at screen 0.87; set bmargin at screen 0.55; "
 ratio_row = "set tmargin at screen 0.43; set bmargin at screen 0.25; "
 key_at(k) = sprintf("set key at screen %s, screen %s left top Left reverse vertical samplen 2.5 noenhanced; ", word("0.055 0.385 0.715", k), k == 3 ? "0.43" : "0.18")
 axes = "set logscale xy; set xrange [1e-4:20]; set x2range [1e-4:20]; set logscale x2; set xtics nomirror; set format x '10^{%L}'; ".\
-  sprintf("set x2tics (%s) nomirror; set x2label 'cells (each mesh''s runs lie below its number)' offset 0,-0.4; ", mesh_tics).\
+  sprintf("set x2tics (%s) nomirror; set x2label 'cells: the middle of each mesh''s completed runs\n(the strip''s runs at their own CPU time, named in the key)' offset 0,-0.4; ", mesh_tics).\
   "set xlabel 'CPU time per run (s)'; set ytics (0.05, 0.07, 0.1, 0.15, 0.2, 0.3) nomirror; set ylabel 'RMS of v_A / |v_0|'; "
 title = sprintf("Speed against accuracy on the Dyka bar (CFL 0.5): RMS of v_A / |v_0| against the CPU time of each run (one thread), one panel per integrator;\nhorizontal bars: fastest to slowest of the repeated timings, at most %.1f %% apart, within a marker at this scale", bars)
 draw = "set multiplot title title; ".\
