@@ -5,11 +5,20 @@
 # panel the integrator is the dash and the marker (FE solid with circles, NPC dashed with squares, USL and MUSL with
 # triangles); 1 particle per cell filled markers, 2 open ones, drawn larger so that a filled one on the same value
 # shows inside; at small amplitude the paper's shapes also at CFL 0.1, thin lines with small markers (CFL 0.5: the
-# usual lines). Grey dotted: slopes 1 and 2. A run that stopped (black cross) or ended no better than a flat field
-# (failed, black ring) lies on the strip above the data, its method's marker inside, at its mesh: the strip has one
-# row per series of the panel (from the top: the first integrator at 1 and 2 ppc, then the second), each row with
-# a run named at its left ("FE, 1 ppc"). The velocity rows share one y range, the stress rows another, each the
-# range of its data; the legend lies below the panels.
+# usual lines). Grey dotted: slopes 1 and 2, and the line at 1 of a ratio panel.
+# At small amplitude, where twin runs lie on each other, a ratio panel under each panel draws one twin over the
+# other at each mesh (log axis, the range of its ratios): 2 ppc over 1 ppc (velocity of the paper's shapes, both
+# rows of the B-splines; open markers, each integrator at each CFL), CFL 0.1 over CFL 0.5 (stress of the paper's
+# shapes; thin lines, each integrator at 1 and 2 ppc), MUSL over USL (at 1 and 2 ppc). Its title gives, for each
+# ratio, the largest departure from 1 over the meshes from the finest down while it stays within 7 % (about a line
+# width on these axes), and the coarsest of those meshes when it is not the coarsest run ("apart" when not even the
+# finest is within); the uGIMP panels' titles give uGIMP's largest departure from linear's numbers; every number
+# computed here from the CSV.
+# A run that stopped (black cross) or ended no better than a flat field (failed, black ring) lies on the strip above
+# the data, its method's marker beside it (right), at its mesh: the strip has one row per series of the panel (from
+# the top: the first integrator at 1 and 2 ppc, then the second), each row with a run named at its left ("FE,
+# 1 ppc"); no y tic on the strip. The velocity rows share one y range, the stress rows another, each the range of
+# its data; the legend lies below the panels.
 # gnuplot -e "dir='...'; data='...'; out='...'; amplitude='small|large'; caption='...'" smooth_bar.gp
 load dir."/common.gp"
 w = 13.3
@@ -28,7 +37,6 @@ stats sweep using (strcol(1) eq amplitude && strcol(18) eq 'done' ? $8 : NaN) no
 slow = STATS_min / 1.6; shigh = STATS_max * 1.6
 stats sweep using (strcol(1) eq amplitude && strcol(18) ne 'done' ? 1 : 0) nooutput
 outcomes = STATS_sum  # runs on the strip
-h = (outcomes > 0 ? 13.5 : 12)  # taller with the strip's rows, so that the data keep their height
 stats sweep using (strcol(1) eq amplitude && strcol(12) ne 'ok' ? 1 : 0) nooutput
 stops = STATS_sum
 stats sweep using (strcol(1) eq amplitude && strcol(18) eq 'failed' ? 1 : 0) nooutput
@@ -40,10 +48,84 @@ xlow = STATS_min / (outcomes > 0 ? 3.3 : 1.5)  # room at the left of the strip f
 cfls(s, i) = (small && (i eq 'fe' || i eq 'npc') && s ne 'bspline2' && s ne 'bspline3' ? '0.5 0.1' : '0.5')
 curves(s, i, col) = sprintf("for [p = 2:1:-1] for [c in '%s'] sweep using (mine('%s', '%s', p, real(c)) ? $6 : NaN):(error('%s', '%s', p, real(c), %d)) with linespoints lw (real(c) > 0.3 ? method_lw : 0.8) dt %d pt (p == 1 ? %d : %d) ps ((real(c) > 0.3 ? 1 : 0.6) * (p == 2 ? 1.5 : 1)) lc rgb '%s'", \
   cfls(s, i), s, i, s, i, col, dash(i), marker(i), open(marker(i)), colour(s))
+
+# Every run of this amplitude by series SHAPE/INTEGRATOR/PPC/CFL and mesh, its errors (NaN without a value), in arrays.
+series_key(s, i, p, c) = sprintf('%s/%s/%d/%g', s, i, p, c)
+row_key(dummy) = series_key(strcol(2), strcol(3), $4, $5)  # the series of the row being read
+stats sweep using (strcol(1) eq amplitude ? 1 : 0) nooutput
+n = int(STATS_sum)
+array K[n]; array C[n]; array V[n]; array S[n]
+n = 0
+stats sweep using (strcol(1) eq amplitude ? (n = n + 1, K[n] = row_key(0), C[n] = $6, V[n] = (strcol(12) eq 'ok' && strcol(18) eq 'done' ? $7 : NaN), \
+  S[n] = (strcol(12) eq 'ok' && strcol(18) eq 'done' ? $8 : NaN), 0) : 0) nooutput
+at_mesh(k, m) = sum [j = 1:n] ((K[j] eq k && C[j] == m) ? j : 0)
+value_at(k, m, col) = (at_mesh(k, m) > 0 ? (col == 7 ? V[at_mesh(k, m)] : S[at_mesh(k, m)]) : NaN)
+# fields of a series key: 1 shape, 2 integrator, 3 ppc, 4 CFL
+head(k) = (strstrt(k, '/') > 0 ? k[1:strstrt(k, '/') - 1] : k)
+field(k, f) = (f == 1 ? head(k) : field(k[strstrt(k, '/') + 1:], f - 1))
+
+# The ratio panels (small amplitude): a ratio is NUMERATOR>DENOMINATOR (series keys); a panel's ratios, grouped
+# (one title line a group), by its rule: ppc (2 over 1 ppc, a group per CFL), cfl (CFL 0.1 over 0.5, a group per
+# ppc), musl (MUSL over USL, one group).
+rule(s, i1, col) = (i1 eq 'usl' ? 'musl' : (col == 8 && cfls(s, i1) eq '0.5 0.1') ? 'cfl' : 'ppc')
+rule_name(r) = (r eq 'ppc' ? '2 ppc / 1 ppc' : r eq 'cfl' ? 'CFL 0.1 / CFL 0.5' : 'MUSL / USL')
+groups(s, i1, col) = (rule(s, i1, col) eq 'ppc' ? cfls(s, i1) : rule(s, i1, col) eq 'cfl' ? '1 2' : 'all')
+group_name(r, g, s, i1) = (r eq 'ppc' ? (cfls(s, i1) eq '0.5' ? '' : 'at CFL '.g) : r eq 'cfl' ? 'at '.g.' ppc' : '')
+ratios_of(s, i1, i2, col, g) = (rule(s, i1, col) eq 'ppc' ? sprintf('%s>%s %s>%s', series_key(s, i1, 2, real(g)), series_key(s, i1, 1, real(g)), series_key(s, i2, 2, real(g)), series_key(s, i2, 1, real(g))) : \
+  rule(s, i1, col) eq 'cfl' ? sprintf('%s>%s %s>%s', series_key(s, i1, int(g), 0.1), series_key(s, i1, int(g), 0.5), series_key(s, i2, int(g), 0.1), series_key(s, i2, int(g), 0.5)) : \
+  sprintf('%s>%s %s>%s', series_key(s, 'musl', 1, 0.5), series_key(s, 'usl', 1, 0.5), series_key(s, 'musl', 2, 0.5), series_key(s, 'usl', 2, 0.5)))
+numerator(q) = q[1:strstrt(q, '>') - 1]
+denominator(q) = q[strstrt(q, '>') + 1:]
+# a ratio's name in its group line: the integrator (cfl, ppc rules) or the ppc (musl rule)
+item_name(r, q) = (r eq 'musl' ? field(numerator(q), 3).' ppc' : integrator_name(field(numerator(q), 2)))
+# The walk over a ratio q's meshes in order (col, tol set): r_min, r_max its range (kept over a panel), from the mesh
+# where its last stretch within tol starts (NaN if the finest is not within), dev its largest departure there, count
+# its meshes, coarsest the coarsest mesh with a value.
+tol = 0.07
+walk = "from = NaN; dev = 0; count = 0; coarsest = NaN; ka = numerator(q); kb = denominator(q); do for [j = 1:n] { if (K[j] eq ka) { " . \
+  "r = (col == 7 ? V[j] : S[j]) / value_at(kb, C[j], col); if (r == r) { coarsest = (coarsest == coarsest ? coarsest : C[j]); r_min = (r < r_min ? r : r_min); r_max = (r > r_max ? r : r_max) }; " . \
+  "if (r == r && abs(r - 1) <= tol) { if (from != from) { from = C[j]; dev = 0; count = 0 }; dev = (abs(r - 1) > dev ? abs(r - 1) : dev); count = count + 1 } else { from = NaN } } }"
+percent(x) = sprintf('%.1f %%', ceil(1000 * x) / 10.0)  # a departure, rounded up to 0.1 %
+piece(r, q) = item_name(r, q) . (from != from || count < 2 ? ' apart' : ' ≤ ' . percent(dev) . (from > coarsest ? sprintf(' from %d cells', from) : ''))
+# for each panel with ratios: ratios_ID (its ratios), ratio_title_ID (its title), ratio_range_ID
+panel_id(s, i1, col) = sprintf('%s_%s_%d', s, i1, col)
+paper_panels = 'linear/fe/npc ugimp/fe/npc lme/fe/npc'
+baseline_panels = 'bspline2/fe/npc bspline3/fe/npc linear/usl/musl'
+if (small) {
+  do for [pn in paper_panels.' '.baseline_panels] { do for [col = 7:8] {
+    s = field(pn, 1); i1 = field(pn, 2); i2 = field(pn, 3); rl = rule(s, i1, col); list = ''; title = ''; r_min = 1; r_max = 1
+    do for [g in groups(s, i1, col)] {
+      line = group_name(rl, g, s, i1); line = (title eq '' ? rule_name(rl).(line eq '' ? '' : ' ') : '').line.': '; sep = ''
+      do for [q in ratios_of(s, i1, i2, col, g)] { list = list.' '.q; eval walk; line = line.sep.piece(rl, q); sep = ', ' }
+      title = title.line."\n"
+    }
+    id = panel_id(s, i1, col); title = title[1:strlen(title) - 1]
+    eval sprintf("ratios_%s = list; ratio_title_%s = title; ratio_range_%s = '[%.6g:%.6g]'", id, id, id, r_min / 1.12, r_max * 1.12)
+    eval sprintf("ratio_name_%s = '%s'", id, rule_name(rl))
+  } }
+}
+ratio_tics(range) = (real(range[strstrt(range, ':') + 1:strlen(range) - 1]) / real(range[2:strstrt(range, ':') - 1]) < 1.4 ? '(0.9, 0.95, 1, 1.05, 1.1, 1.15)' : \
+  real(range[strstrt(range, ':') + 1:strlen(range) - 1]) / real(range[2:strstrt(range, ':') - 1]) < 4 ? '(0.5, 0.6, 0.8, 1, 1.2, 1.5, 2)' : '(0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100)')
+# a ratio's look: its numerator's (shape's colour, integrator's dash and marker, open at 2 ppc, thin and small at CFL 0.1)
+ratio_look = "lw (real(field(numerator(q), 4)) > 0.3 ? method_lw : 0.8) dt dash(field(numerator(q), 2)) " . \
+  "pt (field(numerator(q), 3) eq '1' ? marker(field(numerator(q), 2)) : open(marker(field(numerator(q), 2)))) " . \
+  "ps ((real(field(numerator(q), 4)) > 0.3 ? 1 : 0.6) * (field(numerator(q), 3) eq '2' ? 1.5 : 1)) lc rgb colour(field(numerator(q), 1))"
+ratio_curves(id, col) = sprintf("plot 1 with lines %s, for [q in ratios_%s] sweep using (strcol(1) eq amplitude && row_key(0) eq numerator(q) ? $6 : NaN):" . \
+  "(strcol(12) eq 'ok' && strcol(18) eq 'done' ? column(%d) / value_at(denominator(q), $6, %d) : NaN) with linespoints %s", reference_style, id, col, col, ratio_look)
+# uGIMP's largest departure from linear's numbers (same integrator, ppc, CFL, mesh), velocity and stress
+do for [col = 7:8] {
+  worst = 0
+  do for [j = 1:n] { if (field(K[j], 1) eq 'ugimp') {
+    r = (col == 7 ? V[j] : S[j]) / value_at('linear'.K[j][6:], C[j], col)
+    worst = (r == r && abs(r - 1) > worst ? abs(r - 1) : worst)
+  } }
+  eval sprintf("ugimp_off_%d = worst", col)
+}
+
 # The strip: one row per series of a panel, k = 1 (top) to 4: the first integrator at 1 and 2 ppc, then the second;
 # each run at its mesh. A row is named at its left when it holds a run (count_SHAPE_INTEGRATOR_PPC: its runs there).
 rows = 4
-row_share = 0.1  # a row's height, as a share of the data's (log) height
+row_share = 0.11  # a row's height, as a share of the data's (log) height
 row_y(lo, hi, k) = hi * (hi / lo)**(row_share * (rows - k + 0.5))
 do for [series in 'linear/fe linear/npc ugimp/fe ugimp/npc lme/fe lme/npc bspline2/fe bspline2/npc bspline3/fe bspline3/npc linear/usl linear/musl'] {
   do for [ppc = 1:2] {
@@ -56,40 +138,63 @@ count(s, i, p) = value(sprintf('count_%s_%s_%d', s, i, p))
 row_name(s, i, p, k, lo, hi) = (count(s, i, p) > 0 ? sprintf("set label %d '%s, %d ppc' at graph 0.015, first %.12g left front; ", 90 + k, integrator_name(i), p, row_y(lo, hi, k)) : '')
 row_names(s, i1, i2, lo, hi) = (outcomes == 0 ? '' : row_name(s, i1, 1, 1, lo, hi) . row_name(s, i1, 2, 2, lo, hi) . row_name(s, i2, 1, 3, lo, hi) . row_name(s, i2, 2, 4, lo, hi))
 unname = "unset label 91; unset label 92; unset label 93; unset label 94; "
-inside(s, i) = sprintf("pt (p == 1 ? %d : %d) ps 1.2 lc rgb '%s'", marker(i), open(marker(i)), colour(s))
-on_strip(s, i, first, kind, lo, hi, how) = sprintf("for [p = 1:2] sweep using (off('%s', '%s', p, '%s') ? $6 : NaN):(row_y(%.12g, %.12g, %d + p)) with points %s", s, i, kind, lo, hi, first ? 0 : 2, how)
-strip_runs(s, i, first, lo, hi) = (outcomes == 0 ? '' : sprintf(", %s, %s, %s, %s", on_strip(s, i, first, 'stopped', lo, hi, stopped_style), on_strip(s, i, first, 'failed', lo, hi, failed_style), \
-  on_strip(s, i, first, 'stopped', lo, hi, inside(s, i)), on_strip(s, i, first, 'failed', lo, hi, inside(s, i))))
+beside = 1.2  # the method's marker lies right of the cross or ring, at 1.2 times its mesh
+own_marker(s, i) = sprintf("pt (p == 1 ? %d : %d) ps (p == 1 ? 1.1 : 1.4) lc rgb '%s'", marker(i), open(marker(i)), colour(s))
+on_strip(s, i, first, kind, lo, hi, x, how) = sprintf("for [p = 1:2] sweep using (off('%s', '%s', p, '%s') ? $6 * %g : NaN):(row_y(%.12g, %.12g, %d + p)) with points %s", s, i, kind, x, lo, hi, first ? 0 : 2, how)
+strip_runs(s, i, first, lo, hi) = (outcomes == 0 ? '' : sprintf(", %s, %s, %s, %s", on_strip(s, i, first, 'stopped', lo, hi, 1, stopped_style), on_strip(s, i, first, 'failed', lo, hi, 1, failed_style), \
+  on_strip(s, i, first, 'stopped', lo, hi, beside, own_marker(s, i)), on_strip(s, i, first, 'failed', lo, hi, beside, own_marker(s, i))))
 guides = sprintf(", 0.05 * (x / 8)**-1 with lines %s, 0.05 * (x / 8)**-2 with lines %s", reference_style, reference_style)
 strip_top(lo, hi) = hi * (hi / lo)**(row_share * rows)
 # the y tics: every decade up to hi, none on the strip
 decades(lo, hi) = sprintf("set ytics %.12g, 10, %.12g; ", 10**floor(log10(lo)), hi)
 yrange(lo, hi) = unname . decades(lo, hi) . (outcomes > 0 ? sprintf("set yrange [%.12g:%.12g]; ", lo, strip_top(lo, hi)) . strip_common(hi, strip_top(lo, hi), hi, '') : \
   sprintf("set yrange [%.12g:%.12g]; ", lo, hi).unstrip)
-# One panel: shape s with integrators i1 and i2; col 7 (velocity) or 8 (stress).
-panel(s, i1, i2, col, title) = sprintf("set title '%s'; set ylabel '%s'; ", title, col == 7 ? 'RMS(v_p - v) / V' : 'RMS(σ_p - σ) / ZV') . \
+
+# Places, in pixels from the top (120 px an inch): the figure's title, then per row of panels its title, the data
+# panel, (small:) the ratio panel's title and the ratio panel, the x label; the legend at the bottom.
+title_px = 56; panel_title_px = 26; ratio_title_px = 56; xlabel_px = (small ? 60 : 72); legend_px = 62
+data_px = (small ? 220 : 330); ratio_px = (small ? 110 : 0)
+block_px = panel_title_px + data_px + (small ? ratio_title_px + ratio_px : 0) + xlabel_px
+h = (title_px + 4 * block_px + legend_px) / 120.0
+screen_y(px) = 1 - px / (h * 120.0)
+data_top(r) = screen_y(title_px + (r - 1) * block_px + panel_title_px)
+data_bottom(r) = screen_y(title_px + (r - 1) * block_px + panel_title_px + data_px)
+ratio_top(r) = screen_y(title_px + (r - 1) * block_px + panel_title_px + data_px + ratio_title_px)
+ratio_bottom(r) = screen_y(title_px + (r - 1) * block_px + panel_title_px + data_px + ratio_title_px + ratio_px)
+column_left(c) = 0.06 + (c - 1) * 0.33
+place(c, top, bottom) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set tmargin at screen %g; set bmargin at screen %g; ", column_left(c), column_left(c) + 0.275, top, bottom)
+# One panel: shape s with integrators i1 and i2; col 7 (velocity) or 8 (stress); in column c, row r; at small
+# amplitude its ratio panel under it.
+panel(s, i1, i2, col, c, r, title) = place(c, data_top(r), data_bottom(r)) . sprintf("set title '%s'; set ylabel '%s'; set logscale y; set format y '10^{%%L}'; ", title, col == 7 ? 'RMS(v_p - v) / V' : 'RMS(σ_p - σ) / ZV') . \
+  (small ? "set format x ''; unset xlabel; " : "set format x '%g'; set xlabel 'cells'; ") . \
   (col == 7 ? yrange(vlow, vhigh) . row_names(s, i1, i2, vlow, vhigh) : yrange(slow, shigh) . row_names(s, i1, i2, slow, shigh)) . "plot " . curves(s, i1, col) . ", " . curves(s, i2, col) . guides . \
-  strip_runs(s, i1, 1, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh) . strip_runs(s, i2, 0, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh)
+  strip_runs(s, i1, 1, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh) . strip_runs(s, i2, 0, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh) . "; " . \
+  (small ? ratio_panel(panel_id(s, i1, col), col, c, r) : '')
+ratio_panel(id, col, c, r) = place(c, ratio_top(r), ratio_bottom(r)) . unname . unstrip . \
+  "set title '" . value('ratio_title_'.id) . "'; set ylabel '" . value('ratio_name_'.id) . "'; set format y '%g'; set ytics " . ratio_tics(value('ratio_range_'.id)) . \
+  "; set yrange " . value('ratio_range_'.id) . "; set format x '%g'; set xlabel 'cells'; " . ratio_curves(id, col) . "; "
 quantity(col) = (col == 7 ? 'velocity' : 'stress')
-paper_row(col) = panel('linear', 'fe', 'npc', col, shape_name('linear').': '.quantity(col).', FE and NPC') . "; " . \
-  panel('ugimp', 'fe', 'npc', col, shape_name('ugimp').': '.quantity(col).(small ? ', the same numbers as linear' : '')) . "; " . \
-  panel('lme', 'fe', 'npc', col, shape_name('lme').': '.quantity(col)) . "; "
-baseline_row(col) = panel('bspline2', 'fe', 'npc', col, 'baseline '.shape_name('bspline2').': '.quantity(col)) . "; " . \
-  panel('bspline3', 'fe', 'npc', col, 'baseline '.shape_name('bspline3').': '.quantity(col)) . "; " . \
-  panel('linear', 'usl', 'musl', col, 'baseline '.shape_name('linear').': '.quantity(col).', USL and MUSL'.(small ? ' (they coincide)' : '')) . "; "
+same_as_linear(col) = (small ? ', linear’s numbers within '.percent(value(sprintf('ugimp_off_%d', col))) : '')
+paper_row(col, r) = panel('linear', 'fe', 'npc', col, 1, r, shape_name('linear').': '.quantity(col).', FE and NPC') . \
+  panel('ugimp', 'fe', 'npc', col, 2, r, shape_name('ugimp').': '.quantity(col).same_as_linear(col)) . \
+  panel('lme', 'fe', 'npc', col, 3, r, shape_name('lme').': '.quantity(col))
+baseline_row(col, r) = panel('bspline2', 'fe', 'npc', col, 1, r, 'baseline '.shape_name('bspline2').': '.quantity(col)) . \
+  panel('bspline3', 'fe', 'npc', col, 2, r, 'baseline '.shape_name('bspline3').': '.quantity(col)) . \
+  panel('linear', 'usl', 'musl', col, 3, r, 'baseline '.shape_name('linear').': '.quantity(col).', USL and MUSL')
 neutral(i) = sprintf("lw %g dt %d pt %d lc rgb '%s'", method_lw, dash(i), marker(i), c_exact)
 legend = sprintf("keyentry with linespoints %s title 'FE: solid, circles', keyentry with linespoints %s title 'NPC: dashed, squares', ", neutral('fe'), neutral('npc')) . \
   sprintf("keyentry with linespoints %s title 'USL: triangles up', keyentry with linespoints %s title 'MUSL: triangles down', ", neutral('usl'), neutral('musl')) . \
   sprintf("keyentry with points pt %d lc rgb '%s' title '1 ppc: filled markers', keyentry with points pt %d ps 1.5 lc rgb '%s' title '2 ppc: open, larger', ", marker('fe'), c_exact, open(marker('fe')), c_exact) . \
   (small ? sprintf("keyentry with linespoints lw %g pt %d lc rgb '%s' title 'CFL 0.5', keyentry with linespoints lw 0.8 pt %d ps 0.6 lc rgb '%s' title 'CFL 0.1: thin, small markers', ", method_lw, marker('fe'), c_exact, marker('fe'), c_exact) : '') . \
-  "keyentry with lines ".reference_style." title 'slopes 1 and 2'" . \
-  (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (its method’s marker inside)'" : '') . \
-  (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: no better than a flat field'" : '')
-legend_panel = "set lmargin at screen 0.02; set rmargin at screen 0.99; set bmargin at screen 0.005; set tmargin at screen 0.075; unset logscale; unset border; unset tics; unset grid; " . \
-  "unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . unname . "set key inside left top horizontal Left reverse samplen 3 maxrows 3; plot -1, " . legend
-note = (small ? 'coinciding: NPC at 1 and 2 ppc, and B-spline 3 + FE at 1 and 2 ppc (velocity: the filled marker inside the open one); FE at CFL 0.5 and 0.1 (stress: the thin line on the thick one)' : \
+  "keyentry with lines ".reference_style." title (small ? 'slopes 1 and 2; in a ratio panel, 1' : 'slopes 1 and 2')" . \
+  (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (its method’s marker beside)'" : '') . \
+  (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: no better than a flat field (likewise)'" : '')
+legend_panel = sprintf("set lmargin at screen 0.02; set rmargin at screen 0.99; set bmargin at screen 0.003; set tmargin at screen %g; ", 1 - (title_px + 4 * block_px + 4) / (h * 120.0)) . \
+  "unset logscale; unset border; unset tics; unset grid; unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . unname . \
+  "set key inside left top horizontal Left reverse samplen 3 maxrows 3; plot -1, " . legend
+note = (small ? 'under each panel, twin runs one over the other; its title: the largest departure from 1 over the finest meshes while within 7 % (a line width), or “apart”' : \
   'rows 1-2: the paper’s shape functions, rows 3-4: today’s baselines; all at CFL 0.5')
-draw = "set border; set tics; set grid; set lmargin -1; set rmargin -1; set bmargin -1; set tmargin -1; set key off; " . \
-  sprintf("set multiplot layout 4,3 title '%s\n%s' margins 0.06, 0.99, 0.11, 0.935 spacing 0.06, 0.07; set logscale xy; set format y '10^{%%L}'; set xrange [%g:%g]; set xtics (8, 16, 32, 64, 128, 256); set xlabel 'cells'; ", caption, note, xlow, xhigh) . \
-  paper_row(7) . paper_row(8) . baseline_row(7) . baseline_row(8) . legend_panel . "; unset multiplot; set border; set tics; set grid"
+draw = "set border; set tics; set grid; set key off; " . \
+  sprintf("set multiplot title '%s\n%s'; set logscale x; set xrange [%g:%g]; set xtics (8, 16, 32, 64, 128, 256); ", caption, note, xlow, xhigh) . \
+  paper_row(7, 1) . paper_row(8, 2) . baseline_row(7, 3) . baseline_row(8, 4) . legend_panel . "; unset multiplot; set border; set tics; set grid"
 load dir."/output.gp"

@@ -1,17 +1,20 @@
 # 2D manufactured solutions (data/smooth_manufactured.csv): RMS errors of velocity and stress against the cells per
 # side. Top row: small amplitude, linear and LME γ = 3 (uGIMP gives linear's numbers, to within a few 1e-5, so it is
 # drawn in the middle row only); middle row: the same errors of uGIMP and LME over linear's (same integrator, ppc,
-# mesh), linear the red line at 1, uGIMP its markers on it, LME within about 10 %; bottom row: large amplitude
-# (diagonal stretch), every shape. Colour: shape function (palette.gp); the integrator's dash and marker (FE solid
-# with circles, NPC dashed with squares, USL and MUSL with triangles); 1x1 particles per cell filled markers, 2x2 open
-# ones, drawn larger. Right column: today's baselines' velocity error at 2x2 ppc, with LME γ = 3 + NPC (2x2) for
-# comparison. Grey dotted: slopes 1 and 2. A run that stopped (black cross) or ended no better than a flat field
-# (failed, black ring) lies on the strip above the data, its method's marker inside, at its mesh: one strip row per
-# series with such a run, named at its left (method and ppc). Each amplitude's panels share the y range of its data
-# (and the strip's height); the legend lies in the middle row's right.
+# mesh), linear the red line at 1, uGIMP its markers on it, LME within about 10 %, and (right) MUSL's velocity error
+# over USL's at 2x2 ppc, the two that lie on each other in the top right panel, their range of ratios in its title;
+# bottom row: large amplitude (diagonal stretch), every shape. Colour: shape function (palette.gp); the integrator's
+# dash and marker (FE solid with circles, NPC dashed with squares, USL and MUSL with triangles); 1x1 particles per
+# cell filled markers, 2x2 open ones, drawn larger. Right column, top and bottom: today's baselines' velocity error
+# at 2x2 ppc, with LME γ = 3 + NPC (2x2) for comparison. Grey dotted: slopes 1 and 2. A run that stopped (black
+# cross) or ended no better than a flat field (failed, black ring) lies on the strip above the data, its method's
+# marker beside it (right), at its mesh: one strip row per series with such a run, named at its left (method and
+# ppc); an amplitude without such a run has no strip, the figure's title says so. No y tic on a strip. Each
+# amplitude's panels share the y range of its data (and the strip's height); the legend lies below the panels.
+# Every number in the titles is computed here from the CSV.
 # gnuplot -e "dir='...'; data='...'; out='...'" smooth_manufactured.gp
 load dir."/common.gp"
-w = 13.3; h = 10.5
+w = 13.3; h = 11.1
 file = data.'/smooth_manufactured.csv'
 # columns: 1 amplitude, 2 shape, 3 integrator, 4 ppc, 5 cells, 6 velocity error, 7 stress error, 10 status (ok, or
 # failed: stopped), 15 ending (done, failed, stopped)
@@ -47,6 +50,16 @@ ratio_low = (STATS_min_x < STATS_min_y ? STATS_min_x : STATS_min_y) - 0.03; rati
 stats file using (strcol(1) eq 'small' && strcol(2) eq 'ugimp' ? abs(ratio('small', 'ugimp', strcol(3), $4, 6) - 1) : NaN):\
   (strcol(1) eq 'small' && strcol(2) eq 'ugimp' ? abs(ratio('small', 'ugimp', strcol(3), $4, 7) - 1) : NaN) nooutput
 ugimp_off = (STATS_max_x > STATS_max_y ? STATS_max_x : STATS_max_y)  # uGIMP's largest departure from linear's
+# MUSL's velocity error over USL's (small amplitude, 2x2 ppc, same mesh): the two lie on each other in the top right
+# panel; their ratio is the middle row's right panel, its range [musl_low:musl_high] in that panel's title
+array usl_error[64]
+do for [k = 1:64] { usl_error[k] = NaN }
+stats file using (strcol(1) eq 'small' && strcol(2) eq 'linear' && strcol(3) eq 'usl' && $4 == 2 && strcol(15) eq 'done' && $5 <= 64 ? (usl_error[int($5)] = $6, 0) : 0) nooutput
+musl_ratio(dummy) = (done('small', 'linear', 'musl', 2) && $5 <= 64 ? $6 / usl_error[int($5)] : NaN)
+stats file using (musl_ratio(0)) nooutput
+musl_low = STATS_min; musl_high = STATS_max
+ratio_low = (musl_low - 0.03 < ratio_low ? musl_low - 0.03 : ratio_low); ratio_high = (musl_high + 0.03 > ratio_high ? musl_high + 0.03 : ratio_high)
+signed(r) = sprintf('%+.1f', 100 * (r - 1))
 # The series of each amplitude with a run on the strip (paper's and baselines' apart); each has a row of the strip.
 do for [a in 'small large'] { do for [group in 'paper paper_small baselines'] {
   list = ''
@@ -74,27 +87,29 @@ do for [a in 'small large'] { do for [group in 'paper paper_small baselines'] {
     m = word(list, k)
     names = names . sprintf("set label %d '%s, %s' at graph 0.015, first %.12g left front; ", 90 + k, method_name(part(m, 1), part(m, 2)), ppc_name(part(m, 3)), row_y(a, k))
   }
-  if (words(list) == 0) { names = sprintf("set label 91 'every run here ended (none stopped or failed)' at graph 0.015, first %.12g left front; ", row_y(a, (rows(a) + 1) / 2.0)) }
+  if (words(list) == 0 && rows(a) > 0) { names = sprintf("set label 91 'every run here ended (none stopped or failed)' at graph 0.015, first %.12g left front; ", row_y(a, (rows(a) + 1) / 2.0)) }
   eval sprintf("names_%s_%s = names", a, group)
 } }
 unname = ''
 do for [k = 1:12] { unname = unname . sprintf('unset label %d; ', 90 + k) }
-on_strip(a, group, kind, how) = sprintf("for [m in onstrip_%s_%s] file using (off('%s', part(m, 1), part(m, 2), int(part(m, 3)), '%s') ? $5 : NaN):(row_y('%s', rank(m, onstrip_%s_%s))) with points %s", a, group, a, kind, a, a, group, how)
-inside = "pt (part(m, 3) eq '1' ? marker(part(m, 2)) : open(marker(part(m, 2)))) ps 1.2 lc rgb colour(part(m, 1))"
-strip_runs(a, group) = (words(strip_list(a, group)) == 0 ? '' : ', ' . on_strip(a, group, 'stopped', stopped_style) . ', ' . on_strip(a, group, 'failed', failed_style) . \
-  ', ' . on_strip(a, group, 'stopped', inside) . ', ' . on_strip(a, group, 'failed', inside))
+on_strip(a, group, kind, how, x) = sprintf("for [m in onstrip_%s_%s] file using (off('%s', part(m, 1), part(m, 2), int(part(m, 3)), '%s') ? $5 * %g : NaN):(row_y('%s', rank(m, onstrip_%s_%s))) with points %s", a, group, a, kind, x, a, a, group, how)
+beside = "pt (part(m, 3) eq '1' ? marker(part(m, 2)) : open(marker(part(m, 2)))) ps (part(m, 3) eq '1' ? 1.1 : 1.4) lc rgb colour(part(m, 1))"
+strip_runs(a, group) = (words(strip_list(a, group)) == 0 ? '' : ', ' . on_strip(a, group, 'stopped', stopped_style, 1) . ', ' . on_strip(a, group, 'failed', failed_style, 1) . \
+  ', ' . on_strip(a, group, 'stopped', beside, 1.06) . ', ' . on_strip(a, group, 'failed', beside, 1.06))
 # the y range of an amplitude, with its strip when it has one; tics on every decade up to the data's top, none on the strip
 decades(a) = sprintf("set ytics %.12g, 10, %.12g; ", 10**floor(log10(low(a))), high(a))
 yrange(a, group) = unname . decades(a) . (any_strip(a) ? sprintf("set yrange [%.12g:%.12g]; ", low(a), strip_top(a)) . strip_common(high(a), strip_top(a), high(a), '') . value(sprintf('names_%s_%s', a, group)) : \
   sprintf("set yrange [%.12g:%.12g]; ", low(a), high(a)) . unstrip)
 guides = sprintf(", 0.15 * (x / 8)**-1 with lines %s, 0.15 * (x / 8)**-2 with lines %s", reference_style, reference_style)
-# Panels at explicit places: column c (1-3), from screen height b to t.
-at(c, b, t) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set bmargin at screen %g; set tmargin at screen %g; ", 0.06 + (c - 1) * 0.325, 0.06 + (c - 1) * 0.325 + 0.28, b, t)
+# Panels at explicit places: column c (1-3), from t to b pixels from the top (120 px an inch): the top row from 113 to
+# 428, the ratios from 536 to 693, the bottom row from 819 to 1184, the legend under it.
+screen_y(px) = 1 - px / (h * 120.0)
+at(c, t, b) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set bmargin at screen %g; set tmargin at screen %g; ", 0.06 + (c - 1) * 0.325, 0.06 + (c - 1) * 0.325 + 0.28, screen_y(b), screen_y(t))
 errors(a, group, col) = sprintf("plot for [m in %s] file using (%s ? $5 : NaN):(error('%s', part(m, 1), part(m, 2), int(part(m, 3)), %d)) with linespoints %s", group, "mine('".a."', part(m, 1), part(m, 2), int(part(m, 3)))", a, col, look) . guides . strip_runs(a, group)
-panel(a, group, col, c, b, t, title, ylabel) = at(c, b, t) . "set logscale y; set format y '10^{%L}'; " . yrange(a, group) . sprintf("set title '%s'; set ylabel '%s'; ", title, ylabel) . errors(a, group, col) . "; "
+panel(a, group, col, c, t, b, title, ylabel) = at(c, t, b) . "set logscale y; set format y '10^{%L}'; " . yrange(a, group) . sprintf("set title '%s'; set ylabel '%s'; ", title, ylabel) . errors(a, group, col) . "; "
 # linear's line at 1 first, uGIMP's markers on it (no line: its lines would cover linear's), LME's lines and markers
 ratio_of(s, col) = sprintf("file using (part(m, 1) eq '%s' && mine('small', part(m, 1), part(m, 2), int(part(m, 3))) ? $5 : NaN):(ratio('small', part(m, 1), part(m, 2), int(part(m, 3)), %d))", s, col)
-ratios(col, c, title) = at(c, 0.45, 0.575) . unstrip . unname . sprintf("unset logscale y; set format y '%%g'; set ytics 0.05; set yrange [%g:%g]; set title '%s'; set ylabel 'error / linear’s'; ", ratio_low, ratio_high, title) . \
+ratios(col, c, title) = at(c, 536, 693) . unstrip . unname . sprintf("unset logscale y; set format y '%%g'; set ytics 0.05; set yrange [%g:%g]; set title '%s'; set ylabel 'error / linear’s'; ", ratio_low, ratio_high, title) . \
   sprintf("plot 1 with lines lw %g lc rgb '%s', ", method_lw, colour('linear')) . "for [m in paper] " . ratio_of('ugimp', col) . " with points " . point . \
   ", for [m in paper] " . ratio_of('lme', col) . " with linespoints " . look . "; set ytics auto; "
 vlabel = 'RMS |v_p - v| / Aω'; slabel = 'RMS |σ_p - σ| / σ scale'
@@ -102,23 +117,32 @@ stats file using (strcol(10) eq 'failed' ? 1 : 0) nooutput
 stops = STATS_sum
 stats file using (strcol(10) eq 'ok' && strcol(15) eq 'failed' ? 1 : 0) nooutput
 fails = STATS_sum
-legend_slot = "set lmargin at screen 0.68; set rmargin at screen 0.99; set bmargin at screen 0.43; set tmargin at screen 0.575; unset logscale; unset border; unset tics; unset grid; unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . \
-  "set key inside left top vertical Left reverse samplen 3 maxrows 7 width -14; plot -1, " . \
+# the right of the middle row: MUSL over USL, USL's line at 1
+musl_panel = at(3, 536, 693) . unstrip . unname . sprintf("unset logscale y; set format y '%%g'; set ytics 0.05; set yrange [%g:%g]; ", ratio_low, ratio_high) . \
+  "set title 'small: velocity, MUSL over USL, 2x2 ppc (" . signed(musl_low) . " to " . signed(musl_high) . " %)'; set ylabel 'error / USL’s'; " . \
+  "plot 1 with lines " . method_line('linear', 'usl') . ", file using (mine('small', 'linear', 'musl', 2) ? $5 : NaN):(musl_ratio(0)) with linespoints " . \
+  sprintf("lw %g dt %d pt %d ps 1.5 lc rgb '%s'", method_lw, dash('musl'), open(marker('musl')), colour('linear')) . "; set ytics auto; "
+legend_band = sprintf("set lmargin at screen 0.02; set rmargin at screen 0.99; set bmargin at screen 0.003; set tmargin at screen %g; ", screen_y(1244)) . \
+  "unset logscale; unset border; unset tics; unset grid; unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . unname . \
+  "set key inside left top vertical Left reverse samplen 3 maxrows 4 width -14; plot -1, " . \
   "for [s in 'linear ugimp lme bspline2 bspline3'] keyentry with lines lw method_lw lc rgb colour(s) title shape_name(s), " . \
   "for [i in 'fe npc usl musl'] keyentry with linespoints lw method_lw dt dash(i) pt marker(i) lc rgb c_exact title integrator_name(i), " . \
   sprintf("keyentry with points pt %d lc rgb '%s' title '1x1 ppc: filled markers', keyentry with points pt %d ps 1.5 lc rgb '%s' title '2x2 ppc: open, large', ", marker('fe'), c_exact, open(marker('fe')), c_exact) . \
   "keyentry with lines ".reference_style." title 'slopes 1 and 2'" . \
-  (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (its method’s marker inside)'" : "") . \
-  (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: error ≥ a flat field’s'" : "") . "; " . \
+  (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (its method’s marker beside)'" : "") . \
+  (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: error ≥ a flat field’s (marker beside)'" : "") . "; " . \
   "set border; set tics; set grid; "
+# the runs of an amplitude on the strip (none: the title says every run ended)
+stats file using (strcol(1) eq 'small' && strcol(15) ne 'done' ? 1 : 0) nooutput
+small_off = STATS_sum
 draw = "set border; set tics; set grid; set key off; set multiplot title '2D manufactured solutions (plane strain, ν = 0.3): RMS errors at 1/8, 1/4, 3/8, 1/2 period against the cells per side\n" . \
-  sprintf("at small amplitude uGIMP gives linear’s numbers (to less than %d·10^{%d}): top row linear and LME γ = 3, middle row each over linear’s (uGIMP the markers on 1); USL and MUSL nearly coincide (right)'; ", \
-  ceil(ugimp_off / 10**floor(log10(ugimp_off))), floor(log10(ugimp_off))) . \
+  sprintf("at small amplitude uGIMP gives linear’s numbers (to less than %d·10^{%d}): top row linear and LME γ = 3, middle row each over linear’s (uGIMP the markers on 1), and MUSL over USL", \
+  ceil(ugimp_off / 10**floor(log10(ugimp_off))), floor(log10(ugimp_off))) . (small_off == 0 ? "\nevery run at small amplitude ended (none stopped or failed): no strip there" : '') . "'; " . \
   "set logscale x; set xrange [7:36]; set xtics (8, 12, 16, 24, 32); set xlabel 'cells per side'; " . \
-  panel('small', 'paper_small', 6, 1, 0.66, 0.91, 'small amplitude: velocity, linear and LME γ = 3', vlabel) . panel('small', 'paper_small', 7, 2, 0.66, 0.91, 'small amplitude: stress, linear and LME γ = 3', slabel) . \
-  panel('small', 'baselines', 6, 3, 0.66, 0.91, 'small: baselines and LME γ = 3 + NPC, 2x2 ppc, velocity', vlabel) . \
-  ratios(6, 1, 'small amplitude: velocity over linear’s (uGIMP, LME)') . ratios(7, 2, 'small amplitude: stress over linear’s (uGIMP, LME)') . \
-  panel('large', 'paper', 6, 1, 0.06, 0.35, 'large amplitude (diagonal stretch): velocity', vlabel) . panel('large', 'paper', 7, 2, 0.06, 0.35, 'large amplitude: stress', slabel) . \
-  panel('large', 'baselines', 6, 3, 0.06, 0.35, 'large: baselines and LME γ = 3 + NPC, 2x2 ppc, velocity', vlabel) . \
-  legend_slot . "unset multiplot; " . unstrip . "set lmargin -1; set rmargin -1; set bmargin -1; set tmargin -1"
+  panel('small', 'paper_small', 6, 1, 113, 428, 'small amplitude: velocity, linear and LME γ = 3', vlabel) . panel('small', 'paper_small', 7, 2, 113, 428, 'small amplitude: stress, linear and LME γ = 3', slabel) . \
+  panel('small', 'baselines', 6, 3, 113, 428, 'small: baselines and LME γ = 3 + NPC, 2x2 ppc, velocity', vlabel) . \
+  ratios(6, 1, 'small amplitude: velocity over linear’s (uGIMP, LME)') . ratios(7, 2, 'small amplitude: stress over linear’s (uGIMP, LME)') . musl_panel . \
+  panel('large', 'paper', 6, 1, 819, 1184, 'large amplitude (diagonal stretch): velocity', vlabel) . panel('large', 'paper', 7, 2, 819, 1184, 'large amplitude: stress', slabel) . \
+  panel('large', 'baselines', 6, 3, 819, 1184, 'large: baselines and LME γ = 3 + NPC, 2x2 ppc, velocity', vlabel) . \
+  legend_band . "unset multiplot; " . unstrip . "set lmargin -1; set rmargin -1; set bmargin -1; set tmargin -1"
 load dir."/output.gp"
