@@ -130,7 +130,12 @@ inline std::vector<DomainClaim> fig6_claims(const Runs& runs, const Scope& scope
 
 /// Fig. 6: the fitted orders, the claims at this project's beta, then LME's under the authors' beta.
 inline Section fig6_section(const Runs& runs) {
-  Section section{"Fig. 6: error at point A against the number of cells (`dyka_fig6`)", order_table(runs), fig6_claims(runs, full_scope())};
+  Section section{"Fig. 6: error at point A against the number of cells (`dyka_fig6`)",
+                  "The figure: RMS of v_A / |v0| against cells, one panel per shape function, FE and NPC, on the grid-crossing "
+                  "bands, with the fitted order of each band printed per method; LME also under the authors' β; runs that "
+                  "stopped or failed on the strip above the data, named; below each panel FE over NPC (linear, uGIMP) or the "
+                  "authors' β over γ = 3 (LME), in per cent.\n\n" + order_table(runs),
+                  fig6_claims(runs, full_scope())};
   for (const auto& claim : under_authors_beta(fig6_claims(runs, lme_scope(authors_lme))))
     section.claims.push_back(claim);
   return section;

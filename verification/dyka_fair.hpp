@@ -94,7 +94,11 @@ inline Section fig8_section(const Runs& runs) {
     add_gamma_spread(claim, runs, integrator, authors, 0.0);
     add_gamma_spread(above_two, runs, integrator, authors, 2.0);
   }
-  return {"Fig. 8: sensitivity to gamma (`dyka_fig8`)", "", {claim, above_two}};
+  return {"Fig. 8: sensitivity to gamma (`dyka_fig8`)",
+          "The figure: left, v_A against t for each γ (LME + NPC, 40 cells) beside the exact one, and below each γ minus "
+          "γ = 5; right, RMS of v_A / |v0| against γ for FE and NPC under both β rules, and below the authors' β over "
+          "this project's, in per cent.",
+          {claim, above_two}};
 }
 
 /// The claims of Figs. 9 and 10 on `scope`: the shapes compared on every mesh without crossing (LME: scope.lme), and
@@ -148,7 +152,10 @@ inline std::vector<DomainClaim> fig9_10_claims(const Runs& runs, const Scope& sc
 
 /// Figs. 9 and 10: the claims at this project's beta, then under the authors' beta (LME's runs at it).
 inline Section fig9_10_section(const Runs& runs) {
-  Section section{"Figs. 9 and 10: shape functions compared (`dyka_fig9`: FE, `dyka_fig10`: NPC)", "", fig9_10_claims(runs, full_scope())};
+  Section section{"Figs. 9 and 10: shape functions compared (`dyka_fig9`: FE, `dyka_fig10`: NPC)",
+                  "The figures: v_A against t at 40 cells for linear, uGIMP, LME γ = 3 and LME under the authors' β beside the "
+                  "exact one; below, each minus the exact v_A, and each minus linear's, its largest gap in the key.",
+                  fig9_10_claims(runs, full_scope())};
   for (const auto& claim : under_authors_beta(fig9_10_claims(runs, lme_scope(authors_lme))))
     section.claims.push_back(claim);
   return section;

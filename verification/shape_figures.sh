@@ -39,7 +39,13 @@ d08=$(distance lme_0.8) d18=$(distance lme_1.8) d4=$(distance lme_4)
   echo
   echo "![shapes_fig4](figures/shapes_fig4.png)"
   echo
+  echo "The figure: N, dN/dx and dN/dy (rows) of the central node of the 2D lattice (h = 1) for Q4, uGIMP and LME γ = 0.8,"
+  echo "1.8 and 4 (columns), on one signed colour scale per row (white at zero)."
+  echo
   echo "![shapes_fig4_1d](figures/shapes_fig4_1d.png)"
+  echo
+  echo "The same in 1D: N and dN/dx of the node at x = 0, and below each its difference from the linear hat, where uGIMP"
+  echo "and LME γ = 4, which lie within a line width of the hat above, show."
   echo
   echo "| claim | measured | verdict |"
   echo "|---|---|---|"
