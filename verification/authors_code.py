@@ -72,8 +72,8 @@ def main():
         out.write("![authors_code](figures/authors_code.png)\n\n"
                   "The figure sets particle A's velocity of both codes beside the exact solution at 40 and at 640 "
                   "cells (ours on their grid; uGIMP at 640 cells also their run on their grid extended both ways), "
-                  "and below, ours minus theirs over v0 at their sample times on the three meshes, on a symmetric log "
-                  "axis; its largest magnitude is the table's max abs dv / v0 (%s).\n\n" % largest)
+                  "and below, the largest |ours - theirs| / v0 in each 2 µs (ours at their sample times) on the three meshes, on a "
+                  "log axis; its largest value is the table's max abs dv / v0 (%s).\n\n" % largest)
         if beyond:
             out.write("Where they do not agree: uGIMP at 640 cells on their own strip, and on their strip with a row above "
                       "and below but no cell beyond the free end (`margin0_rows1`: the rows take most of the gap away, the "

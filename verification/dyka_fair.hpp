@@ -41,6 +41,10 @@ inline std::vector<DomainClaim> fair_claims(const Runs& runs, const Scope& scope
 /// FE against NPC, fairly: the claims at this project's beta, then LME's under the authors' beta.
 inline Section fair_section(const Runs& runs) {
   Section section{"FE against NPC, fairly: FE at its own time, the Newmark average, FE damped like NPC (`dyka_fair`; their histories: `dyka_fig7_fair`)",
+                  "The figure `dyka_fair`: per shape function, RMS of v_A / |v0| against cells (10-160, no crossing) for FE "
+                  "compared at t and at t + dt/2, NPC as printed and with the Newmark average, and FE damped by the PIC/FLIP "
+                  "blend; below, each over NPC's. The figure `dyka_fig7_fair`: Fig. 7's histories with the fair variants, "
+                  "in four panels, each jump panel with the variants' differences below. "
                   "The blend's FLIP fraction is found per shape and mesh, by bisection, so that shape + FE ends (t = 200 µs) with the "
                   "energy shape + NPC ends with, to 1e-4 of it (data/dyka_fair.csv: flip_fraction, energy_fe_blend, energy_npc).",
                   fair_claims(runs, full_scope())};

@@ -390,7 +390,10 @@ void write_refinement_sections(std::ostream& report, const verification::SoilLoo
 void write_other_sections(std::ostream& report, const SuiteClaims& c) {
   report << "### Beyond the paper: nu = 0.3 with lateral rollers\n\n"
          << "![nu = 0.3](figures/soil_poisson.png)\n\n"
-         << "The exact column uses the constrained modulus M = E(1-nu)/((1+nu)(1-2nu)) = 6.73 MPa; Eq. (42) still uses "
+         << "The figure: left, sigma_xx against sigma_yy on every particle at 20 s beside sigma_xx = nu/(1-nu) sigma_yy, "
+            "and below each particle's relative difference from that line; right, the top particle's u_y(t) beside the "
+            "exact column and the finite-strain static settlement, and below u_y - u_exact. "
+            "The exact column uses the constrained modulus M = E(1-nu)/((1+nu)(1-2nu)) = 6.73 MPa; Eq. (42) still uses "
             "sqrt(E/rho) = 28.9 m/s, slower than the P-wave speed sqrt(M/rho) = 33.5 m/s.\n\n";
   verification::write_claims(report, c.poisson);
   verification::write_claims(report, c.stability);
