@@ -168,7 +168,8 @@ def report(cases, analytical, problems, data_path):
                   "oscillation PIC has not yet damped at 0.2 s. The gap to rho g H halves with h: it is the "
                   "resolution of one cell, not an error of either code.", "",
                   "![hydrostatic_column](figures/hydrostatic_column.png)", "",
-                  "The figure shows every particle's sigma_yy at 0.2 s against its height beside -rho g (H - y) (a) "
+                  "The figure shows every particle's sigma_yy at 0.2 s against its height beside -rho g (H - y) (a), "
+                  "with USF - USL per particle beside it (the two updates lie on one another), "
                   "and their difference near the base, one stress per cell (b); the base stress's gap to rho g H "
                   "against h for both codes beside rho g h/2 and rho g h/2 less the bottom cell's compression (the "
                   "weight over the compressed volume, the table's last but one column) (c); and ours against CB-Geo "
