@@ -2,8 +2,8 @@
 # cells, at 640 cells, the initial speed swept (data/dyka_amplitude.csv), one column per integrator (FE, NPC), each
 # shape in its palette style. Top row: the RMS; a run that stopped (ending stopped) or is no better than a flat line
 # (ending failed, its RMS in the key) is drawn on the strip above the data, one row per shape (named at the row's
-# left: linear top, LME bottom), in its method's marker under a black cross (stopped) or ring (failed), and named in
-# the key with its amplitudes. The dotted line is the first cell face (U/h = 1/2). Bottom row: linear and uGIMP
+# left: linear top, LME bottom, ruled apart), its method's marker in its colour above a black cross (stopped) or ring
+# (failed), so that both read, and named in the key with its amplitudes. The dotted line is the first cell face (U/h = 1/2). Bottom row: linear and uGIMP
 # against LME gamma = 3 with the same integrator (RMS / LME's - 1, in per cent) where both completed, since the
 # shapes lie on each other in the top row (with NPC within a line's width); each title gives how far apart they lie
 # below the first cell face.
@@ -15,15 +15,19 @@ stats f using (strcol(10) eq 'done' ? $5 : NaN) nooutput
 lo = STATS_min / 1.1; hi = STATS_max * 1.12
 stats f using 3 nooutput
 xlo = STATS_min / 1.4; xhi = STATS_max * 1.4
-# The strip, taller than common.gp's (three rows of crosses and rings): its top, a shape's row, the row's name.
-tall = 0.32
+# The strip, taller than common.gp's (three rows, each a method's marker above its cross or ring): its top; a shape's
+# row (linear top), at(s, f) the height a fraction f up its row; the rows' names and the rules between them.
+tall = 0.48
 strip_top = hi * (hi / lo)**tall
 order(s) = s eq 'linear' ? 1 : s eq 'ugimp' ? 2 : 3
-row(s) = hi * (hi / lo)**(tall * (4 - order(s)) / 4.0)
+at(s, f) = hi * (hi / lo)**(tall * (3 - order(s) + f) / 3.0)
+mark_row(s) = at(s, 0.7)
+cross_row(s) = at(s, 0.3)
+rule(k) = sprintf("set arrow %d from graph 0, first %.12g to graph 1, first %.12g nohead lw 1 lc rgb c_context front; ", 93 + k, at('lme', k), at('lme', k))
 strip = strip_log(lo, hi, '').sprintf("set yrange [%.12g:%.12g]; ", lo, strip_top).\
   sprintf("set label 91 '%s' at graph 0.01, first %.12g left front; set label 92 '%s' at graph 0.01, first %.12g left front; set label 93 '%s' at graph 0.01, first %.12g left front; ", \
-  shape_name('linear'), row('linear'), shape_name('ugimp'), row('ugimp'), shape_name('lme'), row('lme'))
-unstrip_rows = unstrip."unset label 91; unset label 92; unset label 93; "
+  shape_name('linear'), at('linear', 0.5), shape_name('ugimp'), at('ugimp', 0.5), shape_name('lme'), at('lme', 0.5)).rule(1).rule(2)
+unstrip_rows = unstrip."unset label 91; unset label 92; unset label 93; unset arrow 94; unset arrow 95; "
 mine(s, i) = strcol(1) eq s && strcol(2) eq i
 
 # LME gamma = 3's RMS per integrator and amplitude (" i:U/h:rms" words), the bottom row's reference.
@@ -60,9 +64,9 @@ do for [i in "fe npc"] {
 MS = "lw method_lw dt dash(i) pt marker(i) lc rgb colour(s)"
 curves(i) = sprintf("i = '%s'; ", i).\
   "plot for [s in shapes] f using (mine(s, i) && strcol(10) eq 'done' ? $3 : NaN):5 with linespoints ps 1.2 @MS title method_name(s, i), ".\
-  "for [s in shapes] f using (mine(s, i) && strcol(10) ne 'done' ? $3 : NaN):(row(s)) with points ps 1.2 pt marker(i) lc rgb colour(s) notitle, ".\
-  "f using (strcol(2) eq i && strcol(10) eq 'stopped' ? $3 : NaN):(row(strcol(1))) with points ".stopped_style." notitle, ".\
-  "f using (strcol(2) eq i && strcol(10) eq 'failed' ? $3 : NaN):(row(strcol(1))) with points ".failed_style." notitle".value('entries_'.i)
+  "for [s in shapes] f using (mine(s, i) && strcol(10) ne 'done' ? $3 : NaN):(mark_row(s)) with points ps 1.3 pt marker(i) lc rgb colour(s) notitle, ".\
+  "f using (strcol(2) eq i && strcol(10) eq 'stopped' ? $3 : NaN):(cross_row(strcol(1))) with points ".stopped_style." notitle, ".\
+  "f using (strcol(2) eq i && strcol(10) eq 'failed' ? $3 : NaN):(cross_row(strcol(1))) with points ".failed_style." notitle".value('entries_'.i)
 cell_face = sprintf("set arrow 1 from 0.5, graph 0 to 0.5, first %g nohead %s; set label 1 'first cell face' at 0.5, first %g right rotate by 90 offset -0.6,0 front; ", hi, reference_style, hi / 1.03)
 panel(i) = sprintf("set title '%s: below the first cell face the three shapes lie within %.2f %% of each other%s'; ", integrator_name(i), value('apart_'.i), value('apart_'.i) < 1 ? ",\nwithin the width of a line: drawn apart below" : '').\
   "set logscale y; set ylabel 'RMS of v_A / |v_0|'; set ytics (0.07, 0.08, 0.09, 0.1, 0.15, 0.2, 0.3, 0.4) nomirror; set format x ''; unset xlabel; ".\

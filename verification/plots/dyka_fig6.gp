@@ -5,7 +5,8 @@
 # the fitted order of each band ± its standard error is printed on the panel, named by its method ('no fit': a band
 # with fewer than 3 finished runs). Only runs that ended `done` are drawn as values; a run the solver stopped (×) or
 # one no better than a flat line (failed, ○) is drawn on the strip above the data (common.gp), its method's marker in
-# its colour inside the black cross or ring, FE left of NPC, and named (method and mesh) on the strip.
+# its colour above the black cross or ring (so that circle or square and colour read), FE left of NPC (and the
+# authors' β right of γ = 3's where they have runs there), and named (method and mesh) on the strip.
 # LME's panel also holds its runs under the authors' β (lme_authors colour, the integrator's filled markers, drawn
 # smaller and thinner on top of γ = 3's so that both show where they meet). Under each panel, a difference panel of the
 # runs that finished under both: linear and uGIMP FE's RMS over NPC's − 1 in % (the shape's colour, FE's dash and
@@ -25,7 +26,9 @@ stats sweep using (strcol(22) eq 'done' ? $8 : NaN) nooutput
 lo = STATS_min; hi = STATS_max
 stats authors using (strcol(22) eq 'done' ? $8 : NaN) nooutput
 lo = (STATS_min < lo ? STATS_min : lo) / 1.9; hi = (STATS_max > hi ? STATS_max : hi) * 1.25
-ystrip = strip_y_log(lo, hi)
+# On the strip: the run's own marker in its upper half, the black cross (stopped) or ring (failed) under it.
+mark_y = hi * (hi / lo)**0.105
+cross_y = hi * (hi / lo)**0.046
 # Labelled y tics within the data range only (none on the strip).
 yticks = ''
 do for [t in '0.02 0.03 0.05 0.07 0.1 0.15 0.2 0.3 0.5 0.7 1'] { if (t + 0 >= lo && t + 0 <= hi) { yticks = yticks.(yticks eq '' ? '' : ', ').t } }
@@ -37,15 +40,19 @@ is(shape, integrator, ending) = strcol(1) eq shape && strcol(2) eq integrator &&
 size(shape, integrator) = (shape eq 'lme_authors' ? 0.7 : 1.0) * (integrator eq 'fe' ? 1.5 : 1.0)
 style(shape, integrator) = shape eq 'lme_authors' ? \
   sprintf("lw 1 dt %d pt %d lc rgb '%s'", dash(integrator), marker(integrator), colour(shape)) : method_style(shape, integrator)
-# On the strip FE lies left of NPC (the same mesh), so that two runs of one mesh stay apart.
-shift(integrator) = integrator eq 'fe' ? 0.86 : 1.16
+# On the strip FE lies left of NPC (the same mesh), so that two runs of one mesh stay apart; where the authors' β
+# has runs on the strip too, LME's four methods side by side (γ = 3 left of the authors' β).
+stats authors using (strcol(22) ne 'done' ? 1 : 0) nooutput
+authors_off = STATS_sum
+shift(shape, integrator) = authors_off == 0 || (shape ne 'lme' && shape ne 'lme_authors') ? (integrator eq 'fe' ? 0.83 : 1.17) : \
+  word(shape eq 'lme' ? '0.57 0.74' : '0.95 1.22', integrator eq 'fe' ? 1 : 2) + 0
 done_curve(file, shape, i) = sprintf("'%s' using (is('%s','%s','done') ? $3 : NaN):8 with linespoints %s ps %g title '%s'", \
   file, shape, i, style(shape, i), size(shape, i), method_name(shape, i))
-# A run on the strip: its method's marker in its colour, the black cross (stopped) or ring (failed) over it.
-ended(file, shape, i, ending) = sprintf("'%s' using (is('%s','%s','%s') ? $3 * shift('%s') : NaN):(ystrip) with points pt %d ps 1 lc rgb '%s' notitle, ", \
-  file, shape, i, ending, i, marker(i), colour(shape)). \
-  sprintf("'%s' using (is('%s','%s','%s') ? $3 * shift('%s') : NaN):(ystrip) with points %s notitle", \
-  file, shape, i, ending, i, ending eq 'stopped' ? stopped_style : failed_style)
+# A run on the strip: its method's marker in its colour, the black cross (stopped) or ring (failed) under it.
+ended(file, shape, i, ending) = sprintf("'%s' using (is('%s','%s','%s') ? $3 * shift('%s', '%s') : NaN):(mark_y) with points pt %d ps %g lc rgb '%s' notitle, ", \
+  file, shape, i, ending, shape, i, marker(i), shape eq 'lme_authors' ? 1.0 : 1.3, colour(shape)). \
+  sprintf("'%s' using (is('%s','%s','%s') ? $3 * shift('%s', '%s') : NaN):(cross_y) with points %s notitle", \
+  file, shape, i, ending, shape, i, ending eq 'stopped' ? stopped_style : failed_style)
 curves(file, shape) = done_curve(file, shape, 'fe').', '.done_curve(file, shape, 'npc').', '. \
   ended(file, shape, 'fe', 'stopped').', '.ended(file, shape, 'npc', 'stopped').', '. \
   ended(file, shape, 'fe', 'failed').', '.ended(file, shape, 'npc', 'failed')
@@ -131,7 +138,7 @@ method_key = "set key at graph 0.5, screen 0.08 center top maxrows 2 Left revers
 fig_title = "Fig. 6: RMS of v_A (Eq. 43) / |v_0| against the number of cells (CFL 0.5); shading: grid-crossing band "
 fig_title = fig_title."(light: negligible, middle: transition, dark: crossing)\nPrinted: fitted order ± s.e. per band "
 fig_title = fig_title."(negligible | transition | crossing). Strip above the data: × stopped by the solver, ○ failed "
-fig_title = fig_title."(RMS no smaller than a flat line's),\nthe method's marker inside, FE left of NPC. FE's markers are drawn "
+fig_title = fig_title."(RMS no smaller than a flat line's),\nthe method's marker above it, FE left of NPC. FE's markers are drawn "
 fig_title = fig_title."larger, under NPC's; the authors' β smaller, over γ = 3's.\nBelow, in %, for the runs that finished under both: "
 fig_title = fig_title."FE's RMS over NPC's − 1 (linear, uGIMP); the authors' β's RMS over γ = 3's − 1, per integrator (LME)"
 draw = "set multiplot title fig_title; ". \

@@ -5,7 +5,8 @@
 # on each other there), each shape in its palette style (data/dyka_sweep.csv, CFL 0.5). A line joins a method's meshes
 # up to the grid-crossing band (2560 cells: a point of its own). Runs that stopped (status failed) or are no better
 # than a flat line (ending failed) are drawn on the strip above the data, one row per shape (named at its left: linear
-# top, LME bottom), in the method's marker under a black cross (stopped) or ring (failed), and named in the key. Each
+# top, LME bottom, ruled apart), the method's marker in its colour above a black cross (stopped) or ring (failed), so
+# that both read, and named in the key. Each
 # title gives how far apart the three shapes lie before the crossing band (with NPC they coincide); the third row's
 # titles how close linear and uGIMP + NPC lie to LME gamma = 3 + NPC from 40 cells.
 load dir."/common.gp"
@@ -19,14 +20,18 @@ stats f using (@done ? ($8 < $26 ? $8 : $26) : NaN) nooutput
 lo = STATS_min / 1.15
 stats f using (@done ? ($8 > $26 ? $8 : $26) : NaN) nooutput
 hi = STATS_max * 1.15
-# The strip, taller than common.gp's (three rows of crosses and rings): its top, a shape's row, the row's name.
-tall = 0.3
+# The strip, taller than common.gp's (three rows, each a method's marker above its cross or ring): a shape's row
+# (linear top), at(s, f) the height a fraction f up its row; the rows' names and the rules between them.
+tall = 0.45
 order(s) = s eq 'linear' ? 1 : s eq 'ugimp' ? 2 : 3
-row(s) = hi * (hi / lo)**(tall * (4 - order(s)) / 4.0)
+at(s, f) = hi * (hi / lo)**(tall * (3 - order(s) + f) / 3.0)
+mark_row(s) = at(s, 0.7)
+cross_row(s) = at(s, 0.3)
+rule(k) = sprintf("set arrow %d from graph 0, first %.12g to graph 1, first %.12g nohead lw 1 lc rgb c_context front; ", 93 + k, at('lme', k), at('lme', k))
 strip = strip_log(lo, hi, '').sprintf("set yrange [%.12g:%.12g]; ", lo, hi * (hi / lo)**tall).\
   sprintf("set label 91 '%s' at graph 0.01, first %.12g left front; set label 92 '%s' at graph 0.01, first %.12g left front; set label 93 '%s' at graph 0.01, first %.12g left front; ", \
-  shape_name('linear'), row('linear'), shape_name('ugimp'), row('ugimp'), shape_name('lme'), row('lme'))
-unstrip_rows = unstrip."unset label 91; unset label 92; unset label 93; "
+  shape_name('linear'), at('linear', 0.5), shape_name('ugimp'), at('ugimp', 0.5), shape_name('lme'), at('lme', 0.5)).rule(1).rule(2)
+unstrip_rows = unstrip."unset label 91; unset label 92; unset label 93; unset arrow 94; unset arrow 95; "
 mine(s, i) = strcol(1) eq s && strcol(2) eq i
 off(what) = what eq 'stopped' ? strcol(12) ne 'ok' : strcol(12) eq 'ok' && strcol(22) eq 'failed'
 
@@ -76,9 +81,9 @@ panel(i, c) = sprintf("i = '%s'; set title '%s, %s: the shapes lie within %.1f %
   strip.\
   sprintf("plot for [s in shapes] f using (mine(s, i) && @done && $3 < crossing ? $3 : NaN):%d with linespoints ps 1.1 @MS title method_name(s, i), ", c).\
   sprintf("for [s in shapes] f using (mine(s, i) && @done && $3 >= crossing ? $3 : NaN):%d with points ps 1.1 @MS notitle, ", c).\
-  "for [s in shapes] f using (mine(s, i) && !(@done) ? $3 : NaN):(row(s)) with points ps 1.1 pt marker(i) lc rgb colour(s) notitle, ".\
-  "f using (strcol(2) eq i && off('stopped') ? $3 : NaN):(row(strcol(1))) with points ".stopped_style." notitle, ".\
-  "f using (strcol(2) eq i && off('failed') ? $3 : NaN):(row(strcol(1))) with points ".failed_style." notitle".value('entries_'.i)
+  "for [s in shapes] f using (mine(s, i) && !(@done) ? $3 : NaN):(mark_row(s)) with points ps 1.3 pt marker(i) lc rgb colour(s) notitle, ".\
+  "f using (strcol(2) eq i && off('stopped') ? $3 : NaN):(cross_row(strcol(1))) with points ".stopped_style." notitle, ".\
+  "f using (strcol(2) eq i && off('failed') ? $3 : NaN):(cross_row(strcol(1))) with points ".failed_style." notitle".value('entries_'.i)
 difference(c) = sprintf("set title '%s: linear and uGIMP against LME γ = 3 with the same integrator;\nwith NPC within %.2f %% of it from 40 cells (the dashed curves on 0)'; unset logscale y; set ytics auto; set yrange [*:*]; set offsets 0, 0, graph 0.06, graph 0.06; ", c == 8 ? 'point A' : 'every particle', value(sprintf('npc_within_%d', c))).unstrip_rows.\
   sprintf("set ylabel '%s / LME γ = 3''s - 1 (%%)'; ", c == 8 ? 'RMS of v_A' : 'space-time norm').\
   sprintf("plot 0 with lines %s notitle, for [i in 'fe npc'] for [s in 'linear ugimp'] f using (mine(s, i) && @done && $3 < crossing ? $3 : NaN):(100 * (column(%d) / ref(i, %d, $3) - 1)) with linespoints ps 1.1 @MS title method_name(s, i)", reference_style, c, c)

@@ -1,20 +1,19 @@
 # Where methods fail, on the Dyka bar (40 cells, 20 ms), from data/dyka_stability.csv (a row per method),
 # data/dyka_stability_runs.csv (a row per run) and data/dyka_stability_factors.txt (the scan's CFLs as fractions of
 # the step limit), written by verification/dyka_stability.sh. Top: a column per method, named in words (its shape's
-# colour and its integrator's marker under it; LME's gammas, a sequence here, the ramp; an NPC with another Newmark
-# gamma, its gamma_N written over its marker), the scan's CFLs as rows, evenly spaced (the axis names each fraction of
+# colour and its integrator's marker under it; every LME in LME's colour, its gamma written over its marker, as an
+# NPC with another Newmark gamma has its gamma_N written over its marker), the scan's CFLs as rows, evenly spaced (the axis names each fraction of
 # the step limit the scan is placed by, column cfl_limit_scanned, in brackets under the method; the body it is
 # computed on is column scanned_limit_body: the free bar, the smaller of its limit at rest and with the particles
 # moved 1e-6 h towards the free end; the held bar's only where the free bar's analysis finds no stable CFL, and then
-# named so in the title and under the method). Each run is a dot, v0 black and left, v0/100 grey and right (the ramp
-# is LME's gammas); a run the solver stopped has the black cross over its dot. The bar reaches the last CFL before the
+# named so in the title and under the method). Each run is a dot, v0 black and left, v0/100 grey and right; a run the solver stopped has the black cross over its dot. The bar reaches the last CFL before the
 # first stopped run at v0; the black line is the step limit scanned (1, between the rows 0.995 and 1.005), the grey
 # one the step limit of a bar held at both ends (column cfl_limit_step; one above the scan's rows is drawn at the top
 # with its value). A cross inside a bar's range cannot be: a cross below a dot marks stable CFLs that are not an
 # interval. Bottom: v_A of linear + forward Euler at v0 at the two CFLs named by `below` and `above`
 # (dyka_stability_below.csv, dyka_stability_above.csv: the last CFL before its first stopped run and that first
 # stopped one), one panel each; where the stopped run stopped (the diagnosis's t) is a black vertical line and the
-# stopped marker on the strip above the data. The titles say which fractions of the limit they are and which other
+# stopped marker on the strip above the data, linear + FE's marker beside it. The titles say which fractions of the limit they are and which other
 # CFLs of the scan stop or complete, at v0 and at v0/100 (from the runs file).
 load dir."/common.gp"
 w = 13.3; h = 11.5
@@ -41,15 +40,15 @@ ftics = ''
 do for [k = 1:nf] { ftics = ftics.sprintf("%s'%s' %d", k > 1 ? ', ' : '', word(factors, k), k) }
 
 # A method's key in words: shape (LME's gamma named), integrator and its variant; shape and integrator keys of
-# the palette for its colour and marker, LME's gammas (a sequence here) the ramp in increasing gamma.
+# the palette for its colour and marker: every LME in LME's colour (this figure compares methods, it does not vary
+# gamma), its gamma written over its marker.
 shape_of(m) = m[1:strstrt(m, '_') - 1]
 rest_of(m) = m[strstrt(m, '_') + 1:]
 is_lme(s) = s[1:3] eq 'lme'
 lme_gammas = ''
 add_gamma(s) = strstrt(lme_gammas.' ', sprintf(' %g ', real(s[4:]))) > 0 ? 0 : (lme_gammas = lme_gammas.sprintf(' %g', real(s[4:])), 1)
 stats csv every ::1 using (is_lme(shape_of(strcol(1))) ? add_gamma(shape_of(strcol(1))) : 0) nooutput
-gamma_index(g) = 1 + sum [k = 1:words(lme_gammas)] (word(lme_gammas, k) + 0 < g ? 1 : 0)  # its rank, from the smallest
-shape_colour(s) = is_lme(s) ? ramp(gamma_index(real(s[4:])), words(lme_gammas)) : colour(s)
+shape_colour(s) = is_lme(s) ? colour('lme') : colour(s)
 integrator_of(m) = rest_of(m) eq 'npc_average' ? 'npcavg' : strstrt(rest_of(m), '_') > 0 ? rest_of(m)[1:strstrt(rest_of(m), '_') - 1] : rest_of(m)
 word_shape(s) = s[1:3] eq 'lme' ? sprintf('LME γ = %g', real(s[4:])) : shape_name(s)
 newmark(m) = rest_of(m)[strstrt(rest_of(m), 'gamma') + 5:]   # NPC's Newmark gamma of a variant
@@ -57,18 +56,22 @@ variant(m) = strstrt(rest_of(m), 'gamma') > 0 ? sprintf(', Newmark γ = %s', new
 method_words(m) = word_shape(shape_of(m)).' + '.integrator_name(integrator_of(m)).variant(m)
 body(c) = strstrt(strcol(c), 'held') == 1 ? ', held bar' : ''
 tic(name) = sprintf('%s (%.3f%s)', method_words(strcol(name)), column(12), body(13))
-# v0, v0/100: black and grey (the ramp colours LME's gammas here); their side of the column tells them apart too.
+# v0, v0/100: black and grey; their side of the column tells them apart too.
 amplitude_colour(k) = k == 1 ? c_exact : c_reference
 side(a) = a < -1 ? -0.2 : 0.2        # v0 left of the column's middle, v0/100 right
 limits = held == 0 ? "the free bar''s step limit (in brackets: the smaller at rest and with the particles moved 1e-6 h)" : sprintf("the free bar''s step limit (in brackets; the held bar''s for %d methods, so named)", held)
 base = -1.05                         # the row of the methods' markers, under the bars
-newmark_label(m) = "γ_N\n".newmark(m)
-newmark_y = 0.2                     # a Newmark variant's gamma, over its marker
+# Over a method's marker: a Newmark variant's gamma_N, an LME's gamma (empty for the others).
+over_label(m) = variant(m) ne '' ? "γ_N\n".newmark(m) : is_lme(shape_of(m)) ? sprintf("γ\n%g", real(shape_of(m)[4:])) : ''
+over_y = 0.08
+# the LME gammas of the columns, increasing, for the key ("1, 3, 5")
+gamma_list = ''
+do for [g in system("echo '".lme_gammas."' | tr ' ' '\\n' | grep . | sort -g | paste -sd ' ' -")] { gamma_list = gamma_list.(gamma_list eq '' ? '' : ', ').g }
 # A palette colour '#rrggbb' as the number `lc rgb variable` takes.
 rgb(c) = sum [k = 2:7] (strstrt('0123456789abcdef', c[k:k]) - 1) * 16**(7 - k)
 
 left = sprintf("set title 'Every scanned run of the %d methods, at CFLs that are fractions of %s' noenhanced; ", methods, limits).\
-  sprintf("set ylabel 'CFL / the step limit scanned (the scan''s rows, evenly spaced)'; set yrange [-1.5:%g]; set ytics (%s) nomirror; ", above_scan + 0.6, ftics).\
+  sprintf("set ylabel 'CFL / the step limit scanned (the scan''s rows, evenly spaced)'; set yrange [-1.5:%g]; set ytics (%s) nomirror; ", above_scan + 1.3, ftics).\
   sprintf("set xrange [-0.7:%g]; set xtics rotate by -40 noenhanced nomirror; set boxwidth 0.7; set grid noxtics ytics; ", methods - 0.3).\
   "set key at screen 0.715, screen 0.905 left top Left reverse samplen 2 enhanced; ".\
   "plot csv every ::1 using 0:(row($2 / $12) + 0.45):xtic(tic(1)) with boxes fs solid 0.5 noborder lc rgb c_context title 'bar: the CFLs below the first run stopped at v_0', ".\
@@ -79,9 +82,9 @@ left = sprintf("set title 'Every scanned run of the %d methods, at CFLs that are
   "runs every ::1 using ($1 + side($3)):($3 > -1 ? row($5) : NaN) with points pt 7 ps 0.7 lc rgb amplitude_colour(2) title 'a run at v_0/100 (grey, right)', ".\
   "runs every ::1 using ($1 + side($3)):($6 == 0 ? row($5) : NaN) with points ".stopped_style." title 'stopped by the solver (× over the run''s dot)', ".\
   "csv every ::1 using 0:(base):(marker(integrator_of(strcol(1)))):(rgb(shape_colour(shape_of(strcol(1))))) with points pt variable ps 1.3 lc rgb variable notitle, ".\
-  "csv every ::1 using 0:(variant(strcol(1)) eq '' ? NaN : newmark_y):(newmark_label(strcol(1))) with labels notitle, ".\
+  "csv every ::1 using 0:(over_label(strcol(1)) eq '' ? NaN : over_y):(over_label(strcol(1))) with labels notitle, ".\
   "keyentry with points pt marker('fe') ps 1.3 lc rgb c_reference title 'under a column: shape''s colour, integrator''s marker', ".\
-  "for [k = 1:words(lme_gammas)] keyentry with lines lw 4 lc rgb ramp(k, words(lme_gammas)) title sprintf('LME γ = %s (the ramp)', word(lme_gammas, k)), ".\
+  "keyentry with points pt marker('fe') ps 1.3 lc rgb colour('lme') title sprintf('γ over LME''s marker: its γ (%s)', gamma_list), ".\
   "keyentry with points pt marker('npc') ps 1.3 lc rgb colour('linear') title 'γ_N over NPC''s marker: its Newmark γ'".\
   (none > 0 ? ", csv every ::1 using 0:(strcol(2) eq 'nan' ? 1 : NaN):('no stable CFL') with labels rotate by 90 left offset 0,1 notitle" : "")
 
@@ -114,7 +117,8 @@ run_above = sprintf("set title 'CFL %s = %.3f × the limit: its first stopped ru
   sprintf("set arrow 1 from %g, graph 0 to %g, graph 1 nohead lw 1.5 lc rgb c_exact front; ", stop, stop).\
   "set key at screen 0.715, screen 0.165 left top Left reverse samplen 2; ".\
   sprintf("plot '%s/dyka_stability_above.csv' using ($1*1e3):2 with lines %s notitle, ", data, LF).\
-  sprintf("'+' using (%g):(%g) every ::0::0 with points %s title sprintf('stopped by the solver (t = %%.2f ms)', %g), ", stop, strip_y_linear(vlo, vhi), stopped_style, stop).\
+  sprintf("'+' using (%g):(%g) every ::0::0 with points %s title sprintf('stopped by the solver at t = %%.2f ms', %g), ", stop, strip_y_linear(vlo, vhi), stopped_style, stop).\
+  sprintf("'+' using (%g):(%g) every ::0::0 with points pt %d ps 1.3 lc rgb '%s' title 'beside ×: the run''s method, %s', ", stop + 0.3, strip_y_linear(vlo, vhi), marker('fe'), colour('linear'), method_name('linear', 'fe')).\
   "keyentry with lines lw 1.5 lc rgb c_exact title 'the time it stopped'"
 
 stats runs every ::1 using 5 nooutput prefix "S"   # the scan's factors
