@@ -45,7 +45,8 @@ d08=$(distance lme_0.8) d18=$(distance lme_1.8) d4=$(distance lme_4)
   echo "![shapes_fig4_1d](figures/shapes_fig4_1d.png)"
   echo
   echo "The same in 1D: N and dN/dx of the node at x = 0, and below each its difference from the linear hat, where uGIMP"
-  echo "and LME γ = 4, which lie within a line width of the hat above, show."
+  echo "and LME γ = 4, which lie within a line width of the hat above except near the nodes, show; the title gives how near"
+  echo "(in h) and by how much at most they differ there, computed from the curves."
   echo
   echo "| claim | measured | verdict |"
   echo "|---|---|---|"

@@ -13,7 +13,11 @@
 # ratio, the largest departure from 1 over the meshes from the finest down while it stays within 7 % (about a line
 # width on these axes), and the coarsest of those meshes when it is not the coarsest run ("apart" when not even the
 # finest is within); the uGIMP panels' titles give uGIMP's largest departure from linear's numbers; every number
-# computed here from the CSV.
+# computed here from the CSV. At large amplitude, where twins lie on each other at the coarse meshes, the ratio panel
+# draws 2 ppc over 1 ppc for each integrator (open markers) and the second integrator over the first at 1 ppc (NPC
+# over FE, MUSL over USL; filled markers); its title gives, for each ratio, the largest departure from 1 over its
+# longest stretch of meshes within 7 % and those meshes, or "apart" with the ratio's range, or "no pair" (no mesh where
+# both ended, not drawn); a panel with no pair at all says so.
 # A run that stopped (black cross) or ended no better than a flat field (failed, black ring) lies on the strip above
 # the data, its method's marker beside it (right), at its mesh: the strip has one row per series of the panel (from
 # the top: the first integrator at 1 and 2 ppc, then the second), each row with a run named at its left ("FE,
@@ -64,54 +68,75 @@ value_at(k, m, col) = (at_mesh(k, m) > 0 ? (col == 7 ? V[at_mesh(k, m)] : S[at_m
 head(k) = (strstrt(k, '/') > 0 ? k[1:strstrt(k, '/') - 1] : k)
 field(k, f) = (f == 1 ? head(k) : field(k[strstrt(k, '/') + 1:], f - 1))
 
-# The ratio panels (small amplitude): a ratio is NUMERATOR>DENOMINATOR (series keys); a panel's ratios, grouped
-# (one title line a group), by its rule: ppc (2 over 1 ppc, a group per CFL), cfl (CFL 0.1 over 0.5, a group per
-# ppc), musl (MUSL over USL, one group).
-rule(s, i1, col) = (i1 eq 'usl' ? 'musl' : (col == 8 && cfls(s, i1) eq '0.5 0.1') ? 'cfl' : 'ppc')
-rule_name(r) = (r eq 'ppc' ? '2 ppc / 1 ppc' : r eq 'cfl' ? 'CFL 0.1 / CFL 0.5' : 'MUSL / USL')
-groups(s, i1, col) = (rule(s, i1, col) eq 'ppc' ? cfls(s, i1) : rule(s, i1, col) eq 'cfl' ? '1 2' : 'all')
+# The ratio panels: a ratio is NUMERATOR>DENOMINATOR (series keys); a panel's ratios, grouped (one title line a
+# group), by its rule. Small amplitude: ppc (2 over 1 ppc, a group per CFL), cfl (CFL 0.1 over 0.5, a group per
+# ppc), musl (MUSL over USL, one group). Large amplitude, twins: 2 over 1 ppc for each integrator (group ppc), the
+# second integrator over the first at 1 ppc (group pair).
+rule(s, i1, col) = (!small ? 'twins' : i1 eq 'usl' ? 'musl' : (col == 8 && cfls(s, i1) eq '0.5 0.1') ? 'cfl' : 'ppc')
+rule_name(r) = (r eq 'ppc' ? '2 ppc / 1 ppc' : r eq 'cfl' ? 'CFL 0.1 / CFL 0.5' : r eq 'musl' ? 'MUSL / USL' : 'twin / twin')
+groups(s, i1, col) = (rule(s, i1, col) eq 'ppc' ? cfls(s, i1) : rule(s, i1, col) eq 'cfl' ? '1 2' : rule(s, i1, col) eq 'twins' ? 'ppc pair' : 'all')
 group_name(r, g, s, i1) = (r eq 'ppc' ? (cfls(s, i1) eq '0.5' ? '' : 'at CFL '.g) : r eq 'cfl' ? 'at '.g.' ppc' : '')
-ratios_of(s, i1, i2, col, g) = (rule(s, i1, col) eq 'ppc' ? sprintf('%s>%s %s>%s', series_key(s, i1, 2, real(g)), series_key(s, i1, 1, real(g)), series_key(s, i2, 2, real(g)), series_key(s, i2, 1, real(g))) : \
+# a group's title line starts with its lead
+lead(r, g, s, i1, i2, first) = (r eq 'twins' ? (g eq 'ppc' ? '2 ppc / 1 ppc' : integrator_name(i2).' / '.integrator_name(i1).' at 1 ppc') : \
+  (first ? rule_name(r).(group_name(r, g, s, i1) eq '' ? '' : ' ') : '').group_name(r, g, s, i1)).': '
+ratios_of(s, i1, i2, col, g) = (rule(s, i1, col) eq 'twins' ? (g eq 'ppc' ? sprintf('%s>%s %s>%s', series_key(s, i1, 2, 0.5), series_key(s, i1, 1, 0.5), series_key(s, i2, 2, 0.5), series_key(s, i2, 1, 0.5)) : \
+  sprintf('%s>%s', series_key(s, i2, 1, 0.5), series_key(s, i1, 1, 0.5))) : rule(s, i1, col) eq 'ppc' ? sprintf('%s>%s %s>%s', series_key(s, i1, 2, real(g)), series_key(s, i1, 1, real(g)), series_key(s, i2, 2, real(g)), series_key(s, i2, 1, real(g))) : \
   rule(s, i1, col) eq 'cfl' ? sprintf('%s>%s %s>%s', series_key(s, i1, int(g), 0.1), series_key(s, i1, int(g), 0.5), series_key(s, i2, int(g), 0.1), series_key(s, i2, int(g), 0.5)) : \
   sprintf('%s>%s %s>%s', series_key(s, 'musl', 1, 0.5), series_key(s, 'usl', 1, 0.5), series_key(s, 'musl', 2, 0.5), series_key(s, 'usl', 2, 0.5)))
 numerator(q) = q[1:strstrt(q, '>') - 1]
 denominator(q) = q[strstrt(q, '>') + 1:]
-# a ratio's name in its group line: the integrator (cfl, ppc rules) or the ppc (musl rule)
-item_name(r, q) = (r eq 'musl' ? field(numerator(q), 3).' ppc' : integrator_name(field(numerator(q), 2)))
-# The walk over a ratio q's meshes in order (col, tol set): r_min, r_max its range (kept over a panel), from the mesh
-# where its last stretch within tol starts (NaN if the finest is not within), dev its largest departure there, count
-# its meshes, coarsest the coarsest mesh with a value.
+# a ratio's name in its group line: the integrator (cfl, ppc rules, twins' ppc group) or the ppc (musl rule); none
+# for the twins' pair, named by its line's lead
+item_name(r, q) = (r eq 'musl' ? field(numerator(q), 3).' ppc' : r eq 'twins' && field(numerator(q), 2) ne field(denominator(q), 2) ? '' : integrator_name(field(numerator(q), 2)))
+# The walk over a ratio q's meshes in order (col, tol set): r_min, r_max its range (kept over a panel), valid its
+# meshes with a ratio, q_min and q_max its own range. Small amplitude: from the mesh where its last stretch within tol
+# starts (NaN if the finest is not within), dev its largest departure there, count its meshes, coarsest the coarsest
+# mesh with a value. Large amplitude: its longest stretch within tol (the coarsest first), best_from to best_to,
+# best_n meshes, best_dev its largest departure there.
 tol = 0.07
-walk = "from = NaN; dev = 0; count = 0; coarsest = NaN; ka = numerator(q); kb = denominator(q); do for [j = 1:n] { if (K[j] eq ka) { " . \
-  "r = (col == 7 ? V[j] : S[j]) / value_at(kb, C[j], col); if (r == r) { coarsest = (coarsest == coarsest ? coarsest : C[j]); r_min = (r < r_min ? r : r_min); r_max = (r > r_max ? r : r_max) }; " . \
-  "if (r == r && abs(r - 1) <= tol) { if (from != from) { from = C[j]; dev = 0; count = 0 }; dev = (abs(r - 1) > dev ? abs(r - 1) : dev); count = count + 1 } else { from = NaN } } }"
+walk = "from = NaN; dev = 0; count = 0; coarsest = NaN; valid = 0; q_min = NaN; q_max = NaN; best_n = 0; best_dev = 0; best_from = NaN; best_to = NaN; " . \
+  "ka = numerator(q); kb = denominator(q); do for [j = 1:n] { if (K[j] eq ka) { " . \
+  "r = (col == 7 ? V[j] : S[j]) / value_at(kb, C[j], col); if (r == r) { valid = valid + 1; coarsest = (coarsest == coarsest ? coarsest : C[j]); r_min = (r < r_min ? r : r_min); r_max = (r > r_max ? r : r_max); " . \
+  "q_min = (q_min == q_min && q_min < r ? q_min : r); q_max = (q_max == q_max && q_max > r ? q_max : r) }; " . \
+  "if (r == r && abs(r - 1) <= tol) { if (from != from) { from = C[j]; dev = 0; count = 0 }; dev = (abs(r - 1) > dev ? abs(r - 1) : dev); count = count + 1; " . \
+  "if (count > best_n) { best_n = count; best_dev = dev; best_from = from; best_to = C[j] } } else { from = NaN } } }"
 percent(x) = sprintf('%.1f %%', ceil(1000 * x) / 10.0)  # a departure, rounded up to 0.1 %
-piece(r, q) = item_name(r, q) . (from != from || count < 2 ? ' apart' : ' ≤ ' . percent(dev) . (from > coarsest ? sprintf(' from %d cells', from) : ''))
+meshes(a, b) = (a == b ? sprintf('at %d cells', a) : sprintf('at %d–%d cells', a, b))
+verdict_small = "(from != from || count < 2 ? 'apart' : '≤ ' . percent(dev) . (from > coarsest ? sprintf(' from %d cells', from) : ''))"
+span(a, b) = (sprintf('%.2g', a) eq sprintf('%.2g', b) ? sprintf('%.2g', a) : sprintf('%.2g–%.2g', a, b))
+verdict_large = "(valid == 0 ? 'no pair' : best_n == 0 ? 'apart (' . span(q_min, q_max) . ')' : '≤ ' . percent(best_dev) . ' ' . meshes(best_from, best_to))"
+# a ratio's piece of its title line, after the walk (which sets verdict)
+walk = walk . '; verdict = ' . (small ? verdict_small : verdict_large)
+piece(r, q) = item_name(r, q) . (item_name(r, q) eq '' ? '' : ' ') . verdict
 # for each panel with ratios: ratios_ID (its ratios), ratio_title_ID (its title), ratio_range_ID
 panel_id(s, i1, col) = sprintf('%s_%s_%d', s, i1, col)
 paper_panels = 'linear/fe/npc ugimp/fe/npc lme/fe/npc'
 baseline_panels = 'bspline2/fe/npc bspline3/fe/npc linear/usl/musl'
-if (small) {
-  do for [pn in paper_panels.' '.baseline_panels] { do for [col = 7:8] {
-    s = field(pn, 1); i1 = field(pn, 2); i2 = field(pn, 3); rl = rule(s, i1, col); list = ''; title = ''; r_min = 1; r_max = 1
-    do for [g in groups(s, i1, col)] {
-      line = group_name(rl, g, s, i1); line = (title eq '' ? rule_name(rl).(line eq '' ? '' : ' ') : '').line.': '; sep = ''
-      do for [q in ratios_of(s, i1, i2, col, g)] { list = list.' '.q; eval walk; line = line.sep.piece(rl, q); sep = ', ' }
-      title = title.line."\n"
-    }
-    id = panel_id(s, i1, col); title = title[1:strlen(title) - 1]
-    eval sprintf("ratios_%s = list; ratio_title_%s = title; ratio_range_%s = '[%.6g:%.6g]'", id, id, id, r_min / 1.12, r_max * 1.12)
-    eval sprintf("ratio_name_%s = '%s'", id, rule_name(rl))
-  } }
-}
-ratio_tics(range) = (real(range[strstrt(range, ':') + 1:strlen(range) - 1]) / real(range[2:strstrt(range, ':') - 1]) < 1.4 ? '(0.9, 0.95, 1, 1.05, 1.1, 1.15)' : \
-  real(range[strstrt(range, ':') + 1:strlen(range) - 1]) / real(range[2:strstrt(range, ':') - 1]) < 4 ? '(0.5, 0.6, 0.8, 1, 1.2, 1.5, 2)' : '(0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100)')
+# A ratio with no mesh where both runs ended is named in the title but not drawn; a panel with none says so. The
+# range of a panel: its ratios', widened by margin (at large amplitude enough for a marker at each end).
+margin = (small ? 1.12 : 1.45)
+do for [pn in paper_panels.' '.baseline_panels] { do for [col = 7:8] {
+  s = field(pn, 1); i1 = field(pn, 2); i2 = field(pn, 3); rl = rule(s, i1, col); list = ''; title = ''; r_min = 1; r_max = 1
+  do for [g in groups(s, i1, col)] {
+    line = lead(rl, g, s, i1, i2, title eq ''); sep = ''
+    do for [q in ratios_of(s, i1, i2, col, g)] { eval walk; list = list.(valid > 0 ? ' '.q : ''); line = line.sep.piece(rl, q); sep = ', ' }
+    title = title.line."\n"
+  }
+  id = panel_id(s, i1, col); title = (list eq '' ? 'no mesh where both twins ended: nothing to compare' : title[1:strlen(title) - 1])
+  eval sprintf("ratios_%s = list; ratio_title_%s = title; ratio_range_%s = '[%.6g:%.6g]'", id, id, id, r_min / margin, r_max * margin)
+  eval sprintf("ratio_name_%s = '%s'", id, rule_name(rl))
+} }
+# a ratio panel's tics, by how many times its top is its bottom
+span_of(range) = real(range[strstrt(range, ':') + 1:strlen(range) - 1]) / real(range[2:strstrt(range, ':') - 1])
+ratio_tics(range) = (span_of(range) < 1.4 ? '(0.9, 0.95, 1, 1.05, 1.1, 1.15)' : span_of(range) < 4 ? '(0.5, 0.6, 0.8, 1, 1.2, 1.5, 2)' : \
+  span_of(range) < 100 ? '(0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100)' : span_of(range) < 400 ? '(0.01, 0.03, 0.1, 0.3, 1, 3, 10, 30, 100)' : '(0.001, 0.01, 0.1, 1, 10, 100)')
 # a ratio's look: its numerator's (shape's colour, integrator's dash and marker, open at 2 ppc, thin and small at CFL 0.1)
 ratio_look = "lw (real(field(numerator(q), 4)) > 0.3 ? method_lw : 0.8) dt dash(field(numerator(q), 2)) " . \
   "pt (field(numerator(q), 3) eq '1' ? marker(field(numerator(q), 2)) : open(marker(field(numerator(q), 2)))) " . \
   "ps ((real(field(numerator(q), 4)) > 0.3 ? 1 : 0.6) * (field(numerator(q), 3) eq '2' ? 1.5 : 1)) lc rgb colour(field(numerator(q), 1))"
-ratio_curves(id, col) = sprintf("plot 1 with lines %s, for [q in ratios_%s] sweep using (strcol(1) eq amplitude && row_key(0) eq numerator(q) ? $6 : NaN):" . \
-  "(strcol(12) eq 'ok' && strcol(18) eq 'done' ? column(%d) / value_at(denominator(q), $6, %d) : NaN) with linespoints %s", reference_style, id, col, col, ratio_look)
+# (gnuplot reads a curve's options even for an empty list: a panel with no ratio draws the line at 1 alone)
+ratio_curves(id, col) = (value('ratios_'.id) eq '' ? 'plot 1 with lines '.reference_style : sprintf("plot 1 with lines %s, for [q in ratios_%s] sweep using (strcol(1) eq amplitude && row_key(0) eq numerator(q) ? $6 : NaN):" . \
+  "(strcol(12) eq 'ok' && strcol(18) eq 'done' ? column(%d) / value_at(denominator(q), $6, %d) : NaN) with linespoints %s", reference_style, id, col, col, ratio_look))
 # uGIMP's largest departure from linear's numbers (same integrator, ppc, CFL, mesh), velocity and stress
 do for [col = 7:8] {
   worst = 0
@@ -151,10 +176,10 @@ yrange(lo, hi) = unname . decades(lo, hi) . (outcomes > 0 ? sprintf("set yrange 
   sprintf("set yrange [%.12g:%.12g]; ", lo, hi).unstrip)
 
 # Places, in pixels from the top (120 px an inch): the figure's title, then per row of panels its title, the data
-# panel, (small:) the ratio panel's title and the ratio panel, the x label; the legend at the bottom.
-title_px = 56; panel_title_px = 26; ratio_title_px = 56; xlabel_px = (small ? 60 : 72); legend_px = 62
-data_px = (small ? 220 : 330); ratio_px = (small ? 110 : 0)
-block_px = panel_title_px + data_px + (small ? ratio_title_px + ratio_px : 0) + xlabel_px
+# panel, the ratio panel's title and the ratio panel, the x label; the legend at the bottom.
+title_px = (small ? 56 : 72); panel_title_px = 26; ratio_title_px = 56; xlabel_px = 60; legend_px = 62
+data_px = (small ? 220 : 260); ratio_px = 110
+block_px = panel_title_px + data_px + ratio_title_px + ratio_px + xlabel_px
 h = (title_px + 4 * block_px + legend_px) / 120.0
 screen_y(px) = 1 - px / (h * 120.0)
 data_top(r) = screen_y(title_px + (r - 1) * block_px + panel_title_px)
@@ -163,13 +188,13 @@ ratio_top(r) = screen_y(title_px + (r - 1) * block_px + panel_title_px + data_px
 ratio_bottom(r) = screen_y(title_px + (r - 1) * block_px + panel_title_px + data_px + ratio_title_px + ratio_px)
 column_left(c) = 0.06 + (c - 1) * 0.33
 place(c, top, bottom) = sprintf("set lmargin at screen %g; set rmargin at screen %g; set tmargin at screen %g; set bmargin at screen %g; ", column_left(c), column_left(c) + 0.275, top, bottom)
-# One panel: shape s with integrators i1 and i2; col 7 (velocity) or 8 (stress); in column c, row r; at small
-# amplitude its ratio panel under it.
+# One panel: shape s with integrators i1 and i2; col 7 (velocity) or 8 (stress); in column c, row r; its ratio panel
+# under it.
 panel(s, i1, i2, col, c, r, title) = place(c, data_top(r), data_bottom(r)) . sprintf("set title '%s'; set ylabel '%s'; set logscale y; set format y '10^{%%L}'; ", title, col == 7 ? 'RMS(v_p - v) / V' : 'RMS(σ_p - σ) / ZV') . \
-  (small ? "set format x ''; unset xlabel; " : "set format x '%g'; set xlabel 'cells'; ") . \
+  "set format x ''; unset xlabel; " . \
   (col == 7 ? yrange(vlow, vhigh) . row_names(s, i1, i2, vlow, vhigh) : yrange(slow, shigh) . row_names(s, i1, i2, slow, shigh)) . "plot " . curves(s, i1, col) . ", " . curves(s, i2, col) . guides . \
   strip_runs(s, i1, 1, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh) . strip_runs(s, i2, 0, col == 7 ? vlow : slow, col == 7 ? vhigh : shigh) . "; " . \
-  (small ? ratio_panel(panel_id(s, i1, col), col, c, r) : '')
+  ratio_panel(panel_id(s, i1, col), col, c, r)
 ratio_panel(id, col, c, r) = place(c, ratio_top(r), ratio_bottom(r)) . unname . unstrip . \
   "set title '" . value('ratio_title_'.id) . "'; set ylabel '" . value('ratio_name_'.id) . "'; set format y '%g'; set ytics " . ratio_tics(value('ratio_range_'.id)) . \
   "; set yrange " . value('ratio_range_'.id) . "; set format x '%g'; set xlabel 'cells'; " . ratio_curves(id, col) . "; "
@@ -186,14 +211,15 @@ legend = sprintf("keyentry with linespoints %s title 'FE: solid, circles', keyen
   sprintf("keyentry with linespoints %s title 'USL: triangles up', keyentry with linespoints %s title 'MUSL: triangles down', ", neutral('usl'), neutral('musl')) . \
   sprintf("keyentry with points pt %d lc rgb '%s' title '1 ppc: filled markers', keyentry with points pt %d ps 1.5 lc rgb '%s' title '2 ppc: open, larger', ", marker('fe'), c_exact, open(marker('fe')), c_exact) . \
   (small ? sprintf("keyentry with linespoints lw %g pt %d lc rgb '%s' title 'CFL 0.5', keyentry with linespoints lw 0.8 pt %d ps 0.6 lc rgb '%s' title 'CFL 0.1: thin, small markers', ", method_lw, marker('fe'), c_exact, marker('fe'), c_exact) : '') . \
-  "keyentry with lines ".reference_style." title (small ? 'slopes 1 and 2; in a ratio panel, 1' : 'slopes 1 and 2')" . \
+  "keyentry with lines ".reference_style." title 'slopes 1 and 2; in a ratio panel, 1'" . \
   (stops > 0 ? ", keyentry with points ".stopped_style." title 'stopped (its method’s marker beside)'" : '') . \
   (fails > 0 ? ", keyentry with points ".failed_style." title 'failed: no better than a flat field (likewise)'" : '')
 legend_panel = sprintf("set lmargin at screen 0.02; set rmargin at screen 0.99; set bmargin at screen 0.003; set tmargin at screen %g; ", 1 - (title_px + 4 * block_px + 4) / (h * 120.0)) . \
   "unset logscale; unset border; unset tics; unset grid; unset title; unset xlabel; unset ylabel; set xrange [0:1]; set yrange [0:1]; " . unstrip . unname . \
   "set key inside left top horizontal Left reverse samplen 3 maxrows 3; plot -1, " . legend
 note = (small ? 'under each panel, twin runs one over the other; its title: the largest departure from 1 over the finest meshes while within 7 % (a line width), or “apart”' : \
-  'rows 1-2: the paper’s shape functions, rows 3-4: today’s baselines; all at CFL 0.5')
+  "rows 1-2: the paper’s shape functions, rows 3-4: today’s baselines; all at CFL 0.5; under each panel, twin runs one over the other: 2 ppc over 1 ppc (open markers) and the second\n" . \
+  "integrator over the first at 1 ppc (filled); its title: the largest departure from 1 over the longest stretch of meshes within 7 % (a line width), or “apart” (the ratio’s range), “no pair” when no mesh has both")
 draw = "set border; set tics; set grid; set key off; " . \
   sprintf("set multiplot title '%s\n%s'; set logscale x; set xrange [%g:%g]; set xtics (8, 16, 32, 64, 128, 256); ", caption, note, xlow, xhigh) . \
   paper_row(7, 1) . paper_row(8, 2) . baseline_row(7, 3) . baseline_row(8, 4) . legend_panel . "; unset multiplot; set border; set tics; set grid"
