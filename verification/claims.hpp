@@ -199,6 +199,31 @@ inline BestOfGroups judge_best(const std::vector<mpm::Measured>& paper, const st
   return best;
 }
 
+/// The places where one claim, scored at point A (`at_a`) and on all particles (`all`), has another outcome, sample
+/// by sample, added to `list` ("; "-separated) as "NAME, PLACE: OUTCOME at point A, OUTCOME on all particles" (PLACE:
+/// the sample's `where` up to its first colon). The Dyka studies' scoring of the same runs by two norms.
+inline void add_changed_verdicts(std::string& list, const std::string& name, const DomainClaim& at_a, const DomainClaim& all) {
+  for (std::size_t k = 0; k < at_a.samples.size() && k < all.samples.size(); ++k) {
+    const Sample &a = at_a.samples[k], &b = all.samples[k];
+    if (std::string(outcome_word(a)) != outcome_word(b))
+      list += (list.empty() ? "" : "; ") + name + ", " + a.where.substr(0, a.where.find(':')) + ": " + outcome_word(a) +
+              " at point A, " + outcome_word(b) + " on all particles";
+  }
+}
+
+TEST_CASE("add_changed_verdicts: only the places whose outcome differs, named up to their colon") {
+  DomainClaim at_a{"c", "m", {}, false}, all{"c", "m", {}, false};
+  at_a.add("40 cells: x", 1.0, mpm::Outcome::holds);
+  all.add("40 cells: x", 1.0, mpm::Outcome::holds);
+  at_a.add("160 cells: y", 1.0, mpm::Outcome::undecided);
+  all.add("160 cells: y", 1.0, mpm::Outcome::fails);
+  std::string list;
+  add_changed_verdicts(list, "claim", at_a, all);
+  CHECK(list == "claim, 160 cells: undecided at point A, fails on all particles");
+  add_changed_verdicts(list, "again", at_a, all);
+  CHECK(list.find("; again, 160 cells") != std::string::npos);
+}
+
 TEST_CASE("DomainClaim::verdict: the four counts, and a row of undecided samples named so") {
   DomainClaim claim{"c", "m", {}, false};
   claim.add("a", 1.0, mpm::Outcome::undecided);

@@ -305,13 +305,7 @@ inline Section space_time_section(const Runs& runs) {
     }
   std::string changed;
   for (const auto* pair : {orders, spoils, better})
-    for (std::size_t k = 0; k < pair[0].samples.size(); ++k) {
-      const Sample &a = pair[0].samples[k], &b = pair[1].samples[k];
-      const auto outcome = outcome_word;
-      if (std::string(outcome(a)) != outcome(b))
-        changed += (changed.empty() ? "" : "; ") + pair[1].statement.substr(0, pair[1].statement.find(" (all")) + ", " +
-                   a.where.substr(0, a.where.find(':')) + ": " + outcome(a) + " at point A, " + outcome(b) + " on all particles";
-    }
+    add_changed_verdicts(changed, pair[1].statement.substr(0, pair[1].statement.find(" (all")), pair[0], pair[1]);
   return {"Point A against every particle: the all-particle space-time norm (`dyka_space_time`)",
           "The RMS of v_p - v(X_p, t) over every particle and every step (the exact solution at each particle's reference position), "
           "/ |v0|, beside point A's RMS (data/dyka_sweep.csv, column space_time_over_v0); fitted orders of each (± the slope's "

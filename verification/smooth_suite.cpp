@@ -65,13 +65,7 @@ int fig6_two_particles_report(const std::string& folder, const std::string& repo
   verification::write_domain_claims(report, at_a);
   std::string changed;
   for (std::size_t c = 0; c < all.size(); ++c) {
-    for (std::size_t k = 0; k < all[c].samples.size() && k < at_a[c].samples.size(); ++k) {
-      const auto &a = at_a[c].samples[k], &b = all[c].samples[k];
-      const auto outcome = verification::outcome_word;
-      if (std::string(outcome(a)) != outcome(b))
-        changed += (changed.empty() ? "" : "; ") + at_a[c].statement + ", " + a.where.substr(0, a.where.find(':')) + ": " + outcome(a) +
-                   " at point A, " + outcome(b) + " on all particles";
-    }
+    verification::add_changed_verdicts(changed, at_a[c].statement, at_a[c], all[c]);
     all[c].statement += " *[all particles: the space-time norm]*";
   }
   report << "The same claims scored by the all-particle space-time norm (the RMS of v_p - v(X_p, t) over every particle and "
