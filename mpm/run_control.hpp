@@ -39,6 +39,13 @@ struct RunControl {
   double energy_growth_limit = 10.0;
   int threads = 0;  ///< cores the particle loops run on; 0: all (the results are the same bits on any number)
   long last_step = 0;  ///< the run stops after this step, before end_time (`mpm trace`); 0: at end_time
+  /// The run fails (exit code 3) before a step past this many (`mpm run --max-steps`, output landings counted);
+  /// 0: no limit (`--force`, and the programs of verification/).
+  long max_steps = 0;
+  /// The run fails when a Courant step of Eq. (42) falls below this fraction of the first step's: a particle a
+  /// million times faster than at t = 0 (the wave speed bounds the step from above) is an instability, and the run
+  /// would no longer end. Our choice; the paper sets no such floor.
+  double smallest_step_fraction = 1e-6;
 };
 
 struct RunSummary {

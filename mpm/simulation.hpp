@@ -99,15 +99,21 @@ class Simulation {
     const bool fixed = control_.fixed_dt > 0.0;
     double anchor = 0.0;  // a fixed step's clock: anchor + n dt, n steps since the last landing, never a drifting sum
     long since_anchor = 0;
+    const double first_dt = courant_time_step(survey.fastest_speed(), survey.wave_speed(), model_.grid.spacing(),
+                                              control_.cfl, control_.courant);
     while (time < control_.end_time && (control_.last_step == 0 || step < control_.last_step)) {
       // 1. Time step, Eq. (42) or fixed, landing exactly on output times and on the end time (a fixed step within
-      //    1e-9 dt of the target keeps its length).
+      //    1e-9 dt of the target keeps its length); the run fails if it would not end.
       double dt = fixed ? control_.fixed_dt
                         : courant_time_step(survey.fastest_speed(), survey.wave_speed(), model_.grid.spacing(),
                                             control_.cfl, control_.courant);
+      check_step_count(step, time);
+      if (!fixed) check_courant_step(step, time, dt, first_dt);
       const double target = next_stop(time, next_snapshot, next_sample);
       const bool lands = time + dt * (1.0 + 1e-9) >= target;
       if (lands && !(fixed && std::abs(target - time - dt) <= 1e-9 * dt)) dt = target - time;
+      const double next_time = lands ? target : fixed ? anchor + static_cast<double>(since_anchor + 1) * dt : time + dt;
+      if (!(next_time > time)) throw SimulationFailure(step, time, -1, "", stalled_cause(dt));
       phases.watcher = monitor.watches(step + 1, time, dt) ? &monitor : nullptr;
       // 2. Stencils at the current positions x_p^k.
       locate_particles(step, time);
@@ -117,8 +123,9 @@ class Simulation {
       model_.body_force.evaluate(body_force_time, particles_, body_force_);  // b_p of Eq. (15), at x_p^k
       phases.after(Phase::body_force, particles_, grid_fields_);
       integrator_.step(kernels_, model_, stencils_, body_force_, dt, particles_, grid_fields_, phases);
-      time = lands ? target : fixed ? anchor + static_cast<double>(++since_anchor) * dt : time + dt;
+      time = next_time;
       if (lands) anchor = target, since_anchor = 0;
+      else if (fixed) ++since_anchor;
       ++step;
       summary.steps = step;
       summary.final_time = time;
@@ -201,6 +208,32 @@ class Simulation {
     } catch (const ShapeFailure& failure) {
       throw SimulationFailure(step, time, particles_.id[failure.particle], position_text(failure.particle), failure.what());
     }
+  }
+
+  /// Fails a run about to take one step more than RunControl::max_steps (0: no limit).
+  void check_step_count(long step, double time) const {
+    if (control_.max_steps <= 0 || step < control_.max_steps) return;
+    std::ostringstream cause;
+    cause << "the run reached its limit of " << control_.max_steps << " steps before end_time = " << control_.end_time
+          << " s (--max-steps N raises it, --force lifts it)";
+    throw SimulationFailure(step, time, -1, "", cause.str());
+  }
+
+  /// Fails a run whose Courant step `dt` (Eq. (42)) fell below RunControl::smallest_step_fraction of the first one.
+  void check_courant_step(long step, double time, double dt, double first_dt) const {
+    if (dt >= control_.smallest_step_fraction * first_dt) return;
+    std::ostringstream cause;
+    cause << "the time step of Eq. (42) fell to " << dt << " s, below " << control_.smallest_step_fraction
+          << " of the first step's " << first_dt << " s (the speed C of Eq. (42) grew to "
+          << control_.cfl * model_.grid.spacing() / dt << " m/s): the run would not end";
+    throw SimulationFailure(step, time, -1, "", cause.str());
+  }
+
+  /// Why a step of length `dt` leaves the time where it is.
+  static std::string stalled_cause(double dt) {
+    std::ostringstream cause;
+    cause << "time does not advance: t + dt == t in double precision with dt = " << dt << " s";
+    return cause.str();
   }
 
   /// Names the first unhealthy particle, if the survey found one, then checks the energy.

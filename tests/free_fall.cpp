@@ -144,3 +144,35 @@ TEST_CASE("solver.dt: every step is dt, the clock n dt from the last landing, a 
   CHECK(summary_landed.largest_time_step == doctest::Approx(dt).epsilon(1e-12));
   CHECK(landed.time == std::vector<double>{0.1001, 1.0});
 }
+
+TEST_CASE("A run ends: past RunControl::max_steps, and when the Courant step collapses, it fails naming step and cause") {
+  // 2000 Courant steps of 0.5 ms to t = 1 s; a limit of 10 ends the run before its 11th step, at t = 5 ms
+  auto limited = mpm::testing::scene_from_text(falling_particle);
+  limited.control.max_steps = 10;
+  mpm::testing::Recorder<2> recorder(0);
+  const auto setup = mpm::build_setup<2>(limited);
+  try {
+    mpm::run_setup<2>(limited, setup, recorder);
+    FAIL("the run went past its limit of 10 steps");
+  } catch (const mpm::SimulationFailure& failure) {
+    CHECK(failure.step == 10);
+    CHECK(failure.time == doctest::Approx(5e-3).epsilon(1e-12));
+    CHECK(std::string(failure.what()).find("limit of 10 steps before end_time = 1 s") != std::string::npos);
+  }
+  // a slow material (c = 1 m/s) and a particle falling at 2 m/s: C = |v| = 2 + 9.81 t and dt = 0.5 h / C, so at a
+  // floor of half the first step the run fails once |v| > 4 m/s, at 0.2 s < t < 0.2 s + one step (at most 0.125 s)
+  auto slow = mpm::testing::scene_from_text(falling_particle, {"material.young_modulus=1.0", "body[0].velocity=[0.0, -2.0]"});
+  slow.control.smallest_step_fraction = 0.5;
+  const auto slow_setup = mpm::build_setup<2>(slow);
+  try {
+    mpm::run_setup<2>(slow, slow_setup, recorder);
+    FAIL("the run went on with a time step below half the first");
+  } catch (const mpm::SimulationFailure& failure) {
+    CHECK(failure.time > (4.0 - 2.0) / 9.81);
+    CHECK(failure.time < (4.0 - 2.0) / 9.81 + 0.125);
+    CHECK(std::string(failure.what()).find("the time step of Eq. (42) fell to") != std::string::npos);
+  }
+  slow.control.smallest_step_fraction = 0.4;  // |v| up to 5 m/s, reached after 0.306 s: the run reaches t = 0.25 s
+  slow.control.end_time = 0.25;
+  CHECK(mpm::run_setup<2>(slow, slow_setup, recorder).final_time == 0.25);
+}

@@ -129,7 +129,7 @@ int run_suite(const std::string& folder, const std::string& report_path, const S
   const auto bar_fronts = front_claims(runs, spread, Group::bar);
   std::ostringstream onset_table;
   std::vector<Section> sections{
-      {"The exact solutions and their references", "", reference_claims(runs, scenes.bar), ""},
+      {"The exact solutions and their references", "", reference_claims(runs, scenes.bar), "", ""},
       {"Vibrating bar, small amplitude (V/ω = 1e-6 L): no grid crossing", "smooth_bar_small", small_bar_claims(runs), "",
        "the RMS errors of velocity and stress against cells, one panel per shape function (the paper's three on top, "
        "today's baselines below), the integrator its dash and marker, 2 particles per cell open markers, the paper's shapes "

@@ -30,9 +30,10 @@ inline const char* exit_codes =
     "Exit codes:\n"
     "  0  done\n"
     "  2  a bad scene, option or run folder: one line `error: FILE:LINE: KEY: what is wrong`, nothing written\n"
-    "  3  the method failed during the run (or gnuplot failed for `mpm plot`), or a file or standard output\n"
-    "     could not be written (`cannot write`): one line on stderr; what was written so far is kept\n"
-    "  130, 143  SIGINT or SIGTERM stopped the run (run.json says \"interrupted\")\n";
+    "  3  the method failed during the run (or gnuplot failed for `mpm plot`), the run would not end (a step past\n"
+    "     --max-steps, a collapsing time step), or a file or standard output could not be written (`cannot write`):\n"
+    "     one line on stderr; what was written so far is kept\n"
+    "  128 + N  signal N stopped the run (129 SIGHUP, 130 SIGINT, 143 SIGTERM...; run.json says \"interrupted\")\n";
 
 /// A key's default as the help shows it (`0.5`, `0.0 per axis`, `required`, `none`: optional), and README (`0.5`
 /// in code) when `markdown`.

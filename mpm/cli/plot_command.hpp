@@ -126,8 +126,9 @@ inline std::string plot_script(const PlotTable& observers, const PlotTable& exac
          "unset multiplot\nunset output\n";
 }
 
-/// Draws the run in `folder`: its CSVs read and checked, then plot.gp, the pictures (observers.png, energy.png,
-/// profile_NNNN.png of each snapshot, coloured by `field` in 2D) and plot.log written under the folder's lock.
+/// Draws the run in `folder` under the folder's lock (a run cannot start or end there meanwhile): its CSVs read and
+/// checked, then plot.gp, the pictures (observers.png, energy.png, profile_NNNN.png of each snapshot, coloured by
+/// `field` in 2D) and plot.log written.
 /// \throws Refused, InputError (a busy folder), OutputFailure.
 inline void plot_folder(const std::string& folder, const std::string& field, std::ostream& out) {
   std::error_code error;
@@ -135,6 +136,7 @@ inline void plot_folder(const std::string& folder, const std::string& field, std
     throw Refused("plot: the folder's name holds a control character (a newline, a tab...); rename it");
   if (!std::filesystem::is_directory(folder, error))
     throw Refused(folder + ": no such folder (give the folder of an `mpm run`, e.g. runs/dyka_bar)");
+  io::FolderLock lock(folder);  // no run or other plot writes here while the CSVs are read and the pictures drawn
   const std::string is_run = " (is " + folder + " the folder of an `mpm run`?)";
   const PlotTable observers = plot_table(folder + "/observers.csv"), energy = plot_table(folder + "/energy.csv");
   const PlotTable exact = plot_table(folder + "/exact.csv");
@@ -154,7 +156,6 @@ inline void plot_folder(const std::string& folder, const std::string& field, std
                   (panels == 0 ? "none, and energy.csv has no energy or momentum column" : "at most 16"));
   const auto snapshots = snapshot_files(folder);
   const std::string script = plot_script(observers, exact, energy) + profile_script(folder, snapshots, field, pictures);
-  io::FolderLock lock(folder);  // no run or other plot writes here meanwhile
   write_fresh(folder + "/plot.gp", script);
   draw_with_gnuplot(folder, script, pictures, folder + "/plot.log");
   for (const auto& picture : pictures) out << "wrote " << picture << "\n";

@@ -1,7 +1,8 @@
 /// \file
-/// `mpm run SCENE.toml`: checks all it can (the scene, its particles, the folder) before writing anything (exit 2),
-/// removes what an earlier run or plot left in the folder, writes run.json "running", runs, and rewrites run.json as
-/// "done", "failed" (exit 3) or "interrupted" (SIGINT, SIGTERM: exit 128 + the signal's number).
+/// `mpm run SCENE.toml`: checks all it can (the scene, its particles, its steps, the folder) before writing anything
+/// (exit 2), removes what an earlier run or plot left in the folder (run.json "clearing"), writes run.json "running",
+/// runs, and rewrites run.json as "done", "failed" (exit 3) or "interrupted" (a stop signal, stop_signals.hpp: exit
+/// 128 + the signal's number).
 #pragma once
 #include <csignal>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include "mpm/io/run_writer.hpp"
 #include "mpm/io/scene_resolved.hpp"
 #include "mpm/io/scene_warnings.hpp"
+#include "mpm/io/stop_signals.hpp"
 #include "mpm/run_api.hpp"
 #include "mpm/stability_api.hpp"
 
@@ -33,15 +35,14 @@ struct RunRequest {
   io::RunIdentity identity;
 };
 
-/// Writes run.json "running", runs with SIGINT and SIGTERM ending the run after the current step (a second one
-/// kills it), and rewrites run.json as the run ended. Returns the exit code. \throws OutputFailure.
+/// Writes run.json "running", runs (a stop signal ending the run after the current step, stop_signals.hpp), and
+/// rewrites run.json as the run ended. Returns the exit code. \throws OutputFailure.
 template <int Dim>
 int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRequest& request) {
   const std::string run_json = request.folder + "/run.json";
   const int count = setup.particles.size();
   RunSummary summary;
   io::write_run_json(run_json, scene, summary, io::RunState::running, "", count, request.identity);
-  for (int signal : {SIGINT, SIGTERM}) std::signal(signal, io::on_stop_signal);
   io::RunState state = io::RunState::failed;
   std::string failure;
   int code = 3;
@@ -62,10 +63,10 @@ int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRe
     failure = error.message();
     cannot_write = true;
   } catch (const io::Interrupted& interrupted) {
-    const char* name = interrupted.signal == SIGINT ? "SIGINT" : "SIGTERM";
+    const std::string name = io::signal_name(interrupted.signal);
     std::cerr << "interrupted: " << name << " at t = " << summary.final_time << " s; " << run_json << " says so\n";
     state = io::RunState::interrupted;
-    failure = std::string("stopped by ") + name;
+    failure = "stopped by " + name;
     code = 128 + interrupted.signal;
   } catch (const std::exception& defect) {  // a bug: run.json says so, main() reports it
     failure = std::string("internal error: ") + defect.what();
@@ -84,13 +85,45 @@ int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRe
   return 0;
 }
 
-/// Builds the run (which checks each particle against the shape function), then prints the resolved scene
-/// (--print-scene) or runs it into its folder, locked and cleared. Returns the exit code.
-/// \throws SceneError, InputError, OutputFailure.
+/// Removes what an earlier run or plot left in the run's (locked) folder, run.json saying "clearing" meanwhile.
+/// Returns 0, or the exit code of a stop signal during the clear (run.json then says "interrupted").
+/// \throws OutputFailure.
+template <int Dim>
+int clear_earlier_run(const io::Scene& scene, const Setup<Dim>& setup, const RunRequest& request) {
+  if (io::run_outputs_in(request.folder).empty()) return 0;
+  const std::string run_json = request.folder + "/run.json";
+  const int count = setup.particles.size();
+  io::write_run_json(run_json, scene, {}, io::RunState::clearing, "", count, request.identity);
+  try {
+    io::clear_run_folder(request.folder, io::EarlierRunJson::keep);
+  } catch (const io::Interrupted& interrupted) {
+    const std::string name = io::signal_name(interrupted.signal);
+    std::cerr << "interrupted: " << name << " while removing an earlier run's files; " << run_json << " says so\n";
+    io::write_run_json(run_json, scene, {}, io::RunState::interrupted,
+                       "stopped by " + name + " while removing an earlier run's files", count, request.identity);
+    return 128 + interrupted.signal;
+  }
+  return 0;
+}
+
+/// The fastest particle at t = 0, whatever set its velocity (the scene, a formula, an exact solution).
+template <int Dim>
+double fastest_particle_speed(const Particles<Dim>& particles) {
+  double fastest = 0.0;
+  for (int p = 0; p < particles.size(); ++p) fastest = std::max(fastest, particles.velocity[p].norm());
+  return fastest;
+}
+
+/// Builds the run (which checks each particle against the shape function) and checks its steps at the particles'
+/// own speeds, then prints the resolved scene (--print-scene) or runs it into its folder, locked and cleared.
+/// Returns the exit code. \throws SceneError, InputError, OutputFailure.
 template <int Dim>
 int run_scene(io::Scene scene, RunRequest request) {
   scene.control.threads = request.threads;
+  const double most_steps = request.budget.force ? 0.0 : std::min(request.budget.max_steps, 9e18);
+  scene.control.max_steps = static_cast<long>(most_steps);
   const Setup<Dim> setup = build_setup<Dim>(scene);
+  io::check_step_budget(scene, request.budget, io::initial_time_step(scene, fastest_particle_speed(setup.particles)));
   if (request.print_scene) {
     io::print_resolved_scene(scene, std::cout);
     return 0;
@@ -106,7 +139,8 @@ int run_scene(io::Scene scene, RunRequest request) {
   std::filesystem::create_directories(request.folder, error);
   if (error) throw OutputFailure(request.folder, error.message());
   const io::FolderLock lock(request.folder);  // held until the run has ended
-  io::clear_run_folder(request.folder);
+  io::catch_stop_signals();
+  if (const int code = clear_earlier_run<Dim>(scene, setup, request)) return code;
   return run_into_folder<Dim>(scene, setup, request);
 }
 
@@ -161,7 +195,8 @@ inline std::unique_ptr<CommandParser> run_parser(RunRequest& request) {
             return "";
           },
           "SIZE"));
-  app->add_option("--max-steps", request.budget.max_steps, "refuse a scene whose end_time / dt at t = 0 exceeds N")
+  app->add_option("--max-steps", request.budget.max_steps, "refuse a scene whose end_time / dt at t = 0 (with a step for each output time) exceeds N,\n"
+                  "and stop a run (exit 3) that would take a step more")
       ->check(number_in(1.0, 1e300));
   app->add_flag("--force", request.budget.force, "run even beyond --max-steps");
   return app;
@@ -177,7 +212,12 @@ inline std::string run_usage() {
 inline std::optional<int> read_run_options(const std::vector<std::string>& arguments, RunRequest& request,
                                            std::ostream& out, std::ostream& err) {
   if (const auto code = parse_arguments(*run_parser(request), arguments, "run", out, err)) return code;
-  if (request.folder.empty()) request.folder = "runs/" + std::filesystem::path(request.scene_path).stem().string();
+  try {
+    if (request.folder.empty()) request.folder = io::default_folder(request.scene_path);
+  } catch (const InputError& error) {
+    err << error.message() << "\n";
+    return 2;
+  }
   return std::nullopt;
 }
 

@@ -29,7 +29,9 @@ inline std::unique_ptr<CommandParser> study_parser(study::StudyRequest& request)
   app->add_option("--out", request.out, "the study's folder (default runs/<the study file's name>)")->type_name("DIR");
   app->add_option("--jobs", request.jobs, "cases run at once (0: the machine's cores)")->check(whole_in(0, 1024));
   app->footer("Exit codes: 0 written (a case refused, stopped or failed is a row of study.csv), 2 a bad study file, scene\n"
-              "or folder (`error: FILE:LINE: KEY: why`, nothing written), 3 a file could not be written or gnuplot failed.");
+              "or folder (`error: FILE:LINE: KEY: why`, nothing written), 3 a file could not be written, gnuplot failed or\n"
+              "a case could not run (its folder a link or busy), 128 + N stopped by signal N (SIGINT, SIGTERM, SIGHUP...:\n"
+              "forwarded to the runs, which end as interrupted; study.csv not written).");
   return app;
 }
 

@@ -1,7 +1,7 @@
 /// \file
 /// A run's output folder before the run writes into it: a new run removes every file of the names `mpm run` and
 /// `mpm plot` write (run_output_name) that an earlier run or plot left, so that the folder never mixes two runs,
-/// and touches no other file. A symbolic link under one of those names is refused before anything is written.
+/// and touches no other file; run.json says "clearing" meanwhile, or is removed first. A symbolic link under one of those names is refused before anything is written.
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "mpm/core/errors.hpp"
+#include "mpm/io/stop_signals.hpp"
 
 namespace mpm::io {
 
@@ -40,6 +41,17 @@ inline std::vector<std::filesystem::directory_entry> run_outputs_in(const std::s
   for (const auto& entry : std::filesystem::directory_iterator(folder, error))
     if (run_output_name(entry.path().filename().string())) outputs.push_back(entry);
   return outputs;
+}
+
+/// The default folder of a run or a study of `file`: runs/NAME, NAME the file's name without its extension. A name
+/// of "", "." or ".." (a file named `...toml` or `..toml`) would make it runs/ itself or the current folder: refused.
+/// \throws InputError naming the file.
+inline std::string default_folder(const std::string& file) {
+  const std::string name = std::filesystem::path(file).stem().string();
+  if (name.empty() || name == "." || name == "..")
+    throw InputError(file, "its name without the extension is '" + name + "', and runs/" + name +
+                               " is no folder of its own; give --out DIR, or rename the file");
+  return "runs/" + name;
 }
 
 /// Refuses an --out that is not a folder (a file, a device, a link to nothing) and a folder holding a symbolic
@@ -83,14 +95,24 @@ class FolderLock {
   int descriptor_;
 };
 
-/// Removes the files an earlier run or plot wrote into `folder` (after check_run_folder).
-/// \throws OutputFailure if one cannot be removed.
-inline void clear_run_folder(const std::string& folder) {
-  for (const auto& entry : run_outputs_in(folder)) {
+/// What clear_run_folder() does with the earlier run.json.
+enum class EarlierRunJson {
+  remove_first,  ///< removed before any other file: a clear cut short leaves no run.json saying "done" (a study's)
+  keep           ///< kept, already rewritten as "clearing" (`mpm run`'s), to be rewritten again as "running"
+};
+
+/// Removes the files an earlier run or plot wrote into `folder` (after check_run_folder), stopping between two
+/// removals after a stop signal (stop_signals.hpp). \throws OutputFailure if one cannot be removed, Interrupted.
+inline void clear_run_folder(const std::string& folder, EarlierRunJson run_json = EarlierRunJson::remove_first) {
+  const auto remove = [](const std::filesystem::path& path) {
     std::error_code error;
-    std::filesystem::remove(entry.path(), error);
-    if (error)
-      throw OutputFailure(entry.path().string(), "cannot remove the file of an earlier run: " + error.message());
+    std::filesystem::remove(path, error);
+    if (error) throw OutputFailure(path.string(), "cannot remove the file of an earlier run: " + error.message());
+  };
+  if (run_json == EarlierRunJson::remove_first) remove(std::filesystem::path(folder) / "run.json");
+  for (const auto& entry : run_outputs_in(folder)) {
+    stop_if_signalled();
+    if (entry.path().filename() != "run.json") remove(entry.path());
   }
 }
 
@@ -108,8 +130,16 @@ TEST_CASE("run folder: an earlier run's files removed, other files kept, a link 
   fs::create_directories(folder);
   for (const char* name : {"exact.csv", "snapshot_0009.vtk", "plot.gp", "mine.csv"}) std::ofstream(folder / name) << "x\n";
   check_run_folder(folder.string());
-  clear_run_folder(folder.string());
+  std::ofstream(folder / "run.json") << "{\"status\": \"clearing\"}\n";
+  stop_signal = SIGTERM;  // a stop signal: the clear stops before its first removal, run.json and the rest kept
+  CHECK_THROWS_AS(clear_run_folder(folder.string(), EarlierRunJson::keep), Interrupted);
+  CHECK(fs::exists(folder / "exact.csv"));
+  stop_signal = 0;
+  clear_run_folder(folder.string(), EarlierRunJson::keep);
+  CHECK(fs::exists(folder / "run.json"));
   CHECK(!fs::exists(folder / "exact.csv"));
+  clear_run_folder(folder.string());
+  CHECK(!fs::exists(folder / "run.json"));
   CHECK(!fs::exists(folder / "snapshot_0009.vtk"));
   CHECK(!fs::exists(folder / "plot.gp"));
   CHECK(fs::exists(folder / "mine.csv"));
@@ -122,6 +152,10 @@ TEST_CASE("run folder: an earlier run's files removed, other files kept, a link 
   }
   FolderLock again(folder.string());  // the first lock ended with its object
   CHECK_THROWS_WITH_AS(check_run_folder((folder / "mine.csv").string()), doctest::Contains("not a folder"), InputError);
+  CHECK(default_folder("scenes/dyka_bar.toml") == "runs/dyka_bar");
+  CHECK(default_folder("a/.hidden.toml") == "runs/.hidden");
+  for (const char* dotted : {"...toml", "..toml", "dir/...toml", "..", "."})
+    CHECK_THROWS_WITH_AS(default_folder(dotted), doctest::Contains("no folder of its own"), InputError);
   fs::create_symlink(folder / "nothing", folder / "dangling");
   CHECK_THROWS_WITH_AS(check_run_folder((folder / "dangling").string()), doctest::Contains("link to nothing"), InputError);
   fs::create_directory(folder / "run.json");

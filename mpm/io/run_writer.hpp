@@ -24,24 +24,10 @@
 #include "mpm/io/scene.hpp"
 #include "mpm/io/scene_keys.hpp"
 #include "mpm/io/scene_resolved.hpp"
+#include "mpm/io/stop_signals.hpp"
 #include "mpm/run_control.hpp"
 
 namespace mpm::io {
-
-/// The signal (SIGINT, SIGTERM) that asked the run to stop; 0 while none did.
-inline volatile std::sig_atomic_t stop_signal = 0;
-
-/// Handles SIGINT and SIGTERM (std::signal(SIGINT, on_stop_signal)): the run stops after its current step, and a
-/// second such signal takes its default action.
-inline void on_stop_signal(int signal) {
-  stop_signal = signal;
-  std::signal(signal, SIG_DFL);
-}
-
-/// Raised by RunWriter::progress after a stop signal, so that the run ends between two steps.
-struct Interrupted {
-  int signal;
-};
 
 /// Writes a particle's state columns: position, velocity, diagonal stress (2D adds sigma_xy).
 template <int Dim>
@@ -180,7 +166,7 @@ class RunWriter : public Monitor<Dim> {
       std::fprintf(stderr, "\r%s: t = %.4g s of %.4g s (%3.0f%%)%s", scene_.title.c_str(), time, end_time,
                    100.0 * time / end_time, time >= end_time ? "\n" : "");
     }
-    if (stop_signal != 0) throw Interrupted{stop_signal};
+    stop_if_signalled();
   }
 
  private:
@@ -300,14 +286,15 @@ inline std::vector<std::pair<std::string, std::string>> column_units(int dimensi
   return units;
 }
 
-/// What run.json says of its run: written first as running, rewritten at the end as one of the others.
-enum class RunState { running, done, failed, interrupted };
+/// What run.json says of its run: clearing while an earlier run's files are removed, then running, rewritten at the
+/// end as done, failed or interrupted. A folder whose process was killed outright keeps clearing or running.
+enum class RunState { clearing, running, done, failed, interrupted };
 
 /// run.json: the status (and the failure, or null), the version and command line, the resolved scene, the run's
 /// numbers (zeros while it runs), and the unit of each. Written atomically. \throws OutputFailure.
 inline void write_run_json(const std::string& path, const Scene& scene, const RunSummary& summary, RunState state,
                            const std::string& failure, int particle_count, const RunIdentity& identity = {}) {
-  const char* states[] = {"running", "done", "failed", "interrupted"};
+  const char* states[] = {"clearing", "running", "done", "failed", "interrupted"};
   const auto observed = json_array(identity.observed, [](const ObservedParticle& observed) {
     return json_object({{"name", json_string(observed.name)}, {"particle", std::to_string(observed.particle)},
                         {"reference_position", json_array(observed.reference_position, json_number)}});
@@ -321,7 +308,7 @@ inline void write_run_json(const std::string& path, const Scene& scene, const Ru
     std::string name, unit, json;  ///< unit "": none (the scene's are in scene_units)
   };
   for (const Field& field : std::vector<Field>{
-           {"status", "running | done | failed | interrupted", json_string(states[static_cast<int>(state)])},
+           {"status", "clearing | running | done | failed | interrupted", json_string(states[static_cast<int>(state)])},
            {"failure", "-", failure.empty() ? "null" : json_string(failure)},
            {"version", "-", json_string(identity.version)},
            {"command_line", "-", json_array(identity.command_line, json_string)},
@@ -370,7 +357,7 @@ TEST_CASE("run.json: its status and failure, strings escaped, every field writte
   CHECK(text.find("\"command_line\": [\"mpm\", \"run\", \"it's \\\"here\\\"\"]") != std::string::npos);
   CHECK(text.find("\"phase_seconds\": {\"") != std::string::npos);
   CHECK(text.rfind("\n}\n") == text.size() - 3);
-  CHECK(text.find("\"units\": {\"status\": \"running | done | failed | interrupted\", \"failure\": \"-\"") !=
+  CHECK(text.find("\"units\": {\"status\": \"clearing | running | done | failed | interrupted\", \"failure\": \"-\"") !=
         std::string::npos);
   CHECK(text.find("\"energy.csv:kinetic\": \"J/m\"") != std::string::npos);  // 2D: per unit thickness
   CHECK(text.find("\"grid.length\": \"m\"") != std::string::npos);

@@ -106,10 +106,25 @@ TEST_CASE("Scene budget: the CFL check's body has 16 x ppc particles in 1D, at m
 }
 
 /// The time step at t = 0: solver.dt, or Eq. (42)'s cfl h over the fastest material's wave speed and the fastest
-/// particle's speed.
-inline double initial_time_step(const Scene& scene) {
+/// particle's speed (the scene's, or `fastest_particle` when faster: initial_courant_speed()).
+inline double initial_time_step(const Scene& scene, double fastest_particle = 0.0) {
   if (scene.control.fixed_dt > 0.0) return scene.control.fixed_dt;
-  return scene.control.cfl * scene.spacing / initial_courant_speed(scene);
+  return scene.control.cfl * scene.spacing / initial_courant_speed(scene, fastest_particle);
+}
+
+/// The output times strictly between 0 and end_time: a step that lands on one is shortened, and the step after it
+/// starts anew, so each may add a step.
+inline double landing_count(const Scene& scene) {
+  const RunControl& control = scene.control;
+  double landings = 0.0;
+  for (const auto* times : {&control.sample_times, &control.snapshot_times})
+    for (double time : *times) landings += time > 0.0 && time < control.end_time;
+  return landings;
+}
+
+/// The steps of a run at time step `time_step`: end_time / dt, plus one for each output time before the end.
+inline double step_count(const Scene& scene, double time_step) {
+  return std::ceil(scene.control.end_time / time_step) + landing_count(scene);
 }
 
 /// The estimate, an upper bound of the peak resident memory: the particles' arrays thrice (seeding doubles vectors;
@@ -152,7 +167,7 @@ inline SceneCost estimate_cost(const Scene& scene) {
   const double copies = std::clamp(std::floor(cost.particles / items_per_chunk), 1.0, double(max_chunks)) - 1.0;
   cost.node_bytes = cost.nodes * (8 + 7 * 8.0 * d + copies * (8 + 3 * 8.0 * d));  // GridFields<Dim>: m_I, 7 vectors; the copies
   cost.time_step = initial_time_step(scene);
-  cost.steps = std::ceil(scene.control.end_time / cost.time_step);
+  cost.steps = step_count(scene, cost.time_step);
   return cost;
 }
 
@@ -184,6 +199,26 @@ inline std::string largest_key(const Scene& scene, const SceneCost& cost) {
   return per_cell > cells ? "body[" + std::to_string(cost.largest_body) + "].particles_per_cell" : "grid.cells";
 }
 
+/// Refuses a run of more steps (step_count() at `time_step`) than the budget allows, or than time can count in
+/// double precision. \throws SceneError at solver.end_time.
+inline void check_step_budget(const Scene& scene, const Budget& budget, double time_step) {
+  const double steps = step_count(scene, time_step);
+  const bool endless = !(steps <= std::pow(2.0, 50));  // t + dt == t may hold beyond: time would stop
+  if (!endless && (steps <= budget.max_steps || budget.force)) return;
+  std::ostringstream what;
+  const double landings = landing_count(scene);
+  what << std::setprecision(3) << "end_time / dt = " << scene.control.end_time << " s / " << time_step << " s = "
+       << std::ceil(scene.control.end_time / time_step) << " time steps";
+  if (landings > 0) what << " and " << static_cast<long long>(landings) << " landings on output times";
+  what << " (dt at t = 0: solver.dt, or Eq. (42)'s cfl h / wave or particle speed)";
+  if (endless)
+    what << "; no run can take that many steps (time would stop advancing in double precision)";
+  else
+    what << ", more than the limit of " << budget.max_steps
+         << "; shorten end_time or coarsen the grid, or raise the limit (--max-steps N) or lift it (--force)";
+  throw scene_error(scene, "solver.end_time", what.str());
+}
+
 /// Refuses a scene whose estimated size exceeds the budget or the 32-bit indices, whose polygon takes more than
 /// most_seeding_tests to seed, or whose time steps exceed the limit. \throws SceneError naming the key to change.
 inline void check_budget(const Scene& scene, const Budget& budget) {
@@ -212,17 +247,7 @@ inline void check_budget(const Scene& scene, const Budget& budget) {
          << " (about 10 s); give fewer vertices, or fewer particles_per_cell";
     throw scene_error(scene, "body[" + std::to_string(cost.costliest_polygon) + "].vertices", what.str());
   }
-  const bool endless = !(cost.steps <= std::pow(2.0, 50));  // t + dt == t may hold beyond: time would stop
-  if (endless || (cost.steps > budget.max_steps && !budget.force)) {
-    what << "end_time / dt = " << scene.control.end_time << " s / " << cost.time_step << " s = " << cost.steps
-         << " time steps (dt at t = 0: solver.dt, or Eq. (42)'s cfl h / wave or particle speed)";
-    if (endless)
-      what << "; no run can take that many steps (time would stop advancing in double precision)";
-    else
-      what << ", more than the limit of " << budget.max_steps
-           << "; shorten end_time or coarsen the grid, or raise the limit (--max-steps N) or lift it (--force)";
-    throw scene_error(scene, "solver.end_time", what.str());
-  }
+  check_step_budget(scene, budget, cost.time_step);
 }
 
 TEST_CASE("Scene budget: sizes are estimated without overflow and the key that makes a run large is named") {
@@ -291,6 +316,19 @@ TEST_CASE("Scene budget: sizes are estimated without overflow and the key that m
   plenty.max_bytes = 1e15;
   CHECK(message_of(disk, {}, plenty).rfind("error: b.toml:12: body[0].vertices: 3000 vertices over 1e+08 seeds take 3e+11", 0) == 0);
   CHECK(message_of(disk, {"body[0].particles_per_cell=[10, 10]"}, plenty) == "no error");  // 3e9 tests
+  // 150 output times before the end: 150 steps more, each one landing on its time
+  std::string times = "[";
+  for (int k = 1; k <= 150; ++k) times += (k > 1 ? ", " : "") + std::to_string(k * 1e-3);
+  CHECK(message_of(bar, {"output.times=" + times + "]", "solver.end_time=0.25"}, few_steps)
+            .find("= 50 time steps and 150 landings on output times") != std::string::npos);
+  // a speed only the particles know (a formula's): 1 km/s, 100 times the wave speed, 100 times the steps
+  Budget steps_only;
+  steps_only.max_steps = 1000;
+  const Scene slow = read_scene(parse_scene_text(bar, "b.toml"));
+  CHECK(initial_time_step(slow, 1000.0) == doctest::Approx(5e-5));
+  CHECK_NOTHROW(check_step_budget(slow, steps_only, initial_time_step(slow, 5.0)));
+  CHECK_THROWS_WITH_AS(check_step_budget(slow, steps_only, initial_time_step(slow, 1000.0)),
+                       doctest::Contains("= 2e+04 time steps"), SceneError);
   few_steps.force = true;
   CHECK(message_of(bar, {}, few_steps) == "no error");
   CHECK(message_of(bar, {"solver.end_time=1e20"}, few_steps).find("no run can take that many steps") != std::string::npos);

@@ -173,12 +173,14 @@ inline double column_height(const Scene& scene) {
 }
 
 /// The speed of Eq. (42) at t = 0: the fastest material's wave speed sqrt(E/rho) and the fastest initial particle
-/// speed, their maximum (solver.courant = "max") or their sum ("sum").
-inline double initial_courant_speed(const Scene& scene) {
+/// speed, their maximum (solver.courant = "max") or their sum ("sum"). The scene's numbers give the bodies', the
+/// boxes' and the particle files' velocities; `fastest_particle` adds what only the particles know (a formula of
+/// [initial_field], an exact solution's initial velocity).
+inline double initial_courant_speed(const Scene& scene, double fastest_particle = 0.0) {
   auto norm = [](const std::vector<double>& v) {
     return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0));
   };
-  double fastest = 0.0, wave_speed = 0.0;
+  double fastest = fastest_particle, wave_speed = 0.0;
   for (const auto& body : scene.bodies) {
     fastest = std::max(fastest, norm(body.velocity));
     for (const auto& particle : body.particles) fastest = std::max(fastest, std::hypot(particle.v_x, particle.v_y));

@@ -3,6 +3,7 @@
 /// case k runs in DIR/cases/kkkk (four digits). One case is a few children of the same `mpm` program:
 ///   mpm run SCENE --set ... --print-scene          the resolved scene (or exit 2: the case is `refused`)
 ///   mpm run SCENE --set ... --out CASE --threads 1  the run: `done`, `stopped` (energy growth) or `failed`
+/// (both with --max-memory: the study's share of the machine)
 ///   mpm compare CASE/observers.csv SCENE --set ... --at X --column A.v_x=v_x         the score at t
 ///   mpm compare CASE/observers_shifted.csv ...                                        at the integrator's time
 /// so that a study scores exactly as a user would. The wall and CPU time are those of the run.
@@ -39,6 +40,9 @@ struct CaseResult {
   std::optional<Measured> score_at_t, score_shifted;
   std::optional<double> energy_drift, steps;
   double wall_s = 0.0, cpu_s = 0.0;
+  /// Why the study could not run the case (its folder a link or busy, mpm not started), else empty: the case is a
+  /// failed row of study.csv and the study exits 3.
+  std::string not_run;
 };
 
 /// Every case of `study`, the last axis varying fastest.
@@ -130,15 +134,31 @@ inline void measure_run(const std::string& program, const std::string& scene, co
   }
 }
 
-/// Runs case `one` of a study of `scene` into `out`/cases/NNNN with the `mpm` program `program`, scoring
-/// observer `observer` ("" for the scene's first). \throws OutputFailure if the shifted CSV cannot be written.
+/// Why the case folder `folder` cannot take a run of the study ("" if it can): a symbolic link or not a folder.
+/// A study's run never writes through a link, nor beside the earlier run's scores (observers_shifted.csv is removed).
+inline std::string case_folder_problem(const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const auto status = fs::symlink_status(folder, error);
+  if (fs::is_symlink(status)) return "error: " + folder + ": is a symbolic link, and a study's run writes through no link";
+  if (fs::exists(status) && !fs::is_directory(status)) return "error: " + folder + ": is not a folder";
+  fs::remove(fs::path(folder) / "observers_shifted.csv", error);
+  return "";
+}
+
+/// Runs case `one` of a study of `scene` into `out`/cases/NNNN with the `mpm` program `program` and the options
+/// `limits` (--max-memory), scoring observer `observer` ("" for the scene's first).
+/// \throws OutputFailure if the shifted CSV cannot be written.
 inline CaseResult run_case(const std::string& program, const std::string& scene, const Case& one, const std::string& out,
-                           std::string observer, bool scored) {
+                           std::string observer, bool scored, const std::vector<std::string>& limits) {
   CaseResult result;
-  const ChildRun printed = run_child(program, child_arguments({"run", scene, "--print-scene"}, one.overrides));
+  std::vector<std::string> print_head{"run", scene, "--print-scene"};
+  print_head.insert(print_head.end(), limits.begin(), limits.end());
+  const ChildRun printed = run_child(program, child_arguments(print_head, one.overrides));
   if (printed.exit_code != 0) {
     result.status = printed.exit_code == 2 ? "refused" : "failed";
     result.why = reason_line(printed.err);
+    if (printed.exit_code == 127) result.not_run = result.why;
     return result;
   }
   toml::table resolved;
@@ -150,7 +170,13 @@ inline CaseResult run_case(const std::string& program, const std::string& scene,
   }
   if (observer.empty()) observer = resolved["observer"][0]["name"].value_or(std::string());
   const std::string folder = case_folder(out, one.index);
-  const ChildRun run = run_child(program, child_arguments({"run", scene, "--out", folder, "--threads", "1"}, one.overrides));
+  if (!(result.not_run = case_folder_problem(folder)).empty()) {
+    result.why = result.not_run;
+    return result;
+  }
+  std::vector<std::string> run_head{"run", scene, "--out", folder, "--threads", "1"};
+  run_head.insert(run_head.end(), limits.begin(), limits.end());
+  const ChildRun run = run_child(program, child_arguments(run_head, one.overrides));
   result.wall_s = run.wall_s, result.cpu_s = run.cpu_s;
   std::string json;
   try {
@@ -160,11 +186,12 @@ inline CaseResult run_case(const std::string& program, const std::string& scene,
   result.steps = json_number(json, "steps");
   const auto failure = json_string(json, "failure");
   if (run.exit_code == 0) result.status = "done";
-  else if (run.exit_code == 2) result.status = "refused", result.why = reason_line(run.err);
+  else if (run.exit_code == 2 || run.exit_code == 127)  // the scene passed --print-scene: the folder, or no mpm
+    result.why = result.not_run = reason_line(run.err).empty() ? "exit " + std::to_string(run.exit_code) : reason_line(run.err);
   else if (run.exit_code == 3 && failure && failure->find("energy grew") != std::string::npos) result.status = "stopped", result.why = *failure;
   else result.why = failure ? *failure : reason_line(run.err).empty() ? "exit " + std::to_string(run.exit_code) : reason_line(run.err);
   std::string error;
-  if (result.status != "refused") result.energy_drift = energy_drift(folder + "/energy.csv", error);  // a stopped run's growth too
+  if (result.not_run.empty()) result.energy_drift = energy_drift(folder + "/energy.csv", error);  // a stopped run's growth too
   if (result.status == "done") measure_run(program, scene, one, folder, resolved, observer, scored, result);
   return result;
 }

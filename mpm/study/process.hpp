@@ -6,6 +6,7 @@
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,6 +16,8 @@
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "mpm/io/stop_signals.hpp"
 
 namespace mpm::study {
 
@@ -47,9 +50,17 @@ inline std::string reason_line(const std::string& text) {
 }
 
 /// Runs `program` with `arguments` (argv[0] first) as a child, without a shell, waits for it and returns how it
-/// ended. Its standard input is /dev/null; its output and error are read back from temporary files.
+/// ended. Its standard input is /dev/null; its output and error are read back from temporary files. The child runs
+/// in a process group of its own (a terminal's Ctrl-C reaches it once, forwarded: stop_signals.hpp) and dies with
+/// its parent (PR_SET_PDEATHSIG, SIGTERM: it ends as after a stop signal). After a stop signal no child is started:
+/// the run ends as if that signal had killed it.
 inline ChildRun run_child(const std::string& program, const std::vector<std::string>& arguments) {
   ChildRun run;
+  if (io::stop_signal != 0) {
+    run.exit_code = 128 + io::stop_signal;
+    run.err = "error: not started: the study was stopped by " + io::signal_name(io::stop_signal);
+    return run;
+  }
   std::vector<char*> argv;  // made before fork: the child only makes system calls
   for (const auto& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
@@ -57,17 +68,23 @@ inline ChildRun run_child(const std::string& program, const std::vector<std::str
   std::FILE* err = std::tmpfile();
   const int null = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
   const auto start = std::chrono::steady_clock::now();
+  const pid_t parent = ::getpid();
   const pid_t child = out && err && null >= 0 ? ::fork() : -1;
   if (child == 0) {
+    ::setpgid(0, 0);
+    if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != parent) ::_exit(127);  // the parent already died
     if (::dup2(null, 0) < 0 || ::dup2(fileno(out), 1) < 0 || ::dup2(fileno(err), 2) < 0) ::_exit(127);
     ::execv(program.c_str(), argv.data());
     ::_exit(127);
   }
   if (child > 0) {
+    const int slot = io::forward_stop_signals_to(child);
+    if (io::stop_signal != 0) ::kill(child, io::stop_signal);  // a signal between fork and the line above
     int status = 0;
     struct rusage usage {};
     while (::wait4(child, &status, 0, &usage) < 0 && errno == EINTR) {
     }
+    io::stop_forwarding(slot);
     run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     run.cpu_s = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
     run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -90,6 +107,14 @@ TEST_CASE("study children: exit status, output and error caught, time measured, 
   CHECK(run_child("/bin/false", {"false"}).exit_code == 1);
   const ChildRun missing = run_child("/nonexistent/mpm", {"mpm"});
   CHECK(missing.exit_code == 127);
+  // the child in a process group of its own (field 5 of /proc/PID/stat)
+  const ChildRun group = run_child("/bin/sh", {"sh", "-c", "cut -d' ' -f5 /proc/$$/stat"});
+  CHECK(std::stol(group.out) != static_cast<long>(::getpgrp()));
+  io::stop_signal = SIGTERM;  // after a stop signal: nothing started
+  const ChildRun stopped = run_child("/bin/echo", {"echo", "x"});
+  io::stop_signal = 0;
+  CHECK(stopped.exit_code == 128 + SIGTERM);
+  CHECK(stopped.out.empty());
   CHECK(reason_line("warning: a\nerror: b: c\nmore\n") == "error: b: c");
   CHECK(reason_line("warning: a\nother\n") == "warning: a");
   CHECK(reason_line("") == "");

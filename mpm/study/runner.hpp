@@ -49,7 +49,7 @@ inline std::vector<CaseResult> run_cases(const std::vector<Case>& cases, unsigne
     for (std::size_t k; (k = next++) < cases.size();) {
       {
         std::lock_guard<std::mutex> hold(lock);
-        if (failure) return;
+        if (failure || io::stop_signal != 0) return;  // after a stop signal, no case starts
         ++running;
       }
       CaseResult result;

@@ -5,11 +5,15 @@
 ///      `mpm run --print-scene` (a refusal there is the study's: its `--set(n)` named by the study's line) and
 ///      the observer looked up in it; the folder is checked. Any problem: `error: FILE:LINE: KEY: why`, exit 2,
 ///      nothing written;
-///   2. the folder is locked (a second study into it is refused) and what an earlier study wrote there removed;
-///   3. the cases run in parallel (runner.hpp, cases.hpp), with a progress line on stderr;
+///   2. the folder is locked (a second study into it is refused), the stop signals caught, and what an earlier study
+///      wrote there removed;
+///   3. the cases run in parallel (runner.hpp, cases.hpp), each run with half the machine's memory shared among the
+///      jobs (--max-memory), with a progress line on stderr;
 ///   4. study.csv, fits.csv (with a refine axis) and the pictures are written (write.hpp), and their names printed.
-/// Exit codes: 0 written (whatever the cases' outcomes: they are rows of study.csv); 2 a bad study, scene or folder;
-/// 3 a file could not be written (`error: FILE: cannot write: why`) or gnuplot failed.
+/// Exit codes: 0 written (whatever the runs' outcomes: they are rows of study.csv); 2 a bad study, scene or folder;
+/// 3 a file could not be written (`error: FILE: cannot write: why`), gnuplot failed, or a case could not run (its
+/// folder made a link or held by another run meanwhile: its row says why); 128 + N after stop signal N, forwarded to
+/// the runs and waited for (stop_signals.hpp), study.csv then not written.
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
@@ -88,10 +92,18 @@ inline void check_study_folder(const std::string& out) {
   const auto cases = fs::symlink_status(out + "/cases", error);
   if (fs::exists(cases) && !fs::is_directory(cases))
     throw InputError(out + "/cases", "is not a folder (a link, a file), where mpm study writes the cases' folders: remove it, or give another --out");
+  for (const auto& entry : fs::directory_iterator(out + "/cases", error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() == 4 && name.find_first_not_of("0123456789") == std::string::npos &&
+        (entry.is_symlink(error) || !entry.is_directory(error)))
+      throw InputError(entry.path().string(), "is a symbolic link or not a folder, where mpm study writes a case's "
+                                              "folder (it writes through no link): remove it, or give another --out");
+  }
 }
 
 /// Removes what an earlier study wrote into `out`: its files, and in cases/NNNN what the runs wrote (a case folder
-/// left empty is removed; another file in it is kept). \throws OutputFailure.
+/// left empty is removed; another file in it is kept), stopping after a stop signal. \throws OutputFailure,
+/// io::Interrupted.
 inline void clear_study_folder(const std::string& out) {
   namespace fs = std::filesystem;
   std::error_code error;
@@ -101,7 +113,7 @@ inline void clear_study_folder(const std::string& out) {
     const std::string name = entry.path().filename().string();
     if (name.size() != 4 || name.find_first_not_of("0123456789") != std::string::npos || entry.is_symlink() || !entry.is_directory()) continue;
     io::check_run_folder(entry.path().string());
-    io::clear_run_folder(entry.path().string());
+    io::clear_run_folder(entry.path().string());  // its run.json first: a clear cut short leaves none saying "done"
     fs::remove(entry.path() / "observers_shifted.csv", error);
     fs::remove(entry.path(), error);  // only when empty
   }
@@ -148,6 +160,16 @@ inline int report(std::ostream& err, const std::string& message, int code) {
   return code;
 }
 
+/// Names on `err` each case the study could not run (CaseResult::not_run); returns 3 if there is one, else 0.
+inline int cases_not_run(const std::vector<Case>& cases, const std::vector<CaseResult>& results, const std::string& out,
+                         std::ostream& err) {
+  int code = 0;
+  for (std::size_t k = 0; k < results.size(); ++k)
+    if (!results[k].not_run.empty())
+      code = report(err, "error: " + case_folder(out, cases[k].index) + ": the case could not run (" + results[k].not_run + ")", 3);
+  return code;
+}
+
 /// `mpm study`: checks, runs and writes the study; returns the exit code (0, 2 or 3), messages on `err`.
 inline int run_study(const StudyRequest& request, std::ostream& out, std::ostream& err) {
   Study study;
@@ -156,7 +178,11 @@ inline int run_study(const StudyRequest& request, std::ostream& out, std::ostrea
   try {
     study = read_study(request.study_path);
     scored = check_scene(study, request.program);
-    folder = request.out.empty() ? "runs/" + study.name : request.out;
+    try {
+      folder = request.out.empty() ? io::default_folder(study.path) : request.out;
+    } catch (const InputError& error) {  // the study file's own name: `error: FILE: why`
+      return report(err, error.message(), 2);
+    }
     check_study_folder(folder);
   } catch (const SceneError& error) {
     return report(err, error.message(), 2);
@@ -168,13 +194,21 @@ inline int run_study(const StudyRequest& request, std::ostream& out, std::ostrea
   try {
     std::filesystem::create_directories(folder + "/cases");
     const io::FolderLock lock(folder);
+    io::catch_stop_signals();
     clear_study_folder(folder);
     const auto cases = expand_cases(study);
     const unsigned jobs = request.jobs ? request.jobs : std::max(1u, std::thread::hardware_concurrency());
     const std::string observer = study.observer.value_or("");
+    const std::vector<std::string> limits{"--max-memory", std::to_string(io::default_max_memory() / jobs)};
     const auto results = run_cases(
-        cases, jobs, [&](const Case& one) { return run_case(request.program, study.scene, one, folder, observer, scored); }, err);
+        cases, jobs, [&](const Case& one) { return run_case(request.program, study.scene, one, folder, observer, scored, limits); },
+        err);
+    if (io::stop_signal != 0) throw io::Interrupted{io::stop_signal};
     for (const auto& path : write_study(study, cases, results, folder)) out << path << "\n";
+    return cases_not_run(cases, results, folder, err);
+  } catch (const io::Interrupted& interrupted) {
+    return report(err, "interrupted: " + io::signal_name(interrupted.signal) + "; the runs it had started were told and have ended (their "
+                       "run.json say so); study.csv not written", 128 + interrupted.signal);
   } catch (const InputError& error) {
     return report(err, error.message(), 2);
   } catch (const OutputFailure& error) {

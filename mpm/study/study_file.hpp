@@ -55,7 +55,7 @@ struct Axis {
 
 /// A study as its file gives it, every key checked.
 struct Study {
-  std::string path, name;         ///< the study file, and its name (the file's stem: the default --out is runs/NAME)
+  std::string path;               ///< the study file (the default --out is runs/NAME, NAME its stem: io::default_folder)
   std::string scene;              ///< the scene's path, relative to the study file's folder when written relative
   std::optional<std::string> observer;
   std::vector<Setting> set;
@@ -248,7 +248,6 @@ inline Study read_study(const std::string& path) {
   const io::SceneFile file = io::parse_scene_file(path);
   Study study;
   study.path = path;
-  study.name = std::filesystem::path(path).stem().string();
   for (const auto& [name, node] : file.table) {
     const std::string key(name.str());
     if (key != "scene" && key != "observer" && key != "refine" && key != "set" && key != "axes")
@@ -302,7 +301,6 @@ TEST_CASE("study file: axes and overrides as TOML values, every key checked with
                                        "[axes]\ngrid.cells = [[10], [20]]\nsolver.shape = [\"linear\", \"lme\"]\n"
                                        "\"body[0].particles_per_cell\" = [[1], [2]]\nsolver.cfl = [0.5, 1.0]\n"));
   CHECK(study.scene == (folder / "x.toml").string());
-  CHECK(study.name == "s");
   REQUIRE(study.axes.size() == 4);
   CHECK(study.set[0].key == "solver.end_time");
   CHECK(study.set[0].value.toml == "0.0001");
