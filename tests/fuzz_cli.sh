@@ -9,7 +9,15 @@
 #   - exit 0: "wrote", run.json says "done", and the run took at most twice its step budget.
 # Then hostile files for each reader of a file (FIFO, device, folder, /proc, byte-order mark, a long line, a
 # header name that closes gnuplot's quote, a control character, other separators, decimal commas, times out of
-# range or order): exit 0, 2 or 3 within 10 s, nothing run.
+# range or order): exit 0, 2 or 3 within 10 s, nothing run. Then each shipped scene under a file size limit.
+# Then four generated classes (issue 49), CASES / 20 of each (rounded up), drawn from the seed:
+#   - work bombs: a small bar whose initial velocity or body force is a huge, overflowing or singular formula,
+#     many output times, a random --max-steps, sometimes --force: 0, 2 or 3 within 20 s, never past the limit;
+#   - stop signals during `mpm run` (into an earlier run's files too): exit 0 or 128 + N, run.json done or
+#     interrupted, never running or clearing, every CSV whole, no old snapshot beside a new run's "done";
+#   - stop signals and SIGKILL during `mpm study`: no process left, no study.csv, no run.json running;
+#   - links under a study's or run's folder, scene and study files named ...toml and ..toml: exit 2 naming
+#     the path, nothing written, the link's target untouched.
 #
 #   bash tests/fuzz_cli.sh build/bin/mpm [CASES] [SEED]
 # CASES defaults to $MPM_FUZZ_CASES or 300 (what `make test` runs); SEED to $MPM_FUZZ_SEED or 11.
@@ -19,6 +27,7 @@ set -u
 mpm=$1
 cases=${2:-${MPM_FUZZ_CASES:-300}}
 seed=${3:-${MPM_FUZZ_SEED:-11}}
+generated=$(((cases + 19) / 20))  # cases of each generated class (issue 49): 15 at 300
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -264,6 +273,282 @@ for scene in "${scenes[@]}"; do
   done
 done
 cases=$((cases + truncated_cases))
+# The generated classes (issue 49): $generated cases of each, drawn from the seed. A case that runs in the
+# background is started by start_mpm and waited for by await; its exit code counts in $codes as the others'.
+generated_cases=0
+count_case() {  # count_case LABEL: counts the case that ended with $code
+  generated_cases=$((generated_cases + 1))
+  codes[$code]=$((${codes[$code]:-0} + 1))
+  [[ -n ${MPM_FUZZ_VERBOSE:-} ]] && echo "case $1: exit $code: $(head -n 1 "$work/err" | cut -c1-150)"
+}
+# Starts `mpm ARGUMENTS...` in the background with every stop signal at its default action (a script's background
+# job would ignore SIGINT and SIGQUIT, and mpm leaves an ignored signal ignored) and no core file; sets $pid once
+# the subshell has become mpm: a signal to the subshell before its exec would run this script's EXIT trap there.
+start_mpm() {
+  local words tries
+  (trap - EXIT INT QUIT; ulimit -c 0; exec "$mpm" "$@") >"$work/stdout" 2>"$work/err" &
+  pid=$!
+  for ((tries = 0; tries < 1000; ++tries)); do
+    mapfile -d '' -t words 2>/dev/null <"/proc/$pid/cmdline" || break  # gone already
+    [[ ${#words[@]} -eq 0 || ${words[0]} == "$mpm" ]] && break         # a zombie, or mpm
+    sleep 0.001
+  done
+}
+# await PID SECONDS: waits for the process at most that long, then kills it; sets $code and $hung (1: killed).
+# (stderr to /dev/null: bash's own "Killed" or "Quit" notice of the process would come while it sleeps)
+await() {
+  local tenths=$(($2 * 10))
+  hung=0
+  while kill -0 "$1" && ((tenths-- > 0)); do sleep 0.1; done
+  kill -0 "$1" && hung=1 && kill -KILL "$1"
+  wait "$1"
+  code=$?
+} 2>/dev/null
+# Sets $delay to a random time below $1 milliseconds, in seconds for sleep.
+random_delay() { local ms=$((RANDOM % $1)); printf -v delay '%d.%03d' $((ms / 1000)) $((ms % 1000)); }
+# Sets $status to the status in run.json $1 ("" when there is no such file).
+status_of() { status=$(sed -n 's/^  "status": "\([a-z]*\)",*$/\1/p' "$1" 2>/dev/null); }
+# Sets $steps to the steps in run.json $1 ("" when there is no such file).
+steps_of() { steps=$(sed -n 's/^  "steps": \([0-9]*\),*$/\1/p' "$1" 2>/dev/null); }
+# Sets $cut to the first of the files given that is not empty and does not end with a newline ("" when none).
+cut_csv() {
+  local csv
+  cut=""
+  (($#)) || return
+  [[ -z $(tail -q -c 1 -- "$@" 2>/dev/null | tr -d '\n') ]] && return  # the last bytes of all at once: all newlines
+  for csv; do
+    [[ -s $csv && $(tail -c 1 "$csv" | od -An -c | tr -d ' ') != '\n' ]] && cut=$csv && return
+  done
+}
+# Sets $left to the ids of the processes whose command line holds the text $1 ("" when none).
+processes_naming() {
+  local file words
+  left=""
+  for file in /proc/[0-9]*/cmdline; do
+    mapfile -d '' -t words 2>/dev/null <"$file" || continue
+    [[ "${words[*]}" == *"$1"* ]] && left+=" ${file//[^0-9]/}"
+  done
+  left=${left# }
+}
+located='^error: [^:]+:[0-9]+: [^:]+: .+'  # error: FILE:LINE: KEY: why
+
+# 1. Work bombs: a 10-cell bar (E = 100 Pa, rho = 1, c = 10 m/s, end_time 1 s: about 200 steps at rest) whose
+# initial velocity, and body force, is a formula drawn from huge, overflowing and singular ones, with walls, up
+# to 3000 output times written into the file, a random --max-steps and sometimes --force. Exit 0, 2 or 3 within
+# 20 s; 0 and 3 within --max-steps steps (unless --force); 2 located, no folder; 3 `failure: step`.
+bomb_velocities=(1e3 1e9 1e300 -1e300 '1e308*x' '-1e12*x*x' 'exp(700)' 'exp(710)' '1e154*1e154' '1e-320' '1/(x-0.5)'
+  '1/(x-0.55)' '1/(X-0.45)' 'tan(pi*x/2)' '1e4*sin(pi*x)' '1e5*x' '-1e6*(x-0.5)' 'sqrt(x)*1e2' 'log(x-0.05)'
+  'x > 0.3 && x < 0.7 ? 1e9 : 0' '10^(3*x)' 'exp(700*x)')
+gentle_velocities=(0 0 1 -3 30 '10*x' '5*sin(pi*x)' 'sin(1e9*x)')  # half the cases: the body force is the bomb
+bomb_forces=('' -9.81 30 1e4 '1e3*t' '300*t' '3e3*t' '-1e5*x' '1e5*(x-0.5)' '1e9*t*t' 'exp(1e3*t)' '1/(t-0.01)'
+  '1e3*sin(1e4*t)')
+bomb_walls=('' xmin xmax 'xmin xmax' 'xmin xmax' 'xmin xmax')
+bomb_times=(0 0 0 0 20 100 400 3000)
+bomb_limits=(100 200 250 300 400 1000 2000)  # about 200 steps at rest: some limits are met during the run
+bomb_case() {  # bomb_case NUMBER
+  local number=$1 scene=$work/bomb_$1.toml out=$work/bomb_out_$1 velocity force walls times most face limit end_time
+  if ((RANDOM % 2)); then pick bomb_velocities; else pick gentle_velocities; fi
+  velocity=$picked
+  pick bomb_forces && force=$picked
+  pick bomb_walls && walls=$picked
+  pick bomb_times && times=$picked
+  pick bomb_limits && most=$((picked + RANDOM % 50)) limit=$most
+  arguments=(run "$scene" --out "$out" --max-steps "$most")
+  # --force lifts the limit: only for 1 ms and without walls, where a fast particle soon leaves the grid
+  # (a bar squeezed from both ends, -1e6*(x-0.5), would take its 9 million steps in a second)
+  end_time=1.0
+  ((RANDOM % 5 == 0)) && arguments+=(--force) && walls="" && limit="" && end_time=1e-3
+  {
+    printf 'title = "work bomb"\ndimension = 1\n[grid]\nlength = [1.0]\ncells = [10]\n'
+    printf '[material]\nyoung_modulus = 100.0\ndensity = 1.0\n[[body]]\nmin = [0.0]\nmax = [1.0]\n'
+    for face in $walls; do printf '[[fixed]]\nface = "%s"\ncomponents = ["x"]\n' "$face"; done
+    printf '[solver]\nend_time = %s\n[initial_field]\nvelocity = ["%s"]\n' "$end_time" "$velocity"
+    [[ -n $force ]] && printf '[body_force]\nacceleration = ["%s"]\n' "$force"
+    printf '[[observer]]\nname = "A"\nposition = [0.5]\n[output]\nsnapshots = []\n'
+    ((times)) && awk -v n="$times" -v end="$end_time" 'BEGIN { printf "times = ["; for (k = 0; k <= n; k++) printf "%s%.9g", (k ? ", " : ""), k * end / n; print "]" }'
+  } >"$scene"
+  scene_copy=$scene
+  timeout -s KILL 20 "$mpm" "${arguments[@]}" >"$work/stdout" 2>"$work/err"
+  code=$?
+  count_case "bomb $number"
+  steps_of "$out/run.json"
+  case $code in
+    0) grep -q '"status": "done"' "$out/run.json" 2>/dev/null || report "bomb $number" "exit 0 but run.json does not say done" "${arguments[@]}"
+       [[ -n $steps && ( -z $limit || $steps -le $limit ) ]] || report "bomb $number" "exit 0 after $steps steps, past --max-steps $most" "${arguments[@]}" ;;
+    2) [[ $(head -n 1 "$work/err") =~ $located ]] || report "bomb $number" "exit 2 without a located message" "${arguments[@]}"
+       [[ -e $out ]] && report "bomb $number" "exit 2 but an output folder was made" "${arguments[@]}" ;;
+    3) grep -q "^failure: step" "$work/err" || report "bomb $number" "exit 3 without 'failure: step'" "${arguments[@]}"
+       [[ -z $steps || -z $limit || $steps -le $limit ]] || report "bomb $number" "exit 3 after $steps steps, past --max-steps $most" "${arguments[@]}" ;;
+    137) report "bomb $number" "killed after 20 s: a hang, or a run past its budget" "${arguments[@]}" ;;
+    *) report "bomb $number" "exit $code (a signal or an unexpected code)" "${arguments[@]}" ;;
+  esac
+  rm -rf "$out" "$scene"
+}
+for ((number = 0; number < generated; ++number)); do bomb_case $number; done
+
+# 2. Stop signals during runs: the Dyka bar of 200 to 400 cells to 2 ms (0.3 to 1 s), into no folder or one
+# holding an earlier run's files (a real run's, 2000 more snapshot files beside a run.json saying done, or both),
+# sent a random stop signal (sometimes twice at once, as timeout(1) does) after a random delay, often short where
+# files are to be removed. Exit 0 or 128 + N within 30 s; exit 0: run.json done, "wrote", and no snapshot of the
+# earlier run left; 128 + N with `interrupted: SIGNAME` on stderr: run.json interrupted; without (the default
+# action, before the run began writing): no run.json of its own. Never "running" or "clearing" left; every CSV
+# ends with a newline.
+signal_names=(HUP INT QUIT TERM ALRM USR1 USR2 XCPU VTALRM PROF)
+signal_cells=(200 300 400)
+earlier_files() {  # made once: an earlier run of three snapshots, and 2000 snapshot files (slow to create on some disks)
+  "$mpm" run "$root/scenes/dyka_bar.toml" --out "$work/earlier" --set solver.end_time=1e-5 \
+    --set 'output.snapshots=[0.0, 5e-6, 1e-5]' >/dev/null 2>&1 || echo "fuzz_cli: the earlier run failed"
+  mkdir -p "$work/old"
+  awk -v folder="$work/old" 'BEGIN { for (k = 100; k < 2100; k++) {
+    file = sprintf("%s/snapshot_%04d.%s", folder, k, k % 4 ? "csv" : "vtp"); print "id,x\n0,0" > file; close(file) } }'
+}
+signal_run_case() {  # signal_run_case NUMBER
+  local number=$1 out=$work/signalled_run kept name signal twice cells snapshots count file index what
+  rm -rf "$out"
+  case $((RANDOM % 4)) in  # the old files are hard links (cp -al): quick, and never written, only removed
+    0) kept="no folder" ;;
+    1) kept="an earlier run" && cp -r "$work/earlier" "$out" ;;
+    2) kept="2000 old snapshots" && cp -al "$work/old" "$out" && printf '{\n  "status": "done"\n}\n' >"$out/run.json" ;;
+    3) kept="an earlier run and 2000 old snapshots" && cp -r "$work/earlier" "$out" && cp -al "$work/old/." "$out/" ;;
+  esac
+  pick signal_names && name=$picked
+  pick signal_cells && cells=$picked
+  if ((RANDOM % 2)); then snapshots='[]' count=0; else snapshots='[0.0, 1e-3]' count=2; fi
+  if [[ $kept != "no folder" ]] && ((RANDOM % 2)); then random_delay 80; else random_delay 800; fi
+  twice=$((RANDOM % 4 == 0))
+  arguments=(run "$root/scenes/dyka_bar.toml" --out "$out" --set solver.end_time=2e-3 --set "grid.cells=[$cells]"
+    --set "output.snapshots=$snapshots")
+  start_mpm "${arguments[@]}"
+  sleep "$delay"
+  kill -s "$name" "$pid" 2>/dev/null
+  ((twice)) && kill -s "$name" "$pid" 2>/dev/null
+  await "$pid" 30
+  signal=$(kill -l "$name")
+  what="SIG$name" && ((twice)) && what+=" twice"
+  what+=" after $delay s into $kept"
+  count_case "signalled run $number, $what"
+  scene_copy=""
+  status_of "$out/run.json"
+  ((hung)) && report "signalled run $number" "$what: still running after 30 s" "${arguments[@]}"
+  if ((code == 0)); then
+    [[ $status == "done" ]] || report "signalled run $number" "$what: exit 0, run.json says '$status'" "${arguments[@]}"
+    grep -q "^wrote " "$work/stdout" || report "signalled run $number" "$what: exit 0 without 'wrote'" "${arguments[@]}"
+    for file in "$out"/snapshot_* "$out"/exact_[0-9]*; do  # the new run's are NNNN < $count
+      index=${file##*_} && index=${index%%.*}
+      [[ ! -e $file ]] || { [[ $index =~ ^[0-9]{4}$ ]] && ((10#$index < count)); } && continue
+      report "signalled run $number" "$what: $file of the earlier run left beside run.json done" "${arguments[@]}" && break
+    done
+  elif ((code == 128 + signal)); then
+    if grep -q "^interrupted: SIG$name" "$work/err"; then
+      [[ $status == interrupted ]] || report "signalled run $number" "$what: interrupted, run.json says '$status'" "${arguments[@]}"
+    elif [[ $status != "" && ! ($status == "done" && $kept != "no folder") ]]; then
+      report "signalled run $number" "$what: ended by the signal without a word, run.json says '$status'" "${arguments[@]}"
+    fi
+  elif ((!hung)); then
+    report "signalled run $number" "$what: exit $code, want 0 or $((128 + signal))" "${arguments[@]}"
+  fi
+  [[ $status == running || $status == clearing ]] && report "signalled run $number" "$what: run.json says $status after the run ended" "${arguments[@]}"
+  cut_csv "$out"/*.csv
+  [[ -n $cut ]] && report "signalled run $number" "$what: $cut does not end with a newline" "${arguments[@]}"
+  rm -rf "$out"
+}
+earlier_files
+for ((number = 0; number < generated; ++number)); do signal_run_case $number; done
+
+# 3. Stop signals during studies: a study of 4 to 6 Dyka bars (100 to 320 cells, 2 ms), --jobs 2, sent SIGTERM,
+# SIGINT or SIGHUP after a random delay, or SIGKILL. Within 60 s it exits 128 + N (or 0, finished first); no
+# process naming the study's folder is left (after SIGKILL, its runs get SIGTERM from PR_SET_PDEATHSIG: 5 s to
+# end); no study.csv after a stop signal; no case's run.json says "running" or "clearing"; every CSV is whole.
+study_signals=(TERM INT HUP TERM INT HUP KILL)
+signal_study_case() {  # signal_study_case NUMBER
+  local number=$1 out=$work/signalled_study_$1 study=$work/study_$1.toml n k cells="" name signal json what
+  n=$((4 + RANDOM % 3))
+  for ((k = 0; k < n; ++k)); do cells+="${cells:+, }[$((100 + 40 * k + RANDOM % 20))]"; done
+  printf 'scene = "%s"\n[set]\nsolver.end_time = 2.0e-3\noutput.snapshots = []\n[axes]\ngrid.cells = [%s]\n' \
+    "$root/scenes/dyka_bar.toml" "$cells" >"$study"
+  pick study_signals && name=$picked
+  random_delay 1500
+  arguments=(study "$study" --out "$out" --jobs 2)
+  start_mpm "${arguments[@]}"
+  sleep "$delay"
+  kill -s "$name" "$pid" 2>/dev/null
+  await "$pid" 60
+  signal=$(kill -l "$name")
+  what="SIG$name after $delay s"
+  count_case "signalled study $number, $what"
+  scene_copy=$study
+  ((hung)) && report "signalled study $number" "$what: still running after 60 s" "${arguments[@]}"
+  for ((k = 0; k < 50; ++k)); do  # at once after a stop signal (the study waits for its runs); 5 s after SIGKILL
+    processes_naming "$out"
+    [[ -z $left || $name != KILL ]] && break
+    sleep 0.1
+  done
+  if [[ -n $left ]]; then
+    report "signalled study $number" "$what: processes left: $(for k in $left; do tr '\0' ' ' <"/proc/$k/cmdline"; echo; done 2>/dev/null | head -c 400)" "${arguments[@]}"
+    kill -KILL $left 2>/dev/null
+  fi
+  if ((code == 0)); then
+    [[ -s $out/study.csv ]] || report "signalled study $number" "$what: exit 0 without study.csv" "${arguments[@]}"
+  elif ((code == 128 + signal)); then
+    [[ $name != KILL && -e $out/study.csv ]] && report "signalled study $number" "$what: exit $code but study.csv written" "${arguments[@]}"
+  elif ((code != 0 && !hung)); then
+    report "signalled study $number" "$what: exit $code, want 0 or $((128 + signal))" "${arguments[@]}"
+  fi
+  for json in "$out"/cases/*/run.json; do
+    status_of "$json"
+    [[ $status == running || $status == clearing ]] && report "signalled study $number" "$what: $json says $status" "${arguments[@]}" && break
+  done
+  cut_csv "$out"/cases/*/*.csv
+  [[ -n $cut ]] && report "signalled study $number" "$what: $cut does not end with a newline" "${arguments[@]}"
+  rm -rf "$out" "$study"
+}
+for ((number = 0; number < generated; ++number)); do signal_study_case $number; done
+
+# 4. Links and dotted names: a study's cases/NNNN a link to a folder holding a canary observers.csv, a dangling
+# link or a file; cases/ itself a link to that folder; cases/NNNN/observers.csv or a run's output file a link to
+# the canary; a scene or study named `...toml` or `..toml` run without --out in a scratch folder. Exit 2 within
+# 20 s, `error: ` naming the path or file on the first line, the canary and every listing unchanged.
+link_kinds=(case-link case-dangling case-file cases-link case-inner-link run-link dotted-run dotted-study)
+run_outputs=(run.json observers.csv energy.csv grid.csv exact.csv snapshot_0000.csv snapshot_0001.vtp snapshots.pvd)
+dotted_names=(...toml ..toml)
+links_case() {  # links_case NUMBER
+  local number=$1 base=$work/links kind index path before after program=$mpm
+  local out=$base/out canary=$base/canary scratch=$base/scratch study=$base/tiny.toml
+  rm -rf "$base" && mkdir -p "$canary" "$scratch"
+  printf 'canary\n' >"$canary/observers.csv"
+  printf 'scene = "%s"\n[set]\nsolver.end_time = 1.0e-5\noutput.snapshots = []\n[axes]\ngrid.cells = [[10], [20], [40]]\n' \
+    "$root/scenes/dyka_bar.toml" >"$study"
+  pick link_kinds && kind=$picked
+  printf -v index '%04d' $((RANDOM % 5))  # the study has cases 0000 to 0002
+  arguments=(study "$study" --out "$out" --jobs 2)
+  path=$out/cases/$index
+  case $kind in
+    case-link) mkdir -p "$out/cases" && ln -s "$canary" "$path" ;;
+    case-dangling) mkdir -p "$out/cases" && ln -s "$base/nothing" "$path" ;;
+    case-file) mkdir -p "$out/cases" && : >"$path" ;;
+    cases-link) mkdir -p "$out" && ln -s "$canary" "$out/cases" && path=$out/cases ;;
+    case-inner-link) mkdir -p "$path" && ln -s "$canary/observers.csv" "$path/observers.csv" && path+=/observers.csv ;;
+    run-link) pick run_outputs && mkdir -p "$out" && ln -s "$canary/observers.csv" "$out/$picked" && path=$out/$picked
+      arguments=(run "$root/scenes/dyka_bar.toml" --out "$out" --set solver.end_time=1e-5 --set 'output.snapshots=[]') ;;
+    dotted-*) pick dotted_names && path=$picked
+      if [[ $kind == dotted-run ]]; then cp "$root/scenes/dyka_bar.toml" "$scratch/$path" && arguments=(run "$path" --set solver.end_time=1e-5)
+      else cp "$study" "$scratch/$path" && arguments=(study "$path" --jobs 2); fi ;;
+  esac
+  before=$(cd "$base" && ls -lAR --time-style=+ . && cat canary/observers.csv)
+  [[ $program == */* && $program != /* ]] && program=$PWD/$program  # run from the scratch folder
+  (cd "$scratch" && exec timeout -s KILL 20 "$program" "${arguments[@]}") >"$work/stdout" 2>"$work/err"
+  code=$?
+  count_case "links $number, $kind ${path#"$work"/}"
+  after=$(cd "$base" && ls -lAR --time-style=+ . && cat canary/observers.csv)
+  scene_copy=""
+  [[ $kind == dotted-* ]] && kind+=" (run in an empty folder, no --out)"
+  [[ $code -eq 2 ]] || report "links $number" "$kind: exit $code, want 2" "${arguments[@]}"
+  [[ $(head -n 1 "$work/err") == "error: "*"$path"* ]] || report "links $number" "$kind: the first line of stderr is not 'error: ...$path...'" "${arguments[@]}"
+  [[ $before == "$after" ]] || report "links $number" "$kind: files changed: $(diff <(echo "$before") <(echo "$after") | tr '\n' '|' | head -c 300)" "${arguments[@]}"
+  rm -rf "$base"
+}
+for ((number = 0; number < generated; ++number)); do links_case $number; done
+cases=$((cases + generated_cases))
 summary=""
 for code in "${!codes[@]}"; do summary+=" exit $code: ${codes[$code]};"; done
 echo "fuzz_cli: $cases cases (seed $seed) in $((SECONDS - start)) s:$summary $failures failed"
