@@ -14,6 +14,7 @@
 #include "mpm/integrators/update_stress_last.hpp"
 #include "mpm/io/scene_builder.hpp"
 #include "mpm/shape/bspline.hpp"
+#include "mpm/fast/fast_layer.hpp"
 #include "mpm/fast/lme_fast.hpp"
 #include "mpm/shape/lme_reference.hpp"
 #include "mpm/shape/linear.hpp"

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "mpm/analysis/mode_analysis.hpp"
+#include "mpm/fast/fast_layer.hpp"
 #include "tests/support.hpp"
 #include "verification/fitted_order.hpp"
 #include "verification/smooth_case.hpp"

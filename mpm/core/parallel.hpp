@@ -66,6 +66,7 @@
 #include <vector>
 
 #include "mpm/core/types.hpp"
+#include "mpm/core/worker_index.hpp"
 #ifdef MPM_THREADS_ONETBB  // the trial of oneTBB (benchmarks/threads_library.sh): CMake -DMPM_THREADS=onetbb
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -126,12 +127,6 @@ inline Range part_of(int count, int parts, int part) {
 /// Chunk `chunk` of [0, count): chunks_of(count) nearly equal contiguous chunks, in order.
 inline Range chunk_of(int count, int chunk) { return part_of(count, chunks_of(count), chunk); }
 
-/// The index of the thread that runs the current chunk: 0 for the calling thread, 1, 2, ... for the
-/// workers. A slot for per-thread counters (ShapeDiagnostics), read without a function call.
-inline int& worker_index() {
-  static thread_local int index = 0;
-  return index;
-}
 
 /// Whether the team pays for itself, from the loops it ran: each loop's wall time over the calling thread's
 /// own pace, ratio = loop time / (the caller's time per chunk x chunks), averaged over the recent loops

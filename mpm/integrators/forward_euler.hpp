@@ -6,10 +6,6 @@
 
 #include "mpm/core/kernels.hpp"
 #include "mpm/core/step_phases.hpp"
-#include "mpm/fast/fast_grid_to_particle.hpp"
-#include "mpm/fast/fast_nodal_forces.hpp"
-#include "mpm/fast/fast_particle_to_grid.hpp"
-#include "mpm/fast/fast_strain_update.hpp"
 #include "mpm/grid/boundary.hpp"
 #include "mpm/grid/nodal_update.hpp"
 #include "mpm/model.hpp"

@@ -1,14 +1,14 @@
 /// \file
 /// What a shape function tells about its own work: stencil sizes and, for LME, Newton iterations.
 ///
-/// The stencils are computed on every core at once, so each thread counts into its own slot
-/// (worker_index(); a cache line apart, so that the threads do not slow each other down); the totals
-/// add the slots.
+/// The fast layer computes the stencils on every core at once, so each thread counts into its own slot
+/// (worker_index(), 0 in a serial run; a cache line apart, so that the threads do not slow each other down); the
+/// totals add the slots.
 #pragma once
 #include <algorithm>
 #include <array>
 
-#include "mpm/core/parallel.hpp"
+#include "mpm/core/worker_index.hpp"
 
 namespace mpm {
 
