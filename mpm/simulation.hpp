@@ -1,8 +1,11 @@
 /// \file
-/// The time-step loop: Algorithm 1 of the paper, top to bottom.
+/// The time-step loop around one step of an integrator. The paper's algorithm box (paper/03, "One
+/// predictor-corrector step as the code runs it", \ref npc_algorithm) has nine steps, which the integrator's step()
+/// runs as its numbered phases (\ref fe_algorithm for forward Euler); the time step of Eq. (42) and the stencils come
+/// before them, here.
 ///
 /// A Simulation owns the model, the particles, the shape function and the integrator, all chosen
-/// once per run as template arguments. run() advances from t = 0 to the end time:
+/// once per run as template arguments. run() advances from t = 0 to the end time, each pass of the loop in five parts:
 ///
 ///   1. dt by the Courant condition, Eq. (42), or fixed (solver.dt), shortened to land on the next output time;
 ///   2. the stencils N_Ip, grad N_Ip at x_p^k, computed once and reused by every transfer;

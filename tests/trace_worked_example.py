@@ -3,7 +3,10 @@
 from its marker `<!-- worked INTEGRATOR PHASE node|particle INDEX QUANTITY -->` and compared, to half a unit of its
 last printed digit, with the trace of step 1 of scenes/worked_example.toml after the phase of that number (the
 book's phase numbers are the trace's: `# phase N of M: NAME`). A number fails when its phase, row or column is not
-in the trace, except the quantities of NOT_TRACED, each left out for the reason it gives.
+in the trace, except the quantities of NOT_TRACED, each left out for the reason it gives. The book and the trace
+speak one vocabulary: each equation a row of the book's tables is labelled with, `| 7 | (18)-(19) | ...`, is one of
+those the trace's heading of that phase names (`# phase 7 of 7: euler_update, Eqs. (12) (18)-(19) (21)-(22): ...`,
+from the phase table of mpm/core/step_phases.hpp).
 
 Usage: trace_worked_example.py MPM SOURCE_DIR
 """
@@ -30,6 +33,17 @@ NOT_TRACED = {
 }
 
 
+def numbers_of(label):
+    """The equation numbers of a label: "(12), (21)" -> {12, 21}; "(18)-(19)" -> {18, 19}; "(26)-(29)" -> 26..29."""
+    numbers = set()
+    for first, last in re.findall(r"\((\d+)\)(?:-\((\d+)\))?", label):
+        numbers.update(range(int(first), int(last or first) + 1))
+    return numbers
+
+
+equations = {}  # (integrator, phase number): the equation numbers the trace's heading of that phase names
+
+
 def trace(integrator):
     """({phase number: phase name}, {(phase name, at, index): {column: value}}) of step 1 traced as CSV."""
     command = [mpm, "trace", f"{root}/scenes/worked_example.toml", "--step", "1"]
@@ -38,9 +52,10 @@ def trace(integrator):
     out = subprocess.run(command, capture_output=True, text=True, check=True).stdout
     names, rows, header = {}, {}, []
     for line in out.splitlines():
-        numbered = re.match(r"# phase (\d+) of \d+: ([a-z_0-9]+)", line)
+        numbered = re.match(r"# phase (\d+) of \d+: ([a-z_0-9]+)(?:, Eqs?\. ([^:]*))?:", line)
         if numbered:
             names[int(numbered.group(1))] = numbered.group(2)
+            equations[(integrator, int(numbered.group(1)))] = numbers_of(numbered.group(3) or "")
         if line.startswith("#") or not line:
             continue
         fields = line.split(",")
@@ -74,6 +89,23 @@ for text, integrator, phase, at, index, quantity in markers:
     if abs(float(row[column]) - want) > 0.5 * 10.0 ** -decimals + 1e-12:
         failures.append(f"{where}: book {text}, trace {row[column]}")
 
+labels = 0
+for line in book.splitlines():  # each table row: | phase | equation | quantity | values with their markers |
+    row = re.match(r"\| (\d+) \| ([^|]*) \|.*?<!-- worked (\S+) ", line)
+    if not row or not row.group(2).strip():
+        continue
+    phase, label, integrator = int(row.group(1)), row.group(2).strip(), row.group(3)
+    labels += 1
+    named = equations.get((integrator, phase))
+    if named is None:
+        failures.append(f"{integrator} phase {phase}: labelled {label} in the book, no such phase in the trace")
+    elif not numbers_of(label) <= named:
+        failures.append(f"{integrator} phase {phase}: the book labels a row {label}, the trace's heading names "
+                        f"{sorted(named)} (mpm/core/step_phases.hpp's table)")
+if labels == 0:
+    failures.append("no labelled row of the book's tables read")
+
+print(f"trace_worked_example: {labels} equation labels of the book's rows found among the trace's phase headings")
 print(f"trace_worked_example: {sum(checked.values())} of the book's numbers checked against mpm trace "
       f"({', '.join(f'{k} {v}' for k, v in checked.items())}), {left_out} not traced ({', '.join(NOT_TRACED)})")
 for failure in failures:
