@@ -33,7 +33,7 @@ struct Case {
 
 /// What a case gave.
 struct CaseResult {
-  std::string status = "failed";  ///< done | stopped | refused | failed
+  std::string status = "failed";  ///< done | stopped | refused | failed (| interrupted: the study's stop signal ended it)
   std::string why;                ///< the first line of the refusal or failure; for a done run without scores, why
   /// The two scores (compare_score): rms_normalised of the velocity, the band of its own sampling, and its ending
   /// (done, or failed when no better than a flat line); none when the case is not done or has no exact solution.
@@ -185,7 +185,8 @@ inline CaseResult run_case(const std::string& program, const std::string& scene,
   }
   result.steps = json_number(json, "steps");
   const auto failure = json_string(json, "failure");
-  if (run.exit_code == 0) result.status = "done";
+  if (io::stop_signal != 0 && run.exit_code >= 128) result.status = "interrupted", result.why = "stopped by " + io::signal_name(io::stop_signal);
+  else if (run.exit_code == 0) result.status = "done";
   else if (run.exit_code == 2 || run.exit_code == 127)  // the scene passed --print-scene: the folder, or no mpm
     result.why = result.not_run = reason_line(run.err).empty() ? "exit " + std::to_string(run.exit_code) : reason_line(run.err);
   else if (run.exit_code == 3 && failure && failure->find("energy grew") != std::string::npos) result.status = "stopped", result.why = *failure;

@@ -3,6 +3,7 @@
 /// after the other, so that at most `jobs` children run at once (each run on one thread: the cores are not
 /// oversubscribed). After each case a progress line on stderr, rewritten in place when stderr is a terminal:
 ///   case 12/40 done, 3 running, 1 refused, 0 stopped, 0 failed
+/// (and ", 2 interrupted" for the runs a stop signal of the study ended).
 #pragma once
 #include <doctest/doctest.h>
 #include <unistd.h>
@@ -27,11 +28,15 @@ namespace mpm::study {
 /// The progress line after `finished` of `total` cases, `running` still going, counted by outcome.
 inline std::string progress_line(std::size_t finished, std::size_t total, std::size_t running, const std::vector<CaseResult>& results,
                                  const std::vector<bool>& over) {
-  std::size_t refused = 0, stopped = 0, failed = 0;
+  std::size_t refused = 0, stopped = 0, failed = 0, interrupted = 0;
   for (std::size_t k = 0; k < results.size(); ++k)
-    if (over[k]) refused += results[k].status == "refused", stopped += results[k].status == "stopped", failed += results[k].status == "failed";
+    if (over[k]) {
+      refused += results[k].status == "refused", stopped += results[k].status == "stopped";
+      failed += results[k].status == "failed", interrupted += results[k].status == "interrupted";
+    }
   return "case " + std::to_string(finished) + "/" + std::to_string(total) + " done, " + std::to_string(running) + " running, " +
-         std::to_string(refused) + " refused, " + std::to_string(stopped) + " stopped, " + std::to_string(failed) + " failed";
+         std::to_string(refused) + " refused, " + std::to_string(stopped) + " stopped, " + std::to_string(failed) + " failed" +
+         (interrupted ? ", " + std::to_string(interrupted) + " interrupted" : "");
 }
 
 /// Runs `run_one` on every case with at most `jobs` at once; returns the results in the cases' order. The first
@@ -96,6 +101,9 @@ TEST_CASE("study runner: every case once, in order, never more than `jobs` at on
   for (std::size_t k = 0; k < 7; ++k) CHECK(results[k].wall_s == static_cast<double>(k));
   CHECK(most <= 3);
   CHECK(err.str().find("case 7/7 done, 0 running, 1 refused, 0 stopped, 0 failed\n") != std::string::npos);
+  std::vector<CaseResult> ended(2);
+  ended[0].status = "interrupted", ended[1].status = "done";
+  CHECK(progress_line(2, 4, 0, ended, {true, true}) == "case 2/4 done, 0 running, 0 refused, 0 stopped, 0 failed, 1 interrupted");
   CHECK_THROWS_AS(run_cases(cases, 2, [](const Case&) -> CaseResult { throw std::runtime_error("disk full"); }, err), std::runtime_error);
 }
 
