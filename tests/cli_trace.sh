@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # `mpm trace`: the phases of one step of every integrator variant, 1D and 2D, on scenes of a few cells; the nodal
 # mass and momentum of step 1 and the momentum balance and a reaction checked by hand, in awk, from the particle rows
-# the trace prints (never by the program under test); bad options refused with exit 2 naming the option, nothing on
-# stdout. Usage: cli_trace.sh MPM
+# the trace prints (never by the program under test); two traces compared (--diff of two files, --against and
+# --against-set of two runs): exit 0 when they agree, 1 naming the first difference, 2 for a file that is not a trace;
+# bad options refused with exit 2 naming the option, nothing on stdout. Usage: cli_trace.sh MPM
 set -u
 mpm=$1
 work=$(mktemp -d)
@@ -191,6 +192,64 @@ for method in fe npc; do
     fail "2D $method: no node fixed in x and y"
 done
 
+# Two traces compared: --diff of two files, --against(-set) of two runs in one process; exit 0 when they agree, 1
+# naming the first difference, the step the titles name first, then phase by phase, row by row, column by column.
+compare() {  # compare WANT OUT ARGS...: mpm ARGS exits WANT, its stdout in OUT
+  local want=$1 out=$2; shift 2
+  "$mpm" "$@" >"$out" 2>"$work/err"
+  local got=$?
+  [[ $got -eq $want ]] ||
+    fail "mpm $* -> exit $got (want $want), stderr: $(cat "$work/err"), stdout: $(head -c 300 "$out")"
+}
+"$mpm" trace "$work/bar.toml" --step 1 >"$work/again.csv" 2>"$work/err" || fail "mpm trace bar --step 1: exit $?"
+compare 0 "$work/same" trace --diff "$work/fe.csv" "$work/again.csv"
+grep -qE '^the traces agree: [0-9]+ values in 8 phases, \|A - B\| <= 1e-12 max\(\|A\|, \|B\|, 1\)$' "$work/same" ||
+  fail "--diff of two traces of one run: $(cat "$work/same")"
+# CFL 0.25 for 0.5: dt = CFL h / c = 0.05 s for 0.1 s (c = 5 m/s), so particle 0's strain, dt dv/dx = -1.5 dt, halves.
+"$mpm" trace "$work/bar.toml" --step 1 --set solver.cfl=0.25 >"$work/cfl.csv" 2>"$work/err" || fail "cfl 0.25: exit $?"
+compare 1 "$work/cfl" trace --diff "$work/fe.csv" "$work/cfl.csv"
+grep -qx 'first difference: the step, dt: 0.1 (A) vs 0.05 (B)' "$work/cfl" || fail "--diff, CFL: $(cat "$work/cfl")"
+grep -qx '  6 values differ: phase 4 (stress, Eqs. (16) (17) (3)), particle 0, eps_p_k1_xx: -0.15 (A) vs -0.075 (B)' \
+  "$work/cfl" || fail "--diff, CFL: not the stress's phase first: $(cat "$work/cfl")"
+grep -qE '^[0-9]+ values differ in the step and 4 phases \(' "$work/cfl" ||
+  fail "--diff, CFL: no count: $(cat "$work/cfl")"
+# The same comparison in one process: the scene against itself with an override, or against another scene.
+compare 1 "$work/cfl_set" trace "$work/bar.toml" --step 1 --against-set solver.cfl=0.25
+[[ $(sed -n 2p "$work/cfl_set") == "B: $work/bar.toml --set solver.cfl=0.25" ]] ||
+  fail "--against-set: $(head -2 "$work/cfl_set")"
+diff <(tail -n +3 "$work/cfl") <(tail -n +3 "$work/cfl_set") >/dev/null ||
+  fail "--against-set is not --diff of the files: $(cat "$work/cfl_set")"
+{ cat "$work/bar.toml"; echo "cfl = 0.25"; } >"$work/other.toml"  # under [solver], bar.toml's last table
+compare 1 "$work/other" trace "$work/bar.toml" --step 1 --against "$work/other.toml"
+diff <(tail -n +3 "$work/cfl") <(tail -n +3 "$work/other") >/dev/null || fail "--against is not --diff of the files"
+compare 0 "$work/same" trace "$work/bar.toml" --step 1 --against-set solver.cfl=0.5  # the default
+compare 0 "$work/same" trace "$work/bar.toml" --step 1 --set solver.cfl=0.25 --against "$work/other.toml"
+# One value planted in a copy (a kernel's edit that shows in one phase): named, counted; within a --tolerance.
+awk -F, -v OFS=, '/^phase,/ { for (i = 1; i <= NF; i++) c[$i] = i }
+  $1 == "forces" && $3 == "node" && $4 == 2 { $c["f_I_k1_int_x"] = 99 } 1' "$work/fe.csv" >"$work/planted.csv"
+compare 1 "$work/planted" trace --diff "$work/fe.csv" "$work/planted.csv"
+f=$(value "$work/fe.csv" forces node 2 f_I_k1_int_x)
+grep -qx "first difference: phase 5 (forces, Eqs. (14)-(15)), node 2, f_I_k1_int_x: $f (A) vs 99 (B)" "$work/planted" &&
+  grep -qx '1 value differs in 1 phase (|A - B| > 1e-12 max(|A|, |B|, 1))' "$work/planted" ||
+  fail "--diff of a planted value: $(cat "$work/planted")"
+awk -F, -v OFS=, '$1 == "reset" && $3 == "particle" && $4 == 1 { $5 = sprintf("%.15g", $5 * (1 + 4e-10)) } 1' \
+  "$work/fe.csv" >"$work/near.csv"  # m_p, 4e-10 of it more
+compare 1 "$work/out" trace --diff "$work/fe.csv" "$work/near.csv"
+compare 0 "$work/out" trace --diff "$work/fe.csv" "$work/near.csv" --tolerance 1e-9
+# A row or a phase in one trace only is a difference too; a file that is not a trace is bad input (below).
+grep -v '^forces,.*,node,3,' "$work/fe.csv" >"$work/row.csv"
+compare 1 "$work/out" trace --diff "$work/fe.csv" "$work/row.csv"
+grep -qx 'first difference: phase 5 (forces, Eqs. (14)-(15)), node 3: in A only' "$work/out" ||
+  fail "a row missing: $(cat "$work/out")"
+compare 1 "$work/out" trace --diff "$work/usl.csv" "$work/musl.csv"
+grep -qx '  1 in one trace only: phase 7 (reprojection): in B only' "$work/out" ||
+  fail "USL against MUSL: $(cat "$work/out")"
+awk -F, -v OFS=, 'NR == 5 { $5 = "abc" } 1' "$work/fe.csv" >"$work/bad.csv"
+mkfifo "$work/fifo"
+timeout 10 "$mpm" trace --diff "$work/fe.csv" "$work/fifo" >"$work/out" 2>"$work/err"
+[[ $? -eq 2 ]] && grep -qx "error: $work/fifo: not a regular file (a FIFO)" "$work/err" ||
+  fail "--diff of a FIFO: $(cat "$work/err")"
+
 # Bad input: exit 2, the option named, nothing on stdout.
 bad '^error: --step: must be a whole number from 1 to 10000000' trace "$work/bar.toml" --step 0
 bad '^error: --step' trace "$work/bar.toml" --step -1
@@ -202,6 +261,23 @@ bad '^error: --format: must be one of csv \| table' trace "$work/bar.toml" --ste
 bad "^error: .*solver.cfll" trace "$work/bar.toml" --step 1 --set solver.cfll=0.5
 bad '^error: --bogus: unknown option' trace "$work/bar.toml" --step 1 --bogus
 bad "^error: $work/none.toml" trace "$work/none.toml" --step 1
+bad "^error: $work/bad.csv:5: $(sed -n 4p "$work/fe.csv" | cut -d, -f5): 'abc' is not a finite number" \
+  trace --diff "$work/fe.csv" "$work/bad.csv"
+bad "^error: $work/table.txt:1: not a CSV trace of mpm trace" trace --diff "$work/table.txt" "$work/fe.csv"
+bad "^error: $work/none.csv: cannot be read" trace --diff "$work/fe.csv" "$work/none.csv"
+bad '^error: --diff: give two trace files, A.csv B.csv, not 1' trace --diff "$work/fe.csv"
+bad '^error: --diff: give two trace files, A.csv B.csv, not 3' trace --diff "$work/fe.csv" "$work/fe.csv" "$work/fe.csv"
+bad '^error: --step: give it or --diff, not both' trace --diff "$work/fe.csv" "$work/cfl.csv" --step 1
+bad '^error: SCENE.toml: give it or --diff, not both' trace "$work/bar.toml" --diff "$work/fe.csv" "$work/cfl.csv"
+bad '^error: SCENE.toml: required' trace --step 1
+bad '^error: --tolerance: only with --diff, --against or --against-set' trace "$work/bar.toml" --step 1 --tolerance 1e-6
+bad '^error: --tolerance: must be a number in \[0, 1\]' trace --diff "$work/fe.csv" "$work/cfl.csv" --tolerance -1
+bad '^error: --format: give it or --against-set, not both' trace "$work/bar.toml" --step 1 --against-set solver.cfl=1 \
+  --format table
+bad '^error: --against-set\(1\):1: solver.cfll: unknown key' trace "$work/bar.toml" --step 1 --set solver.cfl=0.4 \
+  --against-set solver.cfll=1
+bad "^error: $work/none.toml" trace "$work/bar.toml" --step 1 --against "$work/none.toml"
+bad '^error: --against: must name a scene file' trace "$work/bar.toml" --step 1 --against ''
 "$mpm" trace --help >"$work/help" && grep -q -- '--step' "$work/help" || fail "mpm trace --help lacks --step"
 "$mpm" --help >"$work/help" && grep -q 'mpm trace' "$work/help" || fail "mpm --help lacks mpm trace"
 

@@ -186,7 +186,7 @@ for ((number = 0; number < cases; ++number)); do
   rm -rf "$out" "$scene_copy"
 done
 # Hostile files for every reader of a file (the times file, compare's CSV, a particle file, a run folder's
-# observers.csv): not regular files, a byte-order mark, a line over 1 MiB, a header name that closes
+# observers.csv, a trace for mpm trace --diff): not regular files, a byte-order mark, a line over 1 MiB, a header name that closes
 # gnuplot's quote and runs a command, a control character, ';' or tab separators, decimal commas, sample
 # times after the end time or repeated and decreasing. Each returns within 10 s with 0, 2 or 3, runs
 # nothing, and exit 2 says `error: ` and names the file.
@@ -210,7 +210,7 @@ hostile() {  # hostile CLASS FILE: makes FILE of that class
 }
 hostile_cases=0
 for class in fifo device folder proc bom long inject control semicolon tabs decimal late backwards; do
-  for reader in times compare particles plot; do
+  for reader in times compare particles plot trace; do
     mkdir -p "$work/hostile"
     file=$work/hostile/observers.csv
     hostile $class "$file"
@@ -219,6 +219,7 @@ for class in fifo device folder proc bom long inject control semicolon tabs deci
       compare) arguments=(compare "$file" "$root/scenes/dyka_bar.toml" --at 0 --column A.v_x=v_x) ;;
       particles) arguments=(run "$root/scenes/colliding_disks.toml" --print-scene --set 'body[0].shape="file"' --set "body[0].file=\"$file\"") ;;
       plot) arguments=(plot "$work/hostile") ;;
+      trace) arguments=(trace --diff "$file" "$file") ;;  # the same file twice: a trace agrees with itself (0)
     esac
     hostile_cases=$((hostile_cases + 1))
     timeout -s KILL 10 "$mpm" "${arguments[@]}" >"$work/stdout" 2>"$work/err"

@@ -143,9 +143,10 @@ if ran 6; then
     fail "exercise 6: the page's block does not put the corrector back"
 fi
 
-# 7. The planted bug: the page quotes the mutant's own texts; the first line the trace's diff shows is a node's row in
-# phase 5 (forces); there f_I^int is the page's number after the edit and before it, f_I^ext the same in both; the
-# particles of the edited program's run end where the page says; the line back in place at the end.
+# 7. The planted bug: the page quotes the mutant's own texts; `mpm trace --diff` of the CSV traces before and after
+# names first a node's f_I_k1_int_x in phase 5 (forces), and the page quotes that line and the count after it as
+# printed; in the traces' phase 5, f_I^int is the page's number after the edit and before it, f_I^ext the same in
+# both; the particles of the edited program's run end where the page says; the line back in place at the end.
 original=$(awk -F'\t' '$1 == "force_internal_mass" { print $4 }' "$root/tests/mutants/mutants.tsv")
 [[ -n $original && $(grep -cF "$original" "$root/mpm/transfer/nodal_forces.hpp") -eq 1 ]] ||
   fail "exercise 7: the mutant force_internal_mass no longer applies to mpm/transfer/nodal_forces.hpp"
@@ -167,29 +168,30 @@ quoted = {"f_int": numbers(r"f_I\^\{int\} = \(([^)]*)\)"), "f_int_before": numbe
           "x_p": numbers(r"x_p = \(([^)]*)\)")}
 ok = all(quoted.values())
 print(f"exercise 7: the page quotes {quoted}")
-def forces(name):  # phase 5's node table of a --format table trace: its first line number, header and rows
-    lines = open(f"{tree}/{name}").read().splitlines()
-    first = next(i for i, line in enumerate(lines) if line.startswith("phase 5 of 7: forces"))
-    header, rows, k = lines[first + 1].split(), [], first + 2
-    while k < len(lines) and lines[k].split() and lines[k].split()[0].isdigit():
-        rows.append(dict(zip(header, lines[k].split())))
-        k += 1
-    return first + 1, k, rows  # 1-based: the header's line is first + 2; the rows end before line k + 1
+def forces(name):  # the node rows of phase 5 (forces) of a CSV trace, by column
+    rows, header = [], []
+    for fields in (line.split(",") for line in open(f"{tree}/{name}").read().splitlines() if line[:1] != "#"):
+        if fields[0] == "phase":
+            header = fields
+        elif fields[0] == "forces" and fields[2] == "node":
+            rows.append(dict(zip(header, fields)))
+    return rows
 def close(values, expected, digits=2):
     return expected is not None and len(values) == len(expected) and all(
         abs(v - e) <= 0.5 * 10.0 ** -digits for v, e in zip(values, expected))
-start, end, after = forces("trace-after.txt")
-_, _, before = forces("trace-before.txt")
+after, before = forces("trace-after.csv"), forces("trace-before.csv")
 got = {"f_int": [float(r["f_I_k1_int_x"]) for r in after], "f_int_before": [float(r["f_I_k1_int_x"]) for r in before],
        "f_ext": [float(r["f_I_k1_ext_x"]) for r in after], "f_ext_before": [float(r["f_I_k1_ext_x"]) for r in before]}
 for key in ("f_int", "f_int_before", "f_ext"):
     ok = ok and close(got[key], quoted[key])
 ok = ok and got["f_ext"] == got["f_ext_before"]
-hunk = re.match(r"(\d+)(?:,\d+)?c", out[0]) if out else None
-first_diff = int(hunk.group(1)) if hunk else -1
-ok = ok and start + 2 <= first_diff <= end
+first = next((k for k, line in enumerate(out) if line.startswith("first difference: ")), len(out))
+named, after_it = (out + ["", ""])[first], (out + ["", ""])[first + 1]
+count = re.match(r"\d+ values? differs? in \d+ phases?", after_it)
+ok = ok and named.startswith("first difference: phase 5 (forces") and re.search(r"\), node \d+, f_I_k1_int_x: ", named)
+ok = ok and f"`{named}`" in answer and count is not None and f"`{count.group(0)}`" in answer
 print(f"exercise 7: the run's f_I^int {got['f_int']} (before {got['f_int_before']}), f_I^ext {got['f_ext']}; "
-      f"the diff's first line {first_diff}, phase 5's node rows on lines {start + 2}-{end}")
+      f"mpm trace --diff: '{named}', '{count.group(0) if count else ''}'")
 rows = list(csv.DictReader(open(f"{tree}/we-fe-planted/snapshot_0000.csv")))
 v_p, x_p = [float(r["v_x"]) for r in rows], [float(r["x"]) for r in rows]
 print(f"exercise 7: the planted bug's particles v_p {v_p}, x_p {x_p}")

@@ -22,6 +22,8 @@
 
 #include "mpm/cli/options.hpp"
 #include "mpm/cli/run_command.hpp"
+#include "mpm/cli/trace_tables.hpp"
+#include "mpm/cli/trace_diff.hpp"
 #include "mpm/run_api.hpp"
 #ifndef DOCTEST_CONFIG_DISABLE  // the doctests at the end step the integrators themselves; the command runs scenes (run_setup)
 #include "mpm/integrators/forward_euler.hpp"
@@ -37,6 +39,7 @@ struct TraceRequest {
   std::string scene_path, format = "csv";
   long step = 0;
   std::vector<std::string> overrides;
+  TraceComparisonRequest compare;  ///< --diff A.csv B.csv, or the second run: --against, --against-set
 };
 
 /// An integrator variant as the trace names it.
@@ -48,25 +51,6 @@ struct TraceVariant {
   std::string force_level = "k1";      ///< the time level of f_I, a_I and forward Euler's a_p: `k` for USL, MUSL
   std::vector<Phase> phases = integrator_phases(io::IntegratorKind::fe, io::StressUpdate::usf);  ///< numbered
 };
-
-/// One table of a phase: a header and its rows, the numbers already written.
-struct TraceTable {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-};
-
-/// The printout of one phase.
-struct TraceBlock {
-  Phase phase;
-  TraceTable nodes, particles;
-};
-
-/// A number as the trace writes it: 15 significant digits in CSV (0.1 + 0.2 is 0.3), 10 in a table.
-inline std::string trace_number(double value, bool csv) {
-  char text[40];
-  std::snprintf(text, sizeof text, csv ? "%.15g" : "%.10g", value == 0.0 ? 0.0 : value);  // no -0
-  return text;
-}
 
 /// A Monitor that watches one step: after each phase of the integrator's step() it copies the nodal fields the
 /// phase has computed under their names and writes the rows of the nodes with mass and of every particle.
@@ -292,41 +276,6 @@ inline TraceVariant trace_variant(const io::Scene& scene) {
   return variant;
 }
 
-/// The rows of `table`, each after the phase's name and equations and `at` (node or particle), as CSV.
-inline void print_csv_table(const TraceTable& table, const PhaseInfo& info, std::ostream& out) {
-  if (table.rows.empty()) return;
-  out << "phase,equation,at";
-  for (const auto& name : table.header) out << "," << (&name == &table.header[0] ? "index" : name);
-  out << "\n";
-  for (const auto& row : table.rows) {
-    out << info.name << "," << info.equation << "," << table.header[0];
-    for (const auto& cell : row) out << "," << cell;
-    out << "\n";
-  }
-}
-
-/// `table` with its columns aligned, right-justified, indented by two spaces.
-inline void print_aligned_table(const TraceTable& table, std::ostream& out) {
-  if (table.rows.empty()) return;
-  std::vector<size_t> width(table.header.size());
-  for (size_t k = 0; k < width.size(); ++k) {
-    width[k] = table.header[k].size();
-    for (const auto& row : table.rows) width[k] = std::max(width[k], row[k].size());
-  }
-  auto line = [&](const std::vector<std::string>& cells) {
-    out << " ";
-    for (size_t k = 0; k < cells.size(); ++k) out << " " << std::string(width[k] - cells[k].size(), ' ') << cells[k];
-    out << "\n";
-  };
-  line(table.header);
-  for (const auto& row : table.rows) line(row);
-}
-
-/// ", Eq. (30)", ", Eqs. (14)-(15)" or "" for a phase without an equation ("-").
-inline std::string equations_text(const std::string& equation) {
-  if (equation.empty() || equation[0] != '(') return "";
-  return (equation.size() > 4 ? ", Eqs. " : ", Eq. ") + equation;
-}
 
 /// The number the integrator gives `phase` (its place in the integrator's `phases` list; MUSL's phase 7 is skipped
 /// by USL, whose phases 8 and 9 keep their numbers).
@@ -397,27 +346,38 @@ inline std::unique_ptr<CommandParser> trace_parser(TraceRequest& request) {
       "a_I, the fixed components, reactions r_I) and every particle quantity (x, v, a, strain, stress, density), as CSV or an aligned table;\n"
       "writes no file. "
       "Column names say the time level: _k at t_k, _k1 at t_k + dt, _pred the predictor; f_I and a_I that of the\n"
-      "stress that makes them. The phases are numbered as the integrator numbers them (the book's tables too).",
+      "stress that makes them. The phases are numbered as the integrator numbers them (the book's tables too).\n"
+      "Two traces compared (--diff, --against, --against-set): the first value that differs; exit 1 when any does.",
       request.scene_path, request.overrides);
-  app->add_option("--step", request.step, "the step to trace, numbered from 1 (the first step goes from t = 0)")
-      ->required()
+  app->get_option("SCENE.toml")->required(false);  // not with --diff: trace_command requires it
+  app->add_option("--step", request.step,
+                  "the step to trace, numbered from 1 (the first step goes from t = 0); required, but with --diff")
+      ->default_str("")  // no default: check_trace_request requires it
       ->check(whole_in(1, 10000000));
   app->add_option("--format", request.format, "csv: one row per node or particle and phase; table: aligned columns")
       ->check(one_of({"csv", "table"}));
+  add_trace_comparison_options(*app, request.compare);
   return app;
 }
 
-/// `mpm trace SCENE.toml --step N [--set KEY=VALUE ...] [--format csv|table]`. Returns the exit code: 2 for a bad
-/// option or scene or a step beyond the run's end, 3 when the method fails before the step.
+/// `mpm trace SCENE.toml --step N [--set KEY=VALUE ...] [--format csv|table]`, or two traces compared (trace_diff.hpp).
+/// Returns the exit code: 1 for traces that differ, 2 for a bad option, scene or trace file or a step beyond the
+/// run's end, 3 when the method fails before the step.
 inline int trace_command(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
   TraceRequest request;
   auto app = trace_parser(request);
   return run_parsed(*app, arguments, out, err, [&] {
-    io::Budget budget;
-    budget.force = true;  // only --step steps run: end_time / dt does not bound the work
-    io::Scene scene = load_scene(request.scene_path, request.overrides, budget);
-    scene.control.last_step = request.step;
-    return scene.dimension == 1 ? trace_run<1>(scene, request, out, err) : trace_run<2>(scene, request, out, err);
+    if (!request.compare.files.empty()) return diff_trace_files(request.compare, out);
+    check_trace_request(request.scene_path, request.step, request.compare, *app);
+    auto trace = [&](const std::string& path, const std::vector<std::string>& overrides, std::ostream& to) {
+      io::Budget budget;
+      budget.force = true;  // only --step steps run: end_time / dt does not bound the work
+      io::Scene scene = load_scene(path, overrides, budget);
+      scene.control.last_step = request.step;
+      return scene.dimension == 1 ? trace_run<1>(scene, request, to, err) : trace_run<2>(scene, request, to, err);
+    };
+    if (!request.compare.runs()) return trace(request.scene_path, request.overrides, out);
+    return compare_trace_runs(request.scene_path, request.overrides, request.compare, trace, out);
   });
 }
 
