@@ -42,9 +42,9 @@ struct RunControl {
   /// The run fails (exit code 3) before a step past this many (`mpm run --max-steps`, output landings counted);
   /// 0: no limit (`--force`, and the programs of verification/).
   long max_steps = 0;
-  /// The run fails when a Courant step of Eq. (42) falls below this fraction of the first step's: a particle a
-  /// million times faster than at t = 0 (the wave speed bounds the step from above) is an instability, and the run
-  /// would no longer end. Our choice; the paper sets no such floor.
+  /// The run fails when a Courant step of Eq. (42) falls below this fraction of the first step's (no longer than
+  /// end_time): a particle a million times faster than at t = 0 (the wave speed bounds the step from above) is an
+  /// instability, and the run would no longer end. Our choice; the paper sets no such floor.
   double smallest_step_fraction = 1e-6;
 };
 

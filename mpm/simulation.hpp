@@ -102,8 +102,8 @@ class Simulation {
     const bool fixed = control_.fixed_dt > 0.0;
     double anchor = 0.0;  // a fixed step's clock: anchor + n dt, n steps since the last landing, never a drifting sum
     long since_anchor = 0;
-    const double first_dt = courant_time_step(survey.fastest_speed(), survey.wave_speed(), model_.grid.spacing(),
-                                              control_.cfl, control_.courant);
+    const double first_dt = std::min(control_.end_time, courant_time_step(survey.fastest_speed(), survey.wave_speed(),
+                                                                          model_.grid.spacing(), control_.cfl, control_.courant));
     while (time < control_.end_time && (control_.last_step == 0 || step < control_.last_step)) {
       // 1. Time step, Eq. (42) or fixed, landing exactly on output times and on the end time (a fixed step within
       //    1e-9 dt of the target keeps its length); the run fails if it would not end.

@@ -8,7 +8,11 @@
 #   - studies: SIGTERM is forwarded to the runs and waited for (no orphan; study.csv not written); SIGKILL takes the
 #     runs with it (PR_SET_PDEATHSIG); a link or a file at cases/0000 is refused before anything is written; a stale
 #     observers_shifted.csv never survives; each run has its --max-memory;
-#   - names: a scene or study named `...toml` or `..toml` has no default folder (exit 2, nothing written);
+#   - a study over a live run's case folder is refused; a stop signal at the study's start reaches its runs; a run's
+#     folder swapped for a link ends with exit 3 and run.json where the run began; a soft material's long first
+#     Courant step is no reference for a collapse (the referee's findings);
+#   - names: a scene or study named `...toml` or `..toml`, or whose runs/NAME leads to the current folder, has no
+#     default folder (exit 2, nothing written);
 #   - mpm plot takes the folder's lock before it reads.
 # Usage: cli_endings.sh MPM
 set -u
@@ -169,6 +173,70 @@ echo mine >"$work/t/cases/0000/notes.txt"
 grep -q stale "$work/t/cases/0000/observers_shifted.csv" && fail "a stale observers_shifted.csv survived"
 [[ -e $work/t/cases/0000/notes.txt ]] || fail "the user's file in a case folder was removed"
 grep -q '"--max-memory", "[0-9]' "$work/t/cases/0000/run.json" || fail "the study's run has no --max-memory"
+
+# a run into a case folder of the study's own folder: the study refuses to clear it (exit 2), and the run goes on
+mkdir -p "$work/l/cases"
+"$mpm" "${long_run[@]}" --out "$work/l/cases/0000" >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 100); do [[ $(status_of "$work/l/cases/0000/run.json") == running ]] && break; sleep 0.05; done
+"$mpm" study "$tiny" --out "$work/l" >/dev/null 2>"$work/err"
+code=$?
+[[ $code -eq 2 ]] && grep -q "^error: $work/l/cases/0000: another mpm run or plot is writing" "$work/err" ||
+  fail "a study over a live run's folder: exit $code: $(cat "$work/err")"
+kill -s TERM $pid
+wait $pid
+[[ $(status_of "$work/l/cases/0000/run.json") == interrupted ]] || fail "the live run's folder was taken by the study"
+# a stop signal at once, while the study starts its first runs: forwarded, the study ends long before its cases would
+start=$SECONDS
+"$mpm" study "$work/study.toml" --out "$work/q" --jobs 2 >/dev/null 2>&1 &
+pid=$!
+sleep 0.03
+kill -s TERM $pid
+wait $pid
+code=$?
+[[ $code -eq 143 && $((SECONDS - start)) -lt 8 ]] || fail "a study stopped at its start: exit $code after $((SECONDS - start)) s"
+[[ -z $(processes_naming "$work/q") ]] || fail "a study stopped at its start left runs behind"
+# a run's folder replaced by a link during the run: exit 3, run.json in the folder the run began in, none in the link's
+"$mpm" "${long_run[@]}" --out "$work/m" >/dev/null 2>"$work/err" &
+pid=$!
+for _ in $(seq 100); do [[ $(status_of "$work/m/run.json") == running ]] && break; sleep 0.05; done
+mkdir -p "$work/elsewhere"
+mv "$work/m" "$work/m_began" && ln -s "$work/elsewhere" "$work/m"
+kill -s TERM $pid
+wait $pid
+code=$?
+[[ $code -eq 3 && ! -e $work/elsewhere/run.json && $(status_of "$work/m_began/run.json") == failed ]] ||
+  fail "a run's folder swapped for a link: exit $code, $(ls "$work/elsewhere"), $(status_of "$work/m_began/run.json")"
+grep -q "moved or replaced during the run" "$work/err" || fail "a swapped folder not named: $(cat "$work/err")"
+# a default folder that is a link to the folder above: refused, the user's file there untouched
+mkdir -p "$work/up/runs"
+cp "$root/scenes/dyka_bar.toml" "$work/up/bar.toml"
+echo mine >"$work/up/observers.csv"
+ln -s .. "$work/up/runs/bar"
+(cd "$work/up" && "$mpm" run bar.toml --set solver.end_time=1e-6 --set 'output.snapshots=[]' >/dev/null 2>"$work/err")
+code=$?
+[[ $code -eq 2 && $(cat "$work/up/observers.csv") == mine ]] || fail "runs/bar -> ..: exit $code: $(cat "$work/err")"
+grep -q "^error: runs/bar: leads (through a symbolic link) to " "$work/err" || fail "runs/bar -> ..: $(cat "$work/err")"
+# a soft material whose Courant step at t = 0 (500000 s) is far beyond end_time: its ~20 steps are not a collapse
+cat >"$work/soft.toml" <<'TOML'
+dimension = 2
+[grid]
+length = [4.0, 100.0]
+cells = [4, 100]
+[material]
+young_modulus = 1.0e-12
+density = 1.0
+[[body]]
+min = [1.0, 90.0]
+max = [2.0, 91.0]
+[gravity]
+acceleration = [0.0, -9.81]
+[solver]
+end_time = 2.0
+[output]
+times = [0.5, 1.0, 1.5]
+TOML
+"$mpm" run "$work/soft.toml" --out "$work/soft" >/dev/null 2>"$work/err" || fail "a soft falling block: $(cat "$work/err")"
 
 # 4. Names with no folder of their own: refused, nothing written in the current folder or runs/.
 mkdir -p "$work/dots"

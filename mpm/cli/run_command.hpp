@@ -38,8 +38,8 @@ struct RunRequest {
 /// Writes run.json "running", runs (a stop signal ending the run after the current step, stop_signals.hpp), and
 /// rewrites run.json as the run ended. Returns the exit code. \throws OutputFailure.
 template <int Dim>
-int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRequest& request) {
-  const std::string run_json = request.folder + "/run.json";
+int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRequest& request, const io::FolderLock& lock) {
+  std::string run_json = request.folder + "/run.json";
   const int count = setup.particles.size();
   RunSummary summary;
   io::write_run_json(run_json, scene, summary, io::RunState::running, "", count, request.identity);
@@ -72,6 +72,12 @@ int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRe
     failure = std::string("internal error: ") + defect.what();
     io::write_run_json(run_json, scene, summary, state, failure, count, request.identity);
     throw;
+  }
+  if (!lock.still_at(request.folder)) {  // moved, or replaced by a link, during the run: run.json where it began
+    std::cerr << "error: " << request.folder << ": moved or replaced during the run; its run.json says so in the "
+              << "folder the run began in\n";
+    run_json = lock.path_in("run.json"), state = io::RunState::failed, code = 3;
+    failure = "the folder " + request.folder + " was moved or replaced during the run";
   }
   try {
     io::write_run_json(run_json, scene, summary, state, failure, count, request.identity);
@@ -141,7 +147,7 @@ int run_scene(io::Scene scene, RunRequest request) {
   const io::FolderLock lock(request.folder);  // held until the run has ended
   io::catch_stop_signals();
   if (const int code = clear_earlier_run<Dim>(scene, setup, request)) return code;
-  return run_into_folder<Dim>(scene, setup, request);
+  return run_into_folder<Dim>(scene, setup, request, lock);
 }
 
 /// A parser of a command that runs a scene (`mpm run`, `mpm trace`), with the options they share, declared

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -47,11 +48,19 @@ inline std::vector<std::filesystem::directory_entry> run_outputs_in(const std::s
 /// of "", "." or ".." (a file named `...toml` or `..toml`) would make it runs/ itself or the current folder: refused.
 /// \throws InputError naming the file.
 inline std::string default_folder(const std::string& file) {
-  const std::string name = std::filesystem::path(file).stem().string();
+  namespace fs = std::filesystem;
+  const std::string name = fs::path(file).stem().string();
   if (name.empty() || name == "." || name == "..")
     throw InputError(file, "its name without the extension is '" + name + "', and runs/" + name +
                                " is no folder of its own; give --out DIR, or rename the file");
-  return "runs/" + name;
+  const std::string folder = "runs/" + name;
+  std::error_code error;  // runs/NAME, or runs/, a link to the current folder or one above it: the same refusal
+  const fs::path resolved = fs::weakly_canonical(folder, error), here = fs::current_path(error);
+  const fs::path up = here.lexically_relative(resolved);  // "." or "a/b" when it is here or above; "../x" else
+  if (!error && !resolved.empty() && !up.empty() && *up.begin() != "..")
+    throw InputError(folder, "leads (through a symbolic link) to " + resolved.string() +
+                                 ", the current folder or one above it; give --out DIR, or remove the link");
+  return folder;
 }
 
 /// Refuses an --out that is not a folder (a file, a device, a link to nothing) and a folder holding a symbolic
@@ -90,6 +99,18 @@ class FolderLock {
   FolderLock(const FolderLock&) = delete;
   FolderLock& operator=(const FolderLock&) = delete;
   ~FolderLock() { ::close(descriptor_); }
+
+  /// True if `folder` is still the folder locked (not moved away, nor replaced by another or by a link meanwhile).
+  bool still_at(const std::string& folder) const {
+    struct stat locked {}, now {};
+    return ::fstat(descriptor_, &locked) == 0 && ::stat(folder.c_str(), &now) == 0 && locked.st_dev == now.st_dev &&
+           locked.st_ino == now.st_ino;
+  }
+
+  /// The path of `name` in the folder locked, wherever it is now (Linux's /proc/self/fd/N).
+  std::string path_in(const std::string& name) const {
+    return "/proc/self/fd/" + std::to_string(descriptor_) + "/" + name;
+  }
 
  private:
   int descriptor_;
@@ -156,10 +177,26 @@ TEST_CASE("run folder: an earlier run's files removed, other files kept, a link 
   CHECK(default_folder("a/.hidden.toml") == "runs/.hidden");
   for (const char* dotted : {"...toml", "..toml", "dir/...toml", "..", "."})
     CHECK_THROWS_WITH_AS(default_folder(dotted), doctest::Contains("no folder of its own"), InputError);
+  const fs::path here = fs::current_path();  // runs/up, a link to the folder above the current one: refused
+  fs::current_path(folder);
+  fs::create_directories("runs");
+  fs::create_symlink("../..", "runs/up");
+  fs::create_symlink(".", "runs/own");
+  CHECK_THROWS_WITH_AS(default_folder("up.toml"), doctest::Contains("the current folder or one above it"), InputError);
+  CHECK_NOTHROW(default_folder("own.toml"));  // runs/own is runs/ itself, below the current folder
+  CHECK(default_folder("new.toml") == "runs/new");
+  fs::current_path(here);
   fs::create_symlink(folder / "nothing", folder / "dangling");
   CHECK_THROWS_WITH_AS(check_run_folder((folder / "dangling").string()), doctest::Contains("link to nothing"), InputError);
   fs::create_directory(folder / "run.json");
   CHECK_THROWS_AS(check_run_folder(folder.string()), InputError);
+  CHECK(again.still_at(folder.string()));
+  fs::rename(folder, folder.string() + "_moved");
+  fs::create_directories(folder);
+  CHECK(!again.still_at(folder.string()));  // another folder under its name
+  std::ofstream(again.path_in("left.txt")) << "x\n";
+  CHECK(fs::exists(folder.string() + "_moved/left.txt"));
+  fs::remove_all(folder.string() + "_moved");
   fs::remove_all(folder);
 }
 

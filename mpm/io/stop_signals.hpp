@@ -1,8 +1,8 @@
 /// \file
 /// The signals that end a run or a study early. Every signal whose default action ends a process and that a process
 /// can catch (SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU, SIGVTALRM, SIGPROF) asks the run to
-/// stop after its current step, so that run.json can say "interrupted"; a second one, seconds later, takes its
-/// default action (on_stop_signal). SIGHUP
+/// stop after its current step, so that run.json can say "interrupted"; a second one changes nothing (only SIGKILL
+/// ends a run at once). SIGHUP
 /// ignored when mpm starts stays ignored (`nohup mpm run ...` asks for that); the others are caught even when a
 /// shell ignores them (it ignores SIGINT and SIGQUIT in a script's background jobs). SIGPIPE and SIGXFSZ are ignored:
 /// a write they would interrupt fails instead, and the writer reports it (`cannot write`).
@@ -11,8 +11,8 @@
 /// `mpm run` does; each child also dies with the study (PR_SET_PDEATHSIG, mpm/study/process.hpp).
 #pragma once
 #include <doctest/doctest.h>
+#include <pthread.h>
 #include <signal.h>
-#include <time.h>
 #include <sys/types.h>
 
 #include <atomic>
@@ -30,23 +30,13 @@ inline constexpr int stop_signals[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGALRM
 /// The children a stop signal is forwarded to: process ids, 0 for a free slot (one per child running at once).
 inline std::atomic<pid_t> forwarded_children[1024];
 
-/// When the first stop signal came (CLOCK_MONOTONIC, whole seconds).
-inline volatile std::sig_atomic_t stop_second = 0;
-
-/// Records the first stop signal and forwards it to every registered child. A stop signal in the same or the next
-/// whole second of the clock is the same request delivered twice (timeout(1) signals its command, then the command's process group) and
-/// is ignored; a later one takes the signal's default action, forwarded first.
+/// Records the first stop signal and forwards every one to the registered children. A later stop signal changes
+/// nothing: the run still ends after its current step, so that run.json can say so (SIGKILL ends a process at once,
+/// and leaves its run.json saying "running").
 inline void on_stop_signal(int signal) {
-  struct timespec now {};
-  ::clock_gettime(CLOCK_MONOTONIC, &now);
-  const bool first = stop_signal == 0;
-  if (!first && now.tv_sec - stop_second < 2) return;
-  if (first) stop_signal = signal, stop_second = static_cast<std::sig_atomic_t>(now.tv_sec);
+  if (stop_signal == 0) stop_signal = signal;
   for (auto& child : forwarded_children)
     if (const pid_t pid = child.load(); pid > 0) ::kill(pid, signal);
-  if (first) return;
-  std::signal(signal, SIG_DFL);
-  ::raise(signal);
 }
 
 /// Catches the stop signals and ignores SIGPIPE and SIGXFSZ.
@@ -63,6 +53,38 @@ inline void catch_stop_signals() {
   std::signal(SIGPIPE, SIG_IGN);
   std::signal(SIGXFSZ, SIG_IGN);
 }
+
+/// The stop signals as a set, to block them around a fork (block_stop_signals).
+inline sigset_t stop_signal_set() {
+  sigset_t set;
+  sigemptyset(&set);
+  for (int signal : stop_signals) sigaddset(&set, signal);
+  return set;
+}
+
+/// While it lives, the calling thread receives no stop signal (they wait, pending); a child forked meanwhile starts
+/// with them blocked too, and calls in_child_after_fork().
+class StopSignalsBlocked {
+ public:
+  StopSignalsBlocked() {
+    const sigset_t set = stop_signal_set();
+    ::pthread_sigmask(SIG_BLOCK, &set, &previous_);
+  }
+  StopSignalsBlocked(const StopSignalsBlocked&) = delete;
+  StopSignalsBlocked& operator=(const StopSignalsBlocked&) = delete;
+  ~StopSignalsBlocked() { ::pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+
+  /// In a child just forked: the stop signals back to their default action, then unblocked, so that one sent before
+  /// the child's program has started ends the child, instead of the parent's handler recording it in memory that
+  /// exec discards. Async-signal-safe.
+  void in_child_after_fork() const {
+    for (int signal : stop_signals) std::signal(signal, SIG_DFL);
+    ::sigprocmask(SIG_SETMASK, &previous_, nullptr);  // the child has one thread
+  }
+
+ private:
+  sigset_t previous_{};
+};
 
 /// Registers child `pid` for the forwarding; returns its slot (-1 when all are taken: the child is not told).
 inline int forward_stop_signals_to(pid_t pid) {
@@ -96,7 +118,7 @@ inline void stop_if_signalled() {
   if (stop_signal != 0) throw Interrupted{stop_signal};
 }
 
-TEST_CASE("stop signals: SIGHUP caught and named, a repeat ignored, SIGHUP under nohup left ignored, SIGINT caught") {
+TEST_CASE("stop signals: SIGHUP caught and named, a second signal changing nothing, SIGHUP under nohup left ignored, SIGINT caught") {
   struct sigaction saved[std::size(stop_signals)];
   for (std::size_t k = 0; k < std::size(stop_signals); ++k) ::sigaction(stop_signals[k], nullptr, &saved[k]);
   std::signal(SIGHUP, SIG_IGN);  // under nohup: SIGHUP stays ignored; SIGINT, ignored by a shell, is caught
@@ -112,7 +134,7 @@ TEST_CASE("stop signals: SIGHUP caught and named, a repeat ignored, SIGHUP under
   ::raise(SIGHUP);
   CHECK(stop_signal == SIGHUP);
   CHECK_THROWS_AS(stop_if_signalled(), Interrupted);
-  ::raise(SIGINT);  // at once: the same request, delivered twice (a later one would end the process)
+  ::raise(SIGINT);  // a second stop signal: the first is the one that stops the run
   CHECK(stop_signal == SIGHUP);
   ::sigaction(SIGTERM, nullptr, &now);
   CHECK((now.sa_handler == on_stop_signal ? 1 : 0) == 1);
@@ -127,7 +149,6 @@ TEST_CASE("stop signals: SIGHUP caught and named, a repeat ignored, SIGHUP under
   std::signal(SIGPIPE, SIG_DFL);
   std::signal(SIGXFSZ, SIG_DFL);
   stop_signal = 0;
-  stop_second = 0;
 }
 
 }  // namespace mpm::io

@@ -192,6 +192,8 @@ inline CaseResult run_case(const std::string& program, const std::string& scene,
   else if (run.exit_code == 3 && failure && failure->find("energy grew") != std::string::npos) result.status = "stopped", result.why = *failure;
   else result.why = failure ? *failure : reason_line(run.err).empty() ? "exit " + std::to_string(run.exit_code) : reason_line(run.err);
   std::string error;
+  if (const std::string moved = case_folder_problem(folder); !moved.empty())  // made a link during the run
+    result.status = "failed", result.why = result.not_run = moved;
   if (result.not_run.empty()) result.energy_drift = energy_drift(folder + "/energy.csv", error);  // a stopped run's growth too
   if (result.status == "done") measure_run(program, scene, one, folder, resolved, observer, scored, result);
   return result;

@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,17 +70,20 @@ inline ChildRun run_child(const std::string& program, const std::vector<std::str
   const int null = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
   const auto start = std::chrono::steady_clock::now();
   const pid_t parent = ::getpid();
+  std::optional<io::StopSignalsBlocked> blocked(std::in_place);  // until the child is registered for the forwarding
   const pid_t child = out && err && null >= 0 ? ::fork() : -1;
   if (child == 0) {
     ::setpgid(0, 0);
     if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != parent) ::_exit(127);  // the parent already died
+    blocked->in_child_after_fork();  // a stop signal already sent ends the child here
     if (::dup2(null, 0) < 0 || ::dup2(fileno(out), 1) < 0 || ::dup2(fileno(err), 2) < 0) ::_exit(127);
     ::execv(program.c_str(), argv.data());
     ::_exit(127);
   }
+  const int slot = child > 0 ? io::forward_stop_signals_to(child) : -1;
+  blocked.reset();  // a stop signal that came meanwhile reaches the handler now, which forwards it to the child
   if (child > 0) {
-    const int slot = io::forward_stop_signals_to(child);
-    if (io::stop_signal != 0) ::kill(child, io::stop_signal);  // a signal between fork and the line above
+    if (io::stop_signal != 0) ::kill(child, io::stop_signal);  // one that another thread took before the registration
     int status = 0;
     struct rusage usage {};
     while (::wait4(child, &status, 0, &usage) < 0 && errno == EINTR) {

@@ -113,6 +113,7 @@ inline void clear_study_folder(const std::string& out) {
     const std::string name = entry.path().filename().string();
     if (name.size() != 4 || name.find_first_not_of("0123456789") != std::string::npos || entry.is_symlink() || !entry.is_directory()) continue;
     io::check_run_folder(entry.path().string());
+    const io::FolderLock lock(entry.path().string());  // a run of another study or a user's writing there: refused
     io::clear_run_folder(entry.path().string());  // its run.json first: a clear cut short leaves none saying "done"
     fs::remove(entry.path() / "observers_shifted.csv", error);
     fs::remove(entry.path(), error);  // only when empty
