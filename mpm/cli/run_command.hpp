@@ -73,7 +73,7 @@ int run_into_folder(const io::Scene& scene, const Setup<Dim>& setup, const RunRe
     io::write_run_json(run_json, scene, summary, state, failure, count, request.identity);
     throw;
   }
-  if (!lock.still_at(request.folder)) {  // moved, or replaced by a link, during the run: run.json where it began
+  if (!cannot_write && !lock.still_at(request.folder)) {  // moved or replaced during the run: run.json where it began
     std::cerr << "error: " << request.folder << ": moved or replaced during the run; its run.json says so in the "
               << "folder the run began in\n";
     run_json = lock.path_in("run.json"), state = io::RunState::failed, code = 3;
