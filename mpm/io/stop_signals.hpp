@@ -2,9 +2,8 @@
 /// The signals that end a run or a study early. Every signal whose default action ends a process and that a process
 /// can catch (SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU, SIGVTALRM, SIGPROF) asks the run to
 /// stop after its current step, so that run.json can say "interrupted"; a second one changes nothing (only SIGKILL
-/// ends a run at once). SIGHUP
-/// ignored when mpm starts stays ignored (`nohup mpm run ...` asks for that); the others are caught even when a
-/// shell ignores them (it ignores SIGINT and SIGQUIT in a script's background jobs). SIGPIPE and SIGXFSZ are ignored:
+/// ends a run at once). SIGHUP ignored when mpm starts stays ignored (`nohup mpm run ...` asks for that); the others
+/// are caught even when a shell ignores them (it ignores SIGINT and SIGQUIT in a script's background jobs). SIGPIPE and SIGXFSZ are ignored:
 /// a write they would interrupt fails instead, and the writer reports it (`cannot write`).
 ///
 /// A study forwards the signal to the children it runs (forward_stop_signals_to), so that each of its runs ends as
@@ -54,7 +53,7 @@ inline void catch_stop_signals() {
   std::signal(SIGXFSZ, SIG_IGN);
 }
 
-/// The stop signals as a set, to block them around a fork (block_stop_signals).
+/// The stop signals as a set, to block them around a fork (StopSignalsBlocked).
 inline sigset_t stop_signal_set() {
   sigset_t set;
   sigemptyset(&set);
